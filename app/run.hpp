@@ -1,0 +1,19 @@
+#pragma once
+// The magnus driver: case → grid → ψ → fields → forces → files.
+#include <string>
+#include <vector>
+#include "postproc/result.hpp"
+
+namespace magnus {
+
+/// Solve one case and post-process it (no files). threads ≥ 1.
+FlowResult run_case(const Case& c, int threads = 1);
+
+/// `magnus run`: solve, write HDF5 + XDMF atomically, print the summary. Returns the exit status.
+int command_run(const std::string& case_path, const std::string& output, const std::vector<std::string>& sets,
+                int threads, bool quiet);
+
+/// `magnus inspect`: print what a result holds.
+int command_inspect(const std::string& path);
+
+}  // namespace magnus

@@ -1,0 +1,62 @@
+#include "mesh/polar_grid.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace magnus {
+
+double Case::circulation() const {
+  if (circulation_given) return circulation_value;
+  return 2.0 * M_PI * radius * radius * spin;
+}
+
+double Case::spin_ratio() const { return speed > 0.0 ? radius * spin / speed : 0.0; }
+
+const char* to_string(Spacing s) { return s == Spacing::geometric ? "geometric" : "uniform"; }
+const char* to_string(FarField f) { return f == FarField::exact ? "exact" : "freestream"; }
+const char* to_string(Method m) {
+  return m == Method::automatic ? "auto" : m == Method::cholmod ? "cholmod" : "fft";
+}
+const char* to_string(StencilKind s) { return s == StencilKind::five_point ? "5-point" : "9-point"; }
+
+int default_n_r(Spacing spacing, double outer_over_a, int n_theta) {
+  const double d_theta = 2.0 * M_PI / n_theta;
+  const double span = spacing == Spacing::geometric ? std::log(outer_over_a) : outer_over_a - 1.0;
+  return std::max(3, int(std::lround(span / d_theta)) + 1);
+}
+
+PolarGrid make_grid(double a, double outer_over_a, int n_r, int n_theta, Spacing spacing) {
+  if (!(a > 0.0) || !(outer_over_a > 1.0) || n_r < 3 || n_theta < 4)
+    throw std::invalid_argument("make_grid: need a > 0, R/a > 1, n_r >= 3, n_theta >= 4");
+  PolarGrid g;
+  g.a = a;
+  g.n_r = n_r;
+  g.n_theta = n_theta;
+  g.spacing = spacing;
+  g.d_theta = 2.0 * M_PI / n_theta;
+  g.r.resize(n_r);
+  g.xi.resize(n_r);
+  const double log_span = std::log(outer_over_a);
+  for (int i = 0; i < n_r; ++i) {
+    const double s = double(i) / (n_r - 1);
+    if (spacing == Spacing::geometric) {
+      g.xi[i] = s * log_span;
+      g.r[i] = a * std::exp(g.xi[i]);
+    } else {
+      g.r[i] = a * (1.0 + s * (outer_over_a - 1.0));
+      g.xi[i] = std::log1p(s * (outer_over_a - 1.0));
+    }
+  }
+  g.r.front() = a;
+  g.r.back() = a * outer_over_a;
+  g.theta.resize(n_theta);
+  for (int j = 0; j < n_theta; ++j) g.theta[j] = g.d_theta * j;
+  return g;
+}
+
+PolarGrid make_grid(const Case& c) {
+  const int n_r = c.n_r > 0 ? c.n_r : default_n_r(c.spacing, c.outer_radius, c.n_theta);
+  return make_grid(c.radius, c.outer_radius, n_r, c.n_theta, c.spacing);
+}
+
+}  // namespace magnus

@@ -1,0 +1,35 @@
+#pragma once
+// The polar grid r_i (i = 0…n_r−1, r_0 = a, r_{n_r−1} = R) × θ_j = 2πj/n_θ (no seam node).
+#include <vector>
+#include "mesh/case.hpp"
+
+namespace magnus {
+
+struct PolarGrid {
+  double a = 1.0;              ///< body radius, m
+  int n_r = 0, n_theta = 0;
+  Spacing spacing = Spacing::geometric;
+  std::vector<double> r;       ///< radii, m (n_r)
+  std::vector<double> xi;      ///< ξ_i = ln(r_i/a) (n_r)
+  std::vector<double> theta;   ///< angles, rad (n_θ)
+  double d_theta = 0.0;        ///< Δθ = 2π/n_θ
+
+  double outer_radius() const { return r.back(); }
+  /// Δξ_{i+1/2} = ξ_{i+1} − ξ_i.
+  double d_xi(int i) const { return xi[i + 1] - xi[i]; }
+  /// True when ξ is uniform (log-polar spacing).
+  bool uniform_in_xi() const { return spacing == Spacing::geometric; }
+  /// Number of nodes n_r·n_θ.
+  long nodes() const { return long(n_r) * n_theta; }
+};
+
+/// n_r that makes log-polar cells square (Δξ ≈ Δθ), or square cells at the wall for uniform spacing.
+int default_n_r(Spacing spacing, double outer_over_a, int n_theta);
+
+/// Geometric: r_i = a·e^{iΔξ}; uniform: r_i = a + iΔr. R = outer_over_a·a.
+PolarGrid make_grid(double a, double outer_over_a, int n_r, int n_theta, Spacing spacing);
+
+/// The grid a case asks for (n_r = 0 chooses default_n_r).
+PolarGrid make_grid(const Case& c);
+
+}  // namespace magnus

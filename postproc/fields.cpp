@@ -1,0 +1,183 @@
+#include "postproc/fields.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "postproc/exact.hpp"
+#include "postproc/fd_weights.hpp"
+
+namespace magnus {
+
+const std::vector<std::string>& field_names() {
+  static const std::vector<std::string> names = {"psi", "u_r", "u_theta", "u_x", "u_y",
+                                                 "pressure", "cp", "psi_exact", "psi_error"};
+  return names;
+}
+
+const char* field_units(const std::string& name) {
+  if (name == "psi" || name == "psi_exact" || name == "psi_error") return "m^2/s";
+  if (name == "pressure") return "Pa";
+  if (name == "cp") return "1";
+  return "m/s";
+}
+
+namespace {
+size_t field_index(const std::string& name) {
+  const auto& n = field_names();
+  for (size_t k = 0; k < n.size(); ++k)
+    if (n[k] == name) return k;
+  throw std::invalid_argument("unknown field '" + name + "'");
+}
+}  // namespace
+
+bool FieldSelection::has(const std::string& name) const { return on[field_index(name)]; }
+
+bool FieldSelection::any_velocity() const {
+  for (const char* f : {"u_r", "u_theta", "u_x", "u_y", "pressure", "cp"})
+    if (has(f)) return true;
+  return false;
+}
+
+FieldSelection select_fields(const std::vector<std::string>& names) {
+  FieldSelection s;
+  if (names.empty()) return s;
+  s.on.assign(field_names().size(), false);
+  for (const auto& n : names) s.on[field_index(n)] = true;
+  return s;
+}
+
+const std::vector<double>& Fields::get(const std::string& name) const {
+  const std::vector<double>* all[] = {&psi, &u_r, &u_theta, &u_x, &u_y,
+                                      &pressure, &cp, &psi_exact, &psi_error};
+  return *all[field_index(name)];
+}
+
+int derivative_order(StencilKind stencil) { return stencil == StencilKind::nine_point ? 4 : 2; }
+
+namespace {
+
+/// ∂ψ/∂ξ on ring i at every column, into out (n_θ).
+void d_dxi(const PolarGrid& g, const RadialDerivative& D, const std::vector<double>& psi, int i,
+           double* out) {
+  const int n = g.n_theta;
+  std::fill(out, out + n, 0.0);
+  const std::vector<double>& w = D.weights[i];
+  for (size_t m = 0; m < w.size(); ++m) {
+    const double* row = &psi[size_t(D.first[i] + m) * n];
+    for (int j = 0; j < n; ++j) out[j] += w[m] * row[j];
+  }
+}
+
+}  // namespace
+
+Fields compute_fields(const PolarGrid& g, const Case& c, const std::vector<double>& psi,
+                      const FieldSelection& sel, int order) {
+  Fields f;
+  const int n = g.n_theta;
+  const size_t N = size_t(g.nodes());
+  if (sel.has("psi")) f.psi = psi;
+  if (sel.has("psi_exact") || sel.has("psi_error")) {
+    std::vector<double> ex = exact_flow(c).psi_field(g);
+    if (sel.has("psi_error")) {
+      f.psi_error.resize(N);
+      for (size_t q = 0; q < N; ++q) f.psi_error[q] = psi[q] - ex[q];
+    }
+    if (sel.has("psi_exact")) f.psi_exact = std::move(ex);
+  }
+  if (!sel.any_velocity()) return f;
+  const RadialDerivative D = radial_derivative(g.xi, order);
+  const std::vector<double> cw = periodic_derivative(g.d_theta, order);
+  std::vector<double> ur(N), ut(N);
+  std::vector<double> cs(n), sn(n);
+  for (int j = 0; j < n; ++j) {
+    cs[j] = std::cos(g.theta[j]);
+    sn[j] = std::sin(g.theta[j]);
+  }
+  for (int i = 0; i < g.n_r; ++i) {
+    const double inv_r = 1.0 / g.r[i];
+    double* uti = &ut[size_t(i) * n];
+    d_dxi(g, D, psi, i, uti);
+    const double* row = &psi[size_t(i) * n];
+    double* uri = &ur[size_t(i) * n];
+    for (int j = 0; j < n; ++j) {
+      double d = 0.0;
+      for (size_t m = 0; m < cw.size(); ++m)
+        d += cw[m] * (row[(j + m + 1) % n] - row[(j + n - (m + 1)) % n]);
+      uri[j] = d * inv_r;  // u_r = (1/r) ∂ψ/∂θ
+      uti[j] *= -inv_r;    // u_θ = −∂ψ/∂r = −(1/r) ∂ψ/∂ξ
+    }
+  }
+  const double U2 = c.speed * c.speed, half_rho = 0.5 * c.density;
+  if (sel.has("u_x") || sel.has("u_y")) {
+    if (sel.has("u_x")) f.u_x.resize(N);
+    if (sel.has("u_y")) f.u_y.resize(N);
+    for (size_t q = 0; q < N; ++q) {
+      const int j = int(q % n);
+      if (!f.u_x.empty()) f.u_x[q] = ur[q] * cs[j] - ut[q] * sn[j];
+      if (!f.u_y.empty()) f.u_y[q] = ur[q] * sn[j] + ut[q] * cs[j];
+    }
+  }
+  if (sel.has("pressure")) {
+    f.pressure.resize(N);
+    for (size_t q = 0; q < N; ++q)
+      f.pressure[q] = c.pressure_inf + half_rho * (U2 - ur[q] * ur[q] - ut[q] * ut[q]);
+  }
+  if (sel.has("cp") && c.speed > 0.0) {
+    f.cp.resize(N);
+    for (size_t q = 0; q < N; ++q) f.cp[q] = 1.0 - (ur[q] * ur[q] + ut[q] * ut[q]) / U2;
+  }
+  if (sel.has("u_r")) f.u_r = std::move(ur);
+  if (sel.has("u_theta")) f.u_theta = std::move(ut);
+  return f;
+}
+
+Surface compute_surface(const PolarGrid& g, const Case& c, const std::vector<double>& psi, int order) {
+  const int n = g.n_theta;
+  const RadialDerivative D = radial_derivative(g.xi, order);
+  Surface s;
+  s.theta = g.theta;
+  s.u_theta.resize(n);
+  d_dxi(g, D, psi, 0, s.u_theta.data());
+  for (double& u : s.u_theta) u *= -1.0 / g.a;
+  const double U2 = c.speed * c.speed;
+  s.pressure.resize(n);
+  for (int j = 0; j < n; ++j)
+    s.pressure[j] = c.pressure_inf + 0.5 * c.density * (U2 - s.u_theta[j] * s.u_theta[j]);
+  if (c.speed > 0.0) {
+    const ExactFlow ex = exact_flow(c);
+    s.cp.resize(n);
+    s.cp_exact.resize(n);
+    for (int j = 0; j < n; ++j) {
+      s.cp[j] = 1.0 - s.u_theta[j] * s.u_theta[j] / U2;
+      s.cp_exact[j] = ex.cp(g.a, g.theta[j]);
+    }
+  }
+  return s;
+}
+
+double periodic_interpolate(const std::vector<double>& f, double theta) {
+  const int n = int(f.size());
+  const double h = 2.0 * M_PI / n;
+  const double x = theta / h;
+  const long j0 = long(std::floor(x));
+  const double t = x - j0;
+  // Lagrange weights for nodes −1, 0, 1, 2 at t.
+  const double w[4] = {-t * (t - 1) * (t - 2) / 6, (t + 1) * (t - 1) * (t - 2) / 2,
+                       -(t + 1) * t * (t - 2) / 2, (t + 1) * t * (t - 1) / 6};
+  double v = 0.0;
+  for (int m = 0; m < 4; ++m) v += w[m] * f[size_t(((j0 - 1 + m) % n + n) % n)];
+  return v;
+}
+
+std::vector<double> u_theta_on_ray(const PolarGrid& g, const std::vector<double>& psi, double theta,
+                                   int order) {
+  const RadialDerivative D = radial_derivative(g.xi, order);
+  std::vector<double> out(g.n_r), ring(g.n_theta);
+  for (int i = 0; i < g.n_r; ++i) {
+    d_dxi(g, D, psi, i, ring.data());
+    out[i] = -periodic_interpolate(ring, theta) / g.r[i];
+  }
+  return out;
+}
+
+}  // namespace magnus

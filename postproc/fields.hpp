@@ -1,0 +1,57 @@
+#pragma once
+// Velocity, pressure and Cp from ψ: central differences inside, one-sided at r = a and r = R.
+#include <string>
+#include <vector>
+#include "mesh/polar_grid.hpp"
+
+namespace magnus {
+
+/// Field names of DESIGN §5 /fields, in file order.
+const std::vector<std::string>& field_names();
+
+/// Units of a field of that name ("m^2/s", "m/s", "Pa", "1").
+const char* field_units(const std::string& name);
+
+/// Which (n_r, n_θ) fields to compute and write; everything by default.
+struct FieldSelection {
+  std::vector<bool> on = std::vector<bool>(field_names().size(), true);
+  bool has(const std::string& name) const;
+  bool any_velocity() const;
+};
+/// Selection from names (empty: all). Throws std::invalid_argument naming an unknown field.
+FieldSelection select_fields(const std::vector<std::string>& names);
+
+/// Fields (n_r, n_θ), row-major; a field not selected stays empty.
+struct Fields {
+  std::vector<double> psi, u_r, u_theta, u_x, u_y, pressure, cp, psi_exact, psi_error;
+  /// The field of a given name (one of field_names()).
+  const std::vector<double>& get(const std::string& name) const;
+};
+
+/// Values on the body r = a (n_θ).
+struct Surface {
+  std::vector<double> theta;     ///< rad
+  std::vector<double> u_theta;   ///< m/s
+  std::vector<double> pressure;  ///< Pa
+  std::vector<double> cp, cp_exact;  ///< empty when U = 0 (undefined)
+};
+
+/// Order of the derivative formulas matching a stencil: 2 (5-point) or 4 (9-point).
+int derivative_order(StencilKind stencil);
+
+/// u_θ = −(1/r)·∂ψ/∂ξ on every ring of column j's values psi_col(i).
+/// All fields a selection asks for, from ψ (m²/s) and the case's ρ, U, p∞.
+Fields compute_fields(const PolarGrid& g, const Case& c, const std::vector<double>& psi,
+                      const FieldSelection& sel, int order);
+
+/// Surface velocity, pressure p = p∞ + ½ρ(U² − u_θ²) and Cp from the one-sided wall derivative.
+Surface compute_surface(const PolarGrid& g, const Case& c, const std::vector<double>& psi, int order);
+
+/// u_θ(r_i, θ) along the ray θ (periodic cubic interpolation between columns), m/s.
+std::vector<double> u_theta_on_ray(const PolarGrid& g, const std::vector<double>& psi, double theta,
+                                   int order);
+
+/// Periodic cubic (4-point Lagrange) interpolation of f_j = f(jh), h = 2π/n, at θ.
+double periodic_interpolate(const std::vector<double>& f, double theta);
+
+}  // namespace magnus

@@ -1,0 +1,99 @@
+#include "postproc/forces.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace magnus {
+
+Forces compute_forces(const Case& c, const Surface& s) {
+  const int n = int(s.theta.size());
+  const double a = c.radius, rho = c.density, U = c.speed, omega = c.spin;
+  const double h = 2.0 * M_PI / n;
+  Forces f;
+  double mean = 0.0;
+  for (double u : s.u_theta) mean += u;
+  mean /= n;
+  double fx = 0.0, fy = 0.0;
+  for (int j = 0; j < n; ++j) {
+    const double up = s.u_theta[j] - mean;
+    const double q = up * (2.0 * mean + up);  // |u|² − ū²
+    fx += q * std::cos(s.theta[j]);
+    fy += q * std::sin(s.theta[j]);
+  }
+  f.drag = 0.5 * rho * a * h * fx;
+  f.lift = 0.5 * rho * a * h * fy;
+  f.circulation_measured = mean * 2.0 * M_PI * a;
+  const ExactFlow ex = exact_flow(c);
+  f.lift_kutta_joukowski = ex.lift(rho);
+  const auto top = periodic_interpolate(s.u_theta, M_PI / 2);
+  const auto bottom = periodic_interpolate(s.u_theta, 3 * M_PI / 2);
+  f.delta_p_top_bottom = 0.5 * rho * (bottom - top) * (bottom + top);
+  f.delta_p_top_bottom_exact = ex.delta_p_top_bottom(rho);
+  f.delta_p_seed_estimate = seed_delta_p(c);
+  f.magnus_S_exact = 2.0 * M_PI * rho * a * a;
+  if (U > 0.0) {
+    const double q_ref = 0.5 * rho * U * U * 2.0 * a;
+    f.cl = f.lift / q_ref;
+    f.cd = f.drag / q_ref;
+    f.cl_kutta_joukowski = ex.cl();
+    f.cl_seed_estimate = seed_cl(c);
+    if (omega != 0.0) f.magnus_S = -f.lift / (U * omega);
+  }
+  return f;
+}
+
+std::vector<StagnationPoint> find_stagnation_points(const PolarGrid& g, const Case& c,
+                                                    const std::vector<double>& psi,
+                                                    const Surface& s, int order) {
+  std::vector<StagnationPoint> pts;
+  if (c.speed <= 0.0) return pts;
+  const int n = g.n_theta;
+  const auto& u = s.u_theta;
+  for (int j = 0; j < n; ++j) {
+    const double u0 = u[j], u1 = u[(j + 1) % n];
+    if (u0 == 0.0 || (u0 < 0.0) != (u1 < 0.0)) {
+      const double t = u0 == 0.0 ? 0.0 : u0 / (u0 - u1);
+      pts.push_back({g.a, g.theta[j] + t * g.d_theta, true});
+    }
+  }
+  if (!pts.empty()) return pts;
+  // No zero on the body: a free stagnation point on the y axis, on the side of Γ.
+  const double theta = c.circulation() > 0.0 ? M_PI / 2 : 3 * M_PI / 2;
+  const std::vector<double> ray = u_theta_on_ray(g, psi, theta, order);
+  for (int i = 0; i + 1 < g.n_r; ++i)
+    if ((ray[i] < 0.0) != (ray[i + 1] < 0.0)) {
+      const double t = ray[i] / (ray[i] - ray[i + 1]);
+      pts.push_back({g.r[i] + t * (g.r[i + 1] - g.r[i]), theta, false});
+      break;
+    }
+  return pts;
+}
+
+Errors compute_errors(const PolarGrid& g, const Case& c, const std::vector<double>& psi,
+                      const Surface& s, const Forces& f) {
+  Errors e;
+  const ExactFlow ex = exact_flow(c);
+  const std::vector<double> pe = ex.psi_field(g);
+  double dmax = 0.0, emax = 0.0;
+  for (size_t q = 0; q < pe.size(); ++q) {
+    dmax = std::max(dmax, std::fabs(psi[q] - pe[q]));
+    emax = std::max(emax, std::fabs(pe[q]));
+  }
+  e.psi_max_rel = emax > 0.0 ? dmax / emax : dmax;
+  if (!s.cp.empty()) {
+    double m = 0.0;
+    for (size_t j = 0; j < s.cp.size(); ++j) m = std::max(m, std::fabs(s.cp[j] - s.cp_exact[j]));
+    e.cp_surface_max_abs = m;
+  }
+  const double lift_err = std::fabs(f.lift - f.lift_kutta_joukowski);
+  if (f.lift_kutta_joukowski != 0.0)
+    e.cl_rel = lift_err / std::fabs(f.lift_kutta_joukowski);
+  else
+    e.cl_rel = c.speed > 0.0 ? lift_err / (c.density * c.speed * c.speed * c.radius) : lift_err;
+  const double G = c.circulation();
+  const double scale = G != 0.0 ? std::fabs(G) : c.speed > 0.0 ? 2.0 * M_PI * c.radius * c.speed : 1.0;
+  e.circulation_rel = std::fabs(f.circulation_measured - G) / scale;
+  return e;
+}
+
+}  // namespace magnus

@@ -1,0 +1,45 @@
+#pragma once
+// Forces from the surface pressure, the three lift figures, stagnation points and error norms.
+#include <optional>
+#include <vector>
+#include "postproc/exact.hpp"
+#include "postproc/fields.hpp"
+
+namespace magnus {
+
+/// Forces per unit span and the comparisons of DESIGN §1. Coefficients are empty when U = 0.
+struct Forces {
+  double lift = 0.0, drag = 0.0;        ///< F_y, F_x, N/m
+  std::optional<double> cl, cd;         ///< F/(½ρU²·2a)
+  std::optional<double> cl_kutta_joukowski;  ///< −Γ/(Ua)
+  std::optional<double> cl_seed_estimate;    ///< −4α
+  double lift_kutta_joukowski = 0.0;    ///< −ρUΓ, N/m
+  double delta_p_top_bottom = 0.0;      ///< p(a, π/2) − p(a, 3π/2), Pa
+  double delta_p_top_bottom_exact = 0.0;///< 4ρUΓ/(2πa), Pa
+  double delta_p_seed_estimate = 0.0;   ///< 2ρUaω, Pa
+  double circulation_measured = 0.0;    ///< ∮ u_θ a dθ at r = a, m²/s
+  std::optional<double> magnus_S;       ///< S = −F_y/(Uω), kg/m (F = S ω × v_body)
+  double magnus_S_exact = 0.0;          ///< 2πρa², kg/m
+};
+
+/// F = −∮ p n̂ a dθ by the periodic trapezoid, in the form ½ρ∮(2ū u' + u'²) n̂ a dθ with
+/// u_θ = ū + u' (ū the mean): the constant parts, p∞ and ½ρ(U² − ū²), integrate to zero exactly.
+Forces compute_forces(const Case& c, const Surface& s);
+
+/// Stagnation points from the computed flow: sign changes of u_θ on the surface, or of u_θ along
+/// the y axis for a free point (|Γ| > 4πaU).
+std::vector<StagnationPoint> find_stagnation_points(const PolarGrid& g, const Case& c,
+                                                    const std::vector<double>& psi,
+                                                    const Surface& s, int order);
+
+/// Errors against the exact solution (DESIGN §5 /errors).
+struct Errors {
+  double psi_max_rel = 0.0;                ///< max|ψ − ψ_ex| / max|ψ_ex|
+  std::optional<double> cp_surface_max_abs;///< max|Cp − Cp_ex| on r = a (U > 0)
+  double cl_rel = 0.0;  ///< |F_y − F_y,KJ| / |F_y,KJ| (absolute in units of ½ρU²·2a when F_y,KJ = 0)
+  double circulation_rel = 0.0;  ///< |Γ_measured − Γ| / |Γ| (/(2πaU) when Γ = 0)
+};
+Errors compute_errors(const PolarGrid& g, const Case& c, const std::vector<double>& psi,
+                      const Surface& s, const Forces& f);
+
+}  // namespace magnus

@@ -1,0 +1,393 @@
+#include "postproc/hdf5_io.hpp"
+
+#include <fmt/core.h>
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+
+#include "postproc/xdmf.hpp"
+
+namespace magnus {
+
+namespace {
+
+/// Closes an HDF5 identifier when it goes out of scope.
+struct Handle {
+  hid_t id;
+  herr_t (*close)(hid_t);
+  Handle(hid_t i, herr_t (*c)(hid_t)) : id(i), close(c) {}
+  ~Handle() {
+    if (id >= 0) close(id);
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  operator hid_t() const { return id; }
+};
+
+void quiet_hdf5() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+
+[[noreturn]] void fail(const std::string& what) { throw std::runtime_error(what); }
+
+void check(herr_t status, const std::string& what) {
+  if (status < 0) fail(what);
+}
+
+std::string dir_of(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+}
+
+std::string base_of(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+std::string temp_name(const std::string& path) {
+  return dir_of(path) + "/." + base_of(path) + ".tmp-" + std::to_string(::getpid());
+}
+
+class Writer {
+ public:
+  explicit Writer(hid_t file) : file_(file) {}
+
+  hid_t group(const std::string& name) {
+    hid_t g = H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    if (g < 0) fail("cannot create HDF5 group " + name);
+    groups_.push_back(std::make_unique<Handle>(g, H5Gclose));
+    return g;
+  }
+
+  void attr(hid_t obj, const char* name, double v) {
+    Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+    Handle a(H5Acreate2(obj, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    check(a < 0 ? -1 : H5Awrite(a, H5T_NATIVE_DOUBLE, &v), std::string("cannot write attribute ") + name);
+  }
+  void attr(hid_t obj, const char* name, long v) {
+    Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+    Handle a(H5Acreate2(obj, name, H5T_NATIVE_LONG, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    check(a < 0 ? -1 : H5Awrite(a, H5T_NATIVE_LONG, &v), std::string("cannot write attribute ") + name);
+  }
+  void attr(hid_t obj, const char* name, const std::string& v) {
+    Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+    H5Tset_size(type, H5T_VARIABLE);
+    H5Tset_cset(type, H5T_CSET_UTF8);
+    Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+    Handle a(H5Acreate2(obj, name, type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    const char* p = v.c_str();
+    check(a < 0 ? -1 : H5Awrite(a, type, &p), std::string("cannot write attribute ") + name);
+  }
+  void attr(hid_t obj, const char* name, const char* v) { attr(obj, name, std::string(v)); }
+  void attr(hid_t obj, const char* name, const std::optional<double>& v) {
+    if (v) attr(obj, name, *v);
+  }
+
+  void dataset(hid_t parent, const std::string& name, const std::vector<size_t>& shape,
+               const double* data, const std::string& units) {
+    std::vector<hsize_t> dims(shape.begin(), shape.end());
+    Handle space(H5Screate_simple(int(dims.size()), dims.data(), nullptr), H5Sclose);
+    Handle d(H5Dcreate2(parent, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT,
+                        H5P_DEFAULT), H5Dclose);
+    if (d < 0) fail("cannot create dataset " + name);
+    size_t count = 1;
+    for (size_t s : shape) count *= s;
+    if (count > 0) check(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
+                         "cannot write dataset " + name);
+    attr(d, "units", units);
+  }
+
+ private:
+  hid_t file_;
+  std::vector<std::unique_ptr<Handle>> groups_;
+};
+
+void write_file(const FlowResult& r, hid_t file) {
+  Writer w(file);
+  const Case& c = r.c;
+  const PolarGrid& g = r.grid;
+  const size_t nr = g.n_r, nt = g.n_theta;
+  w.attr(file, "format", "magnus-flow");
+  w.attr(file, "format_version", 1L);
+  w.attr(file, "software_version", MAGNUS_VERSION);
+  w.attr(file, "case", c.source_text);
+  w.attr(file, "title", c.title);
+
+  hid_t p = w.group("/parameters");
+  w.attr(p, "radius", c.radius);
+  w.attr(p, "spin", c.spin);
+  w.attr(p, "spin_ratio", c.spin_ratio());
+  w.attr(p, "speed", c.speed);
+  w.attr(p, "density", c.density);
+  w.attr(p, "pressure_inf", c.pressure_inf);
+  w.attr(p, "circulation", c.circulation());
+  w.attr(p, "circulation_model", c.circulation_given ? "given" : "spin");
+  w.attr(p, "outer_radius", c.outer_radius);
+  w.attr(p, "far_field", to_string(c.far_field));
+  w.attr(p, "spacing", to_string(c.spacing));
+  w.attr(p, "n_r", long(g.n_r));
+  w.attr(p, "n_theta", long(g.n_theta));
+  w.attr(p, "method", r.info.method);
+  w.attr(p, "stencil", to_string(c.stencil));
+  w.attr(p, "units", "radius: m, spin: rad/s, spin_ratio: 1, speed: m/s, density: kg/m^3, "
+                     "pressure_inf: Pa, circulation: m^2/s, outer_radius: R/a (1)");
+
+  hid_t gg = w.group("/grid");
+  w.dataset(gg, "r", {nr}, g.r.data(), "m");
+  w.dataset(gg, "theta", {nt}, g.theta.data(), "rad");
+  std::vector<double> x(nr * nt), y(nr * nt);
+  for (size_t i = 0; i < nr; ++i)
+    for (size_t j = 0; j < nt; ++j) {
+      x[i * nt + j] = g.r[i] * std::cos(g.theta[j]);
+      y[i * nt + j] = g.r[i] * std::sin(g.theta[j]);
+    }
+  w.dataset(gg, "x", {nr, nt}, x.data(), "m");
+  w.dataset(gg, "y", {nr, nt}, y.data(), "m");
+
+  hid_t f = w.group("/fields");
+  for (const auto& name : field_names()) {
+    const auto& v = r.fields.get(name);
+    if (!v.empty()) w.dataset(f, name, {nr, nt}, v.data(), field_units(name));
+  }
+  if (c.speed <= 0.0) w.attr(f, "undefined", "cp (U = 0)");
+
+  hid_t s = w.group("/surface");
+  w.dataset(s, "theta", {nt}, r.surface.theta.data(), "rad");
+  w.dataset(s, "u_theta", {nt}, r.surface.u_theta.data(), "m/s");
+  w.dataset(s, "pressure", {nt}, r.surface.pressure.data(), "Pa");
+  if (!r.surface.cp.empty()) {
+    w.dataset(s, "cp", {nt}, r.surface.cp.data(), "1");
+    w.dataset(s, "cp_exact", {nt}, r.surface.cp_exact.data(), "1");
+  } else {
+    w.attr(s, "undefined", "cp, cp_exact (U = 0)");
+  }
+
+  const Forces& fo = r.forces;
+  hid_t fg = w.group("/forces");
+  w.attr(fg, "lift", fo.lift);
+  w.attr(fg, "drag", fo.drag);
+  w.attr(fg, "cl", fo.cl);
+  w.attr(fg, "cd", fo.cd);
+  w.attr(fg, "cl_kutta_joukowski", fo.cl_kutta_joukowski);
+  w.attr(fg, "cl_seed_estimate", fo.cl_seed_estimate);
+  w.attr(fg, "lift_kutta_joukowski", fo.lift_kutta_joukowski);
+  w.attr(fg, "delta_p_top_bottom", fo.delta_p_top_bottom);
+  w.attr(fg, "delta_p_top_bottom_exact", fo.delta_p_top_bottom_exact);
+  w.attr(fg, "delta_p_seed_estimate", fo.delta_p_seed_estimate);
+  w.attr(fg, "circulation_measured", fo.circulation_measured);
+  w.attr(fg, "magnus_S", fo.magnus_S);
+  w.attr(fg, "magnus_S_exact", fo.magnus_S_exact);
+  w.attr(fg, "units", "lift, drag, lift_kutta_joukowski: N/m; cl, cd, cl_*: 1; delta_p_*: Pa; "
+                      "circulation_measured: m^2/s; magnus_S*: kg/m");
+  if (!fo.cl) w.attr(fg, "undefined", "cl, cd, cl_kutta_joukowski, cl_seed_estimate, magnus_S (U = 0)");
+  else if (!fo.magnus_S) w.attr(fg, "undefined", "magnus_S (omega = 0)");
+
+  hid_t st = w.group("/stagnation");
+  for (auto [name, pts] : {std::pair{"numeric", &r.stagnation}, std::pair{"exact", &r.stagnation_exact}}) {
+    std::vector<double> v;
+    for (const auto& q : *pts) v.insert(v.end(), {q.r, q.theta});
+    w.dataset(st, name, {pts->size(), 2}, v.data(), "m, rad (columns r, theta)");
+  }
+
+  hid_t e = w.group("/errors");
+  w.attr(e, "psi_max_rel", r.errors.psi_max_rel);
+  w.attr(e, "cp_surface_max_abs", r.errors.cp_surface_max_abs);
+  w.attr(e, "cl_rel", r.errors.cl_rel);
+  w.attr(e, "circulation_rel", r.errors.circulation_rel);
+  if (r.info.estimated_cl_rel >= 0.0) w.attr(e, "cl_rel_estimated", r.info.estimated_cl_rel);
+  w.attr(e, "units", "1 (relative), cp_surface_max_abs: 1 (absolute)");
+
+  hid_t t = w.group("/timing");
+  w.attr(t, "total_s", r.timing.total_s);
+  w.attr(t, "assemble_s", r.timing.assemble_s);
+  w.attr(t, "factor_s", r.timing.factor_s);
+  w.attr(t, "solve_s", r.timing.solve_s);
+  w.attr(t, "postproc_s", r.timing.postproc_s);
+  w.attr(t, "units", "s (wall clock)");
+
+  hid_t xg = w.group("/xdmf");
+  w.attr(xg, "note", "seam-closed copies (n_r, n_theta+1) for ParaView; see the .xmf sidecar");
+  for_each_xdmf_array(r, [&](const XdmfArray& a) { w.dataset(xg, a.name, a.shape, a.data.data(), a.units); });
+}
+
+}  // namespace
+
+std::string xdmf_path(const std::string& h5_path) {
+  const std::string base = base_of(h5_path);
+  const auto dot = base.find_last_of('.');
+  const std::string stem = dot == std::string::npos || dot == 0 ? h5_path
+                           : h5_path.substr(0, h5_path.size() - (base.size() - dot));
+  return stem + ".xmf";
+}
+
+void check_writable(const std::string& path) {
+  const std::string dir = dir_of(path);
+  if (::access(dir.c_str(), F_OK) != 0) fail(fmt::format("cannot write '{}': directory '{}' does not exist", path, dir));
+  if (::access(dir.c_str(), W_OK) != 0) fail(fmt::format("cannot write '{}': directory '{}' is not writable", path, dir));
+  if (::access(path.c_str(), F_OK) == 0 && ::access(path.c_str(), W_OK) != 0)
+    fail(fmt::format("cannot write '{}': the existing file is not writable", path));
+}
+
+void write_text_atomic(const std::string& path, const std::string& text) {
+  const std::string tmp = temp_name(path);
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.flush();
+    if (!out) {
+      std::remove(tmp.c_str());
+      fail(fmt::format("cannot write '{}': {}", path, std::strerror(errno)));
+    }
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
+    std::remove(tmp.c_str());
+    fail(fmt::format("cannot write '{}': {}", path, std::strerror(err)));
+  }
+}
+
+void write_result(const FlowResult& r, const std::string& path) {
+  quiet_hdf5();
+  check_writable(path);
+  const std::string tmp = temp_name(path);
+  try {
+    {
+      Handle file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+      if (file < 0) fail(fmt::format("cannot create '{}'", tmp));
+      write_file(r, file);
+      if (H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) fail("cannot flush");
+    }
+    const std::string xmf = xdmf_path(path);
+    const std::string xmf_text = xdmf_text(r, base_of(path));
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) fail(std::strerror(errno));
+    write_text_atomic(xmf, xmf_text);
+  } catch (const std::exception& e) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error(fmt::format("cannot write '{}': {}", path, e.what()));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Reading
+
+ResultFile::ResultFile(const std::string& path) : path_(path) {
+  quiet_hdf5();
+  if (::access(path.c_str(), R_OK) != 0)
+    fail(fmt::format("cannot read '{}': {}", path, std::strerror(errno)));
+  if (H5Fis_hdf5(path.c_str()) <= 0) fail(fmt::format("'{}' is not an HDF5 file (or it is truncated)", path));
+  id_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (id_ < 0) fail(fmt::format("'{}' is a damaged HDF5 file: it cannot be opened", path));
+  std::string format;
+  try {
+    format = attr_string("/", "format");
+  } catch (const std::exception&) {
+    H5Fclose(id_);
+    id_ = -1;
+    fail(fmt::format("'{}' is not a magnus result: no 'format' attribute", path));
+  }
+  if (format != "magnus-flow") {
+    H5Fclose(id_);
+    id_ = -1;
+    fail(fmt::format("'{}' is not a magnus result: format is '{}'", path, format));
+  }
+}
+
+ResultFile::~ResultFile() {
+  if (id_ >= 0) H5Fclose(id_);
+}
+
+bool ResultFile::has(const std::string& object) const {
+  // Check every path component so that missing parents do not raise errors.
+  size_t pos = 0;
+  while ((pos = object.find('/', pos + 1)) != std::string::npos)
+    if (H5Lexists(id_, object.substr(0, pos).c_str(), H5P_DEFAULT) <= 0) return false;
+  return object == "/" || H5Lexists(id_, object.c_str(), H5P_DEFAULT) > 0;
+}
+
+bool ResultFile::has_attr(const std::string& object, const std::string& name) const {
+  return has(object) && H5Aexists_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT) > 0;
+}
+
+std::vector<double> ResultFile::dataset(const std::string& name, std::vector<size_t>* shape) const {
+  if (!has(name)) fail(fmt::format("'{}' has no dataset {}", path_, name));
+  Handle d(H5Dopen2(id_, name.c_str(), H5P_DEFAULT), H5Dclose);
+  if (d < 0) fail(fmt::format("'{}': cannot open dataset {}", path_, name));
+  Handle space(H5Dget_space(d), H5Sclose);
+  const int rank = H5Sget_simple_extent_ndims(space);
+  if (rank < 0 || rank > 3) fail(fmt::format("'{}': dataset {} has a bad shape", path_, name));
+  std::vector<hsize_t> dims(static_cast<size_t>(rank));
+  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+  size_t count = 1;
+  for (auto v : dims) count *= v;
+  if (shape) shape->assign(dims.begin(), dims.end());
+  std::vector<double> out(count);
+  if (count > 0 && H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
+    fail(fmt::format("'{}': dataset {} cannot be read (damaged file?)", path_, name));
+  return out;
+}
+
+double ResultFile::attr_double(const std::string& object, const std::string& name) const {
+  if (!has_attr(object, name)) fail(fmt::format("'{}': {} has no attribute '{}'", path_, object, name));
+  Handle a(H5Aopen_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  double v = 0.0;
+  if (a < 0 || H5Aread(a, H5T_NATIVE_DOUBLE, &v) < 0)
+    fail(fmt::format("'{}': attribute {}@{} is not a number", path_, object, name));
+  return v;
+}
+
+long ResultFile::attr_int(const std::string& object, const std::string& name) const {
+  if (!has_attr(object, name)) fail(fmt::format("'{}': {} has no attribute '{}'", path_, object, name));
+  Handle a(H5Aopen_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  long v = 0;
+  if (a < 0 || H5Aread(a, H5T_NATIVE_LONG, &v) < 0)
+    fail(fmt::format("'{}': attribute {}@{} is not an integer", path_, object, name));
+  return v;
+}
+
+std::string ResultFile::attr_string(const std::string& object, const std::string& name) const {
+  if (!has_attr(object, name)) fail(fmt::format("'{}': {} has no attribute '{}'", path_, object, name));
+  Handle a(H5Aopen_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  Handle type(H5Aget_type(a), H5Tclose);
+  if (a < 0 || H5Tget_class(type) != H5T_STRING)
+    fail(fmt::format("'{}': attribute {}@{} is not a string", path_, object, name));
+  if (H5Tis_variable_str(type) > 0) {
+    Handle mem(H5Tcopy(H5T_C_S1), H5Tclose);
+    H5Tset_size(mem, H5T_VARIABLE);
+    char* p = nullptr;
+    if (H5Aread(a, mem, &p) < 0 || !p) fail(fmt::format("'{}': cannot read {}@{}", path_, object, name));
+    std::string s(p);
+    H5free_memory(p);
+    return s;
+  }
+  const size_t n = H5Tget_size(type);
+  std::string s(n, '\0');
+  Handle mem(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(mem, n);
+  if (H5Aread(a, mem, s.data()) < 0) fail(fmt::format("'{}': cannot read {}@{}", path_, object, name));
+  s.resize(std::strlen(s.c_str()));
+  return s;
+}
+
+std::vector<std::pair<std::string, std::vector<size_t>>> ResultFile::datasets() const {
+  std::vector<std::pair<std::string, std::vector<size_t>>> out;
+  auto visit = [](hid_t obj, const char* name, const H5O_info_t* info, void* data) -> herr_t {
+    if (info->type != H5O_TYPE_DATASET) return 0;
+    auto* o = static_cast<std::vector<std::pair<std::string, std::vector<size_t>>>*>(data);
+    Handle d(H5Dopen2(obj, name, H5P_DEFAULT), H5Dclose);
+    Handle space(H5Dget_space(d), H5Sclose);
+    const int rank = H5Sget_simple_extent_ndims(space);
+    std::vector<hsize_t> dims(size_t(std::max(rank, 0)));
+    if (rank > 0) H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+    o->push_back({std::string("/") + name, std::vector<size_t>(dims.begin(), dims.end())});
+    return 0;
+  };
+  if (H5Ovisit(id_, H5_INDEX_NAME, H5_ITER_INC, visit, &out) < 0)
+    fail(fmt::format("'{}' is damaged: its objects cannot be listed", path_));
+  return out;
+}
+
+}  // namespace magnus
