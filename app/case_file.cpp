@@ -139,9 +139,11 @@ void reject_unknown_keys(const toml::table& t, const std::string& origin) {
     if (v.is_table()) {
       const auto sec = s.find(key);
       if (sec == s.end() || key.empty()) {
-        const std::string near = nearest_key(key);
+        std::string near;
+        for (const auto& [name, keys] : s)
+          if (!name.empty() && edit_distance(name, key) <= 2) near = name;
         throw CaseError(fmt::format("{}: unknown section [{}]{}", origin, key,
-                                    near.empty() ? "" : fmt::format(" (did you mean [{}]?)", near.substr(0, near.find('.')))));
+                                    near.empty() ? "" : fmt::format(" (did you mean [{}]?)", near)));
       }
       for (auto&& [k2, v2] : *v.as_table()) {
         const std::string key2(k2.str());
@@ -301,29 +303,37 @@ Case load_case(const std::string& path, const std::vector<std::string>& override
 }
 
 std::string to_toml(const Case& c) {
-  toml::table t;
-  t.insert("title", c.title);
-  t.insert("cylinder", toml::table{{"radius", c.radius}, {"spin", c.spin}});
-  t.insert("flow", toml::table{{"speed", c.speed}, {"density", c.density}, {"pressure", c.pressure_inf}});
-  toml::table circ{{"model", c.circulation_given ? "given" : "spin"}};
-  if (c.circulation_given) circ.insert("value", c.circulation_value);
-  t.insert("circulation", circ);
-  t.insert("domain", toml::table{{"outer_radius", c.outer_radius}, {"far_field", to_string(c.far_field)}});
-  toml::table grid{{"n_theta", c.n_theta}, {"spacing", to_string(c.spacing)}};
-  if (c.tolerance > 0.0) grid.insert("tolerance", c.tolerance);
-  else grid.insert("n_r", c.n_r);
-  t.insert("grid", grid);
-  t.insert("solver", toml::table{{"method", to_string(c.method)}, {"stencil", to_string(c.stencil)}});
-  toml::table out{{"file", c.output_file}};
+  auto str = [](const std::string& v) {
+    std::string q = "\"";
+    for (char ch : v) {
+      if (ch == '"' || ch == '\\') q += '\\';
+      if (ch == '\n') { q += "\\n"; continue; }
+      q += ch;
+    }
+    return q + "\"";
+  };
+  auto num = [](double v) {
+    std::string s = fmt::format("{}", v);
+    return s.find_first_of(".eE") == std::string::npos ? s + ".0" : s;
+  };
+  std::string t = fmt::format("title = {}\n", str(c.title));
+  t += fmt::format("\n[cylinder]\nradius = {}\nspin = {}\n", num(c.radius), num(c.spin));
+  t += fmt::format("\n[flow]\nspeed = {}\ndensity = {}\npressure = {}\n", num(c.speed), num(c.density),
+                   num(c.pressure_inf));
+  t += fmt::format("\n[circulation]\nmodel = {}\n", str(c.circulation_given ? "given" : "spin"));
+  if (c.circulation_given) t += fmt::format("value = {}\n", num(c.circulation_value));
+  t += fmt::format("\n[domain]\nouter_radius = {}\nfar_field = {}\n", num(c.outer_radius), str(to_string(c.far_field)));
+  t += fmt::format("\n[grid]\nn_theta = {}\nspacing = {}\n", c.n_theta, str(to_string(c.spacing)));
+  if (c.tolerance > 0.0) t += fmt::format("tolerance = {}\n", num(c.tolerance));
+  else t += fmt::format("n_r = {}\n", c.n_r);
+  t += fmt::format("\n[solver]\nmethod = {}\nstencil = {}\n", str(to_string(c.method)), str(to_string(c.stencil)));
+  t += fmt::format("\n[output]\nfile = {}\n", str(c.output_file));
   if (!c.output_fields.empty()) {
-    toml::array a;
-    for (const auto& f : c.output_fields) a.push_back(f);
-    out.insert("fields", a);
+    std::string list;
+    for (const auto& f : c.output_fields) list += (list.empty() ? "" : ", ") + str(f);
+    t += fmt::format("fields = [{}]\n", list);
   }
-  t.insert("output", out);
-  std::ostringstream ss;
-  ss << t << "\n";
-  return ss.str();
+  return t;
 }
 
 }  // namespace magnus

@@ -355,19 +355,15 @@ std::string ResultFile::attr_string(const std::string& object, const std::string
   if (a < 0 || H5Tget_class(type) != H5T_STRING)
     fail(fmt::format("'{}': attribute {}@{} is not a string", path_, object, name));
   if (H5Tis_variable_str(type) > 0) {
-    Handle mem(H5Tcopy(H5T_C_S1), H5Tclose);
-    H5Tset_size(mem, H5T_VARIABLE);
     char* p = nullptr;
-    if (H5Aread(a, mem, &p) < 0 || !p) fail(fmt::format("'{}': cannot read {}@{}", path_, object, name));
+    if (H5Aread(a, type, &p) < 0 || !p) fail(fmt::format("'{}': cannot read {}@{}", path_, object, name));
     std::string s(p);
     H5free_memory(p);
     return s;
   }
   const size_t n = H5Tget_size(type);
   std::string s(n, '\0');
-  Handle mem(H5Tcopy(H5T_C_S1), H5Tclose);
-  H5Tset_size(mem, n);
-  if (H5Aread(a, mem, s.data()) < 0) fail(fmt::format("'{}': cannot read {}@{}", path_, object, name));
+  if (H5Aread(a, type, s.data()) < 0) fail(fmt::format("'{}': cannot read {}@{}", path_, object, name));
   s.resize(std::strlen(s.c_str()));
   return s;
 }

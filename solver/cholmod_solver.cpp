@@ -36,11 +36,11 @@ SpMat assemble_matrix(const DiscreteOperator& op, bool lower_only) {
   const long c_index = long(L) * n;  // the freestream constant C, if any
   auto idx = [n](int i, int j) { return long(i - 1) * n + ((j % n) + n) % n; };
   std::vector<Triplet> t;
-  t.reserve(size_t(N) * 9 + (op.far_field == FarField::exact ? size_t(n) * n / 2 + n : 1));
+  const bool exact = op.far_field == FarField::exact;
+  t.reserve(size_t(N) * (lower_only ? 5 : 9) + (exact ? size_t(n) * n : 2 * size_t(n) + 1));
+  // Each row is built from its own equation; symmetry is a property of the stencil, not imposed here.
   auto add = [&t, lower_only](long row, long col, double v) {
-    if (v == 0.0) return;
-    if (col <= row) t.emplace_back(row, col, v);
-    if (col < row && !lower_only) t.emplace_back(col, row, v);
+    if (v != 0.0 && (!lower_only || col <= row)) t.emplace_back(row, col, v);
   };
   for (int i = 1; i <= L; ++i) {
     const RingStencil& s = op.ring[i];
@@ -49,9 +49,9 @@ SpMat assemble_matrix(const DiscreteOperator& op, bool lower_only) {
       for (int d = -1; d <= 1; ++d) {
         const int ii = i + d;
         if (ii < 1) continue;  // ψ = 0 on the body
-        if (ii > L) {
-          if (op.far_field == FarField::freestream) add(c_index, row, s.a[d + 1] + 2.0 * s.b[d + 1]);
-          continue;  // exact far field: the exterior block below
+        if (ii > L) {          // the outer ring: C (freestream) or the exterior block (exact)
+          if (!exact) add(row, c_index, s.a[d + 1] + 2.0 * s.b[d + 1]);
+          continue;
         }
         add(row, idx(ii, j), s.a[d + 1]);
         add(row, idx(ii, j + 1), s.b[d + 1]);
@@ -59,12 +59,14 @@ SpMat assemble_matrix(const DiscreteOperator& op, bool lower_only) {
       }
     }
   }
-  if (op.far_field == FarField::freestream) {
+  if (!exact) {
+    // Circulation row: n·w·C − w·Σ_j ψ_{L,j} = −Γ − w·Σ_j g_j.
     add(c_index, c_index, double(n) * op.w[L]);
+    for (int j = 0; j < n; ++j) add(c_index, idx(L, j), -op.w[L]);
   } else {
     const std::vector<double> c = exterior_circulant(op);
     for (int j = 0; j < n; ++j)
-      for (int l = 0; l <= j; ++l) add(idx(L, j), idx(L, l), c[j - l]);
+      for (int l = 0; l < n; ++l) add(idx(L, j), idx(L, l), c[size_t((j - l + n) % n)]);
   }
   SpMat A(N, N);
   A.setFromTriplets(t.begin(), t.end());

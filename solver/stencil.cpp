@@ -72,7 +72,9 @@ DiscreteOperator make_operator(const PolarGrid& grid, StencilKind stencil, FarFi
     op.ring[i] = stencil == StencilKind::nine_point ? nine_point(dp, grid.d_theta)
                                                    : five_point(dm, dp, grid.d_theta);
   }
-  op.ring[0] = op.ring[1];
+  // Ring 0 (the body, not an unknown) only defines the flux weight w_{1/2}.
+  op.ring[0] = stencil == StencilKind::nine_point ? nine_point(grid.d_xi(0), grid.d_theta)
+                                                 : five_point(grid.d_xi(0), grid.d_xi(0), grid.d_theta);
   op.w.resize(grid.n_r);
   for (int i = 0; i <= N; ++i) op.w[i] = -(op.ring[i].a[2] + 2.0 * op.ring[i].b[2]);
   if (far_field == FarField::exact) {

@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Set up (packages, build) if needed, then run the whole default test suite through ctest.
+# MAGNUS_TEST_LABEL=stress scripts/test.sh runs the long stability suite instead.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${MAGNUS_BUILD_DIR:-$here/build}"
+"$here/scripts/setup.sh"
+cd "$build"
+exec ctest --output-on-failure -j "$(nproc)" -L "${MAGNUS_TEST_LABEL:-default}"

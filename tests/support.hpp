@@ -1,0 +1,35 @@
+#pragma once
+// Shared helpers for the tests: a case on a chosen grid, solved and post-processed.
+#include <cmath>
+#include <string>
+#include "app/run.hpp"
+
+namespace magnus::test {
+
+/// The spin-ratio-α case (a = 0.1 m, U = 10 m/s) on an n_θ grid with the given options.
+inline Case make_case(double alpha, int n_theta, Spacing spacing = Spacing::geometric,
+                      FarField far_field = FarField::exact, StencilKind stencil = StencilKind::five_point,
+                      Method method = Method::fft, double outer_radius = 20.0) {
+  Case c;
+  c.radius = 0.1;
+  c.speed = 10.0;
+  c.spin = alpha * c.speed / c.radius;
+  c.n_theta = n_theta;
+  c.spacing = spacing;
+  c.far_field = far_field;
+  c.stencil = stencil;
+  c.method = method;
+  c.outer_radius = outer_radius;
+  c.output_fields = {"psi"};
+  return c;
+}
+
+/// Observed order log(e_coarse/e_fine)/log(h_coarse/h_fine) for a refinement ratio.
+inline double observed_order(double e_coarse, double e_fine, double ratio = 2.0) {
+  return std::log(e_coarse / e_fine) / std::log(ratio);
+}
+
+/// A fresh temporary directory for one test.
+std::string temp_dir(const std::string& name);
+
+}  // namespace magnus::test
