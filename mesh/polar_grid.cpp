@@ -55,6 +55,12 @@ PolarGrid make_grid(double a, double outer_over_a, int n_r, int n_theta, Spacing
 }
 
 PolarGrid make_grid(const Case& c) {
+  if (c.n_r == 0 && c.spacing == Spacing::geometric) {
+    // Square cells exactly: whole cells of Δξ = Δθ, R rounded up to the next one.
+    const double d_theta = 2.0 * M_PI / c.n_theta;
+    const int cells = std::max(2, int(std::ceil(std::log(c.outer_radius) / d_theta - 1e-9)));
+    return make_grid(c.radius, std::exp(cells * d_theta), cells + 1, c.n_theta, c.spacing);
+  }
   const int n_r = c.n_r > 0 ? c.n_r : default_n_r(c.spacing, c.outer_radius, c.n_theta);
   return make_grid(c.radius, c.outer_radius, n_r, c.n_theta, c.spacing);
 }

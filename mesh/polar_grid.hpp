@@ -29,7 +29,8 @@ int default_n_r(Spacing spacing, double outer_over_a, int n_theta);
 /// Geometric: r_i = a·e^{iΔξ}; uniform: r_i = a + iΔr. R = outer_over_a·a.
 PolarGrid make_grid(double a, double outer_over_a, int n_r, int n_theta, Spacing spacing);
 
-/// The grid a case asks for (n_r = 0 chooses default_n_r).
+/// The grid a case asks for. n_r = 0: geometric spacing gets exactly square cells (Δξ = Δθ, R rounded
+/// up to a whole cell, so R ≥ the R asked for); uniform spacing gets default_n_r.
 PolarGrid make_grid(const Case& c);
 
 }  // namespace magnus

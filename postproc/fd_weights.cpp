@@ -31,14 +31,29 @@ std::vector<double> fd_weights(double x0, const std::vector<double>& x, int m) {
   return w;
 }
 
-RadialDerivative radial_derivative(const std::vector<double>& xi, int order) {
-  const int n = int(xi.size()), width = order + 1;
+RadialDerivative radial_derivative(const std::vector<double>& xi, int order, bool odd_at_wall) {
+  const int n = int(xi.size()), width = order + 1, half = order / 2;
   RadialDerivative d;
   d.order = order;
   d.first.resize(n);
   d.weights.resize(n);
   for (int i = 0; i < n; ++i) {
-    const int f = std::clamp(i - order / 2, 0, n - width);
+    if (odd_at_wall && i < half && n > i + half) {
+      // Near the wall ψ is odd in ξ about ξ = 0 (ψ = 0 on the body, ψ harmonic): centred weights on
+      // the reflected nodes −ξ_m, folded back onto the real node m with a minus sign.
+      std::vector<double> x;
+      for (int m = i + half; m >= 1; --m) x.push_back(-xi[m]);
+      for (int m = 0; m <= i + half; ++m) x.push_back(xi[m]);
+      const std::vector<double> w = fd_weights(xi[i], x, 1);
+      const int ghosts = i + half;
+      std::vector<double> folded(size_t(i + half + 1), 0.0);
+      for (int m = 0; m <= i + half; ++m) folded[m] += w[ghosts + m];
+      for (int m = 1; m <= ghosts; ++m) folded[m] -= w[ghosts - m];
+      d.first[i] = 0;
+      d.weights[i] = folded;
+      continue;
+    }
+    const int f = std::clamp(i - half, 0, n - width);
     d.first[i] = f;
     d.weights[i] = fd_weights(xi[i], std::vector<double>(xi.begin() + f, xi.begin() + f + width), 1);
   }

@@ -6,14 +6,16 @@ namespace magnus {
 /// Finite-difference weights (Fornberg 1988) for the m-th derivative at x0 from nodes x.
 std::vector<double> fd_weights(double x0, const std::vector<double>& x, int m);
 
-/// Weights of ∂/∂ξ of order p at every ring of a ξ grid: centred inside, one-sided near the ends.
-/// first[i] is the first ring of row i's window; weights[i] has p+1 entries.
+/// Weights of ∂/∂ξ of order p at every ring of a ξ grid: centred inside, one-sided at the ends or,
+/// with odd_at_wall, centred near the wall on the odd reflection ψ(−ξ) = −ψ(ξ) (ψ = 0 on the body
+/// and ψ harmonic; the symmetric stencils keep that property discretely).
+/// Row i uses rings first[i] … first[i] + weights[i].size() − 1.
 struct RadialDerivative {
   int order = 2;
   std::vector<int> first;
   std::vector<std::vector<double>> weights;
 };
-RadialDerivative radial_derivative(const std::vector<double>& xi, int order);
+RadialDerivative radial_derivative(const std::vector<double>& xi, int order, bool odd_at_wall);
 
 /// Periodic centred weights of order p (p even) for ∂/∂θ on a uniform grid of spacing h: c_1…c_{p/2},
 /// derivative = Σ_m c_m (f_{j+m} − f_{j−m}).

@@ -52,7 +52,7 @@ const std::vector<double>& Fields::get(const std::string& name) const {
   return *all[field_index(name)];
 }
 
-int derivative_order(StencilKind stencil) { return stencil == StencilKind::nine_point ? 4 : 2; }
+int derivative_order(StencilKind stencil) { return stencil == StencilKind::nine_point ? 6 : 2; }
 
 namespace {
 
@@ -85,7 +85,7 @@ Fields compute_fields(const PolarGrid& g, const Case& c, const std::vector<doubl
     if (sel.has("psi_exact")) f.psi_exact = std::move(ex);
   }
   if (!sel.any_velocity()) return f;
-  const RadialDerivative D = radial_derivative(g.xi, order);
+  const RadialDerivative D = radial_derivative(g.xi, order, order > 2);
   const std::vector<double> cw = periodic_derivative(g.d_theta, order);
   std::vector<double> ur(N), ut(N);
   std::vector<double> cs(n), sn(n);
@@ -133,7 +133,7 @@ Fields compute_fields(const PolarGrid& g, const Case& c, const std::vector<doubl
 
 Surface compute_surface(const PolarGrid& g, const Case& c, const std::vector<double>& psi, int order) {
   const int n = g.n_theta;
-  const RadialDerivative D = radial_derivative(g.xi, order);
+  const RadialDerivative D = radial_derivative(g.xi, order, order > 2);
   Surface s;
   s.theta = g.theta;
   s.u_theta.resize(n);
@@ -171,7 +171,7 @@ double periodic_interpolate(const std::vector<double>& f, double theta) {
 
 std::vector<double> u_theta_on_ray(const PolarGrid& g, const std::vector<double>& psi, double theta,
                                    int order) {
-  const RadialDerivative D = radial_derivative(g.xi, order);
+  const RadialDerivative D = radial_derivative(g.xi, order, order > 2);
   std::vector<double> out(g.n_r), ring(g.n_theta);
   for (int i = 0; i < g.n_r; ++i) {
     d_dxi(g, D, psi, i, ring.data());

@@ -36,7 +36,7 @@ struct Surface {
   std::vector<double> cp, cp_exact;  ///< empty when U = 0 (undefined)
 };
 
-/// Order of the derivative formulas matching a stencil: 2 (5-point) or 4 (9-point).
+/// Order of the derivative formulas matching a stencil: 2 (5-point) or 6 (9-point).
 int derivative_order(StencilKind stencil);
 
 /// u_θ = −(1/r)·∂ψ/∂ξ on every ring of column j's values psi_col(i).

@@ -126,7 +126,8 @@ void write_file(const FlowResult& r, hid_t file) {
   w.attr(p, "pressure_inf", c.pressure_inf);
   w.attr(p, "circulation", c.circulation());
   w.attr(p, "circulation_model", c.circulation_given ? "given" : "spin");
-  w.attr(p, "outer_radius", c.outer_radius);
+  w.attr(p, "outer_radius", g.outer_radius() / g.a);
+  w.attr(p, "outer_radius_requested", c.outer_radius);
   w.attr(p, "far_field", to_string(c.far_field));
   w.attr(p, "spacing", to_string(c.spacing));
   w.attr(p, "n_r", long(g.n_r));

@@ -15,6 +15,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <mutex>
 #include <stdexcept>
 
@@ -176,11 +177,18 @@ void render_png(const std::string& png, PlotSize size, Draw&& draw) {
 // ---------------------------------------------------------------------------------------------
 // Drawing helpers.
 
+
 /// Character height scaled with the image so that text stays legible at any size.
-void text_scale(plstream& pls, PlotSize size, double factor = 1.0) {
-  const double s = std::max(0.6, std::min(size.width, size.height) / 800.0);
-  pls.schr(0.0, 1.25 * s * factor);
+/// Returns the scale set (relative to PLplot's default height).
+double text_scale(plstream& pls, PlotSize size, double factor = 1.0) {
+  // PLplot's default height is fixed in pixels: grow it gently with the image.
+  const double s = 0.9 * factor * std::pow(std::clamp(std::min(size.width, size.height) / 800.0, 0.3, 4.0), 0.6);
+  pls.schr(0.0, s);
+  return s;
 }
+
+/// Marker glyphs are text: their size is set the same way, smaller.
+void marker_scale(plstream& pls, PlotSize size, double factor = 1.0) { text_scale(pls, size, 0.55 * factor); }
 
 struct LegendEntry {
   std::string text;
@@ -202,7 +210,7 @@ LegendEntry line_entry(std::string text, PLINT pen, PLINT style, double width) {
   return e;
 }
 
-LegendEntry symbol_entry(std::string text, PLINT pen, const char* glyph, double scale) {
+LegendEntry symbol_entry(std::string text, PLINT pen, const char* glyph, double scale = 0.6) {
   LegendEntry e;
   e.text = std::move(text);
   e.pen = pen;
@@ -211,9 +219,13 @@ LegendEntry symbol_entry(std::string text, PLINT pen, const char* glyph, double 
   return e;
 }
 
-void draw_legend(plstream& pls, const std::vector<LegendEntry>& entries, PLINT position, double x = 0.02,
-                 double y = 0.02) {
+/// A boxed legend on a white background; position is PL_POSITION_* relative to the viewport. The text
+/// height is the current one; symbol scales are relative to it. (pllegend's scales are absolute.)
+void draw_legend(plstream& pls, const std::vector<LegendEntry>& entries, PLINT position, double x, double y) {
   if (entries.empty()) return;
+  PLFLT def_mm = 0.0, ht_mm = 0.0;
+  pls.gchr(def_mm, ht_mm);
+  const double scale = def_mm > 0.0 ? ht_mm / def_mm : 1.0;
   const PLINT n = PLINT(entries.size());
   std::vector<PLINT> opt(n), text_colors(n, kBlack), line_colors(n), line_styles(n), symbol_colors(n),
       symbol_numbers(n, 1), box_colors(n, 0), box_patterns(n, 0);
@@ -228,20 +240,80 @@ void draw_legend(plstream& pls, const std::vector<LegendEntry>& entries, PLINT p
     line_styles[k] = e.line_style;
     line_widths[k] = e.line_width;
     symbol_colors[k] = e.pen;
-    symbol_scales[k] = e.symbol_scale;
-    symbols[k] = e.symbol.empty() ? "" : e.symbol.c_str();
+    symbol_scales[k] = e.symbol_scale * scale;
+    symbols[k] = e.symbol.c_str();
   }
   PLFLT w = 0.0, h = 0.0;
-  pls.legend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, position | PL_POSITION_INSIDE, x, y, 0.08,
-             kWhite, kBlack, 1, 0, 0, n, opt.data(), 1.0, 0.9, 2.0, 0.0, text_colors.data(), text.data(),
-             box_colors.data(), box_patterns.data(), box_scales.data(), box_line_widths.data(),
-             line_colors.data(), line_styles.data(), line_widths.data(), symbol_colors.data(),
-             symbol_scales.data(), symbol_numbers.data(), symbols.data());
+  pls.legend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, position, x, y, 0.07, kWhite, kBlack, 1, 0,
+             0, n, opt.data(), 0.8, scale, 2.0, 0.0, text_colors.data(), text.data(), box_colors.data(),
+             box_patterns.data(), box_scales.data(), box_line_widths.data(), line_colors.data(),
+             line_styles.data(), line_widths.data(), symbol_colors.data(), symbol_scales.data(),
+             symbol_numbers.data(), symbols.data());
 }
 
-/// Filled circle (polygon) of radius rad at (x, y) in world coordinates, with an outline.
+/// Characters as displayed: UTF-8 sequences count once, PLplot escapes (#d, #u, ##) not at all.
+size_t display_length(const std::string& t) {
+  size_t n = 0;
+  for (size_t k = 0; k < t.size(); ++k) {
+    const unsigned char ch = static_cast<unsigned char>(t[k]);
+    if (ch == '#' && k + 1 < t.size()) {
+      ++k;
+      if (t[k] == '#') ++n;
+      continue;
+    }
+    if ((ch & 0xC0) != 0x80) ++n;
+  }
+  return n;
+}
+
+/// Estimated legend size as fractions of the viewport, at the current text height (pllegend reports
+/// its size only after drawing).
+std::pair<double, double> legend_fraction(plstream& pls, const std::vector<LegendEntry>& entries) {
+  PLFLT def_mm = 0.0, ht_mm = 0.0, sx0 = 0.0, sx1 = 0.0, sy0 = 0.0, sy1 = 0.0, vx0 = 0.0, vx1 = 0.0, vy0 = 0.0,
+        vy1 = 0.0;
+  pls.gchr(def_mm, ht_mm);
+  pls.gspa(sx0, sx1, sy0, sy1);
+  pls.gvpd(vx0, vx1, vy0, vy1);
+  const double vw = std::max(1e-9, (vx1 - vx0) * (sx1 - sx0)), vh = std::max(1e-9, (vy1 - vy0) * (sy1 - sy0));
+  size_t chars = 0;
+  for (const auto& e : entries) chars = std::max(chars, display_length(e.text));
+  const double w_mm = double(chars) * 0.62 * ht_mm + 0.07 * vw + 2.5 * ht_mm;
+  const double h_mm = double(entries.size()) * 2.0 * ht_mm;
+  return {w_mm / vw, h_mm / vh};
+}
+
+/// Points along the segment (x0, y0)–(x1, y1), for legend placement.
+void sample_segment(std::vector<CurvePoint>& out, double x0, double y0, double x1, double y1, int n = 60) {
+  for (int k = 0; k <= n; ++k) out.push_back({x0 + (x1 - x0) * k / n, y0 + (y1 - y0) * k / n});
+}
+
+/// The inside corner of the viewport window [x0, x1] × [y0, y1] whose legend box (offset dx, dy,
+/// size frac) covers the fewest of the occupied points; ties go to the earlier preference.
+PLINT pick_corner(const std::vector<CurvePoint>& occupied, double x0, double x1, double y0, double y1,
+                  std::pair<double, double> frac, double dx, double dy, std::initializer_list<PLINT> prefs) {
+  PLINT best = *prefs.begin();
+  size_t best_count = std::numeric_limits<size_t>::max();
+  const double margin = 0.02;
+  for (PLINT corner : prefs) {
+    const bool right = corner & PL_POSITION_RIGHT, top = corner & PL_POSITION_TOP;
+    const double u0 = right ? 1.0 - dx - frac.first : dx, v0 = top ? 1.0 - dy - frac.second : dy;
+    const double u1 = u0 + frac.first, v1 = v0 + frac.second;
+    size_t count = 0;
+    for (const auto& p : occupied) {
+      const double u = (p.x - x0) / (x1 - x0), v = (p.y - y0) / (y1 - y0);
+      if (u > u0 - margin && u < u1 + margin && v > v0 - margin && v < v1 + margin) ++count;
+    }
+    if (count < best_count) {
+      best = corner;
+      best_count = count;
+    }
+  }
+  return best | PL_POSITION_INSIDE;
+}
+
+/// Filled circle (polygon) of radius rad at (x, y) in world coordinates; a pen < 0 skips fill or rim.
 void disc(plstream& pls, double x, double y, double rad, PLINT fill_pen, PLINT edge_pen, double edge_width) {
-  const int n = 72;
+  const int n = 90;
   std::vector<PLFLT> px(n + 1), py(n + 1);
   for (int k = 0; k <= n; ++k) {
     px[k] = x + rad * std::cos(2 * M_PI * k / n);
@@ -260,33 +332,38 @@ void disc(plstream& pls, double x, double y, double rad, PLINT fill_pen, PLINT e
   }
 }
 
-/// Markers at the points (UTF-8 glyph, centred).
+bool usable(const CurvePoint& p, bool logx, bool logy) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && (!logx || p.x > 0) && (!logy || p.y > 0);
+}
+
+/// Markers (a UTF-8 glyph, centred) at the points; the size comes from the current character height.
 void markers(plstream& pls, const std::vector<CurvePoint>& pts, const char* glyph, PLINT pen, bool logx = false,
              bool logy = false) {
   std::vector<PLFLT> x, y;
-  for (const auto& p : pts) {
-    if ((logx && !(p.x > 0)) || (logy && !(p.y > 0)) || !std::isfinite(p.x) || !std::isfinite(p.y)) continue;
-    x.push_back(logx ? std::log10(p.x) : p.x);
-    y.push_back(logy ? std::log10(p.y) : p.y);
-  }
+  for (const auto& p : pts)
+    if (usable(p, logx, logy)) {
+      x.push_back(logx ? std::log10(p.x) : p.x);
+      y.push_back(logy ? std::log10(p.y) : p.y);
+    }
   if (x.empty()) return;
   pls.col0(pen);
   pls.string(PLINT(x.size()), x.data(), y.data(), glyph);
 }
 
-/// A field on the polar grid as (n_r', n_θ + 1) arrays: column n_θ repeats column 0 (θ = 2π) so
-/// that contours close over the seam; only rings up to the first one beyond r_max are kept.
+/// A field on rings i0…i1 of the polar grid as (i1 − i0 + 1, n_θ + 1) arrays for plcont/plshades with
+/// pltr2: column n_θ repeats column 0 (θ = 2π, same x, y) so that contours close over the seam and
+/// no cell spans it.
 struct PolarPatch {
   PLINT nx = 0, ny = 0;
   std::vector<PLFLT> xs, ys, zs;
   std::vector<PLFLT*> xrow, yrow, zrow;
   PLcGrid2 grid{};
 
-  PolarPatch(const PolarGrid& g, const std::vector<double>& f, double r_max) {
+  PolarPatch(const PolarGrid& g, const std::vector<double>& f, int i0, int i1) {
     const int nt = g.n_theta;
-    int n_r = 1;
-    while (n_r < g.n_r && g.r[n_r - 1] < r_max) ++n_r;
-    nx = n_r;
+    i0 = std::clamp(i0, 0, g.n_r - 2);
+    i1 = std::clamp(i1, i0 + 1, g.n_r - 1);
+    nx = i1 - i0 + 1;
     ny = nt + 1;
     xs.resize(size_t(nx) * ny);
     ys.resize(xs.size());
@@ -295,9 +372,9 @@ struct PolarPatch {
       for (int j = 0; j <= nt; ++j) {
         const int jj = j % nt;
         const size_t q = size_t(i) * ny + j;
-        xs[q] = g.r[i] * std::cos(g.theta[jj]);
-        ys[q] = g.r[i] * std::sin(g.theta[jj]);
-        zs[q] = f[size_t(i) * nt + jj];
+        xs[q] = g.r[i0 + i] * std::cos(g.theta[jj]);
+        ys[q] = g.r[i0 + i] * std::sin(g.theta[jj]);
+        zs[q] = f[size_t(i0 + i) * nt + jj];
       }
     for (int i = 0; i < nx; ++i) {
       xrow.push_back(&xs[size_t(i) * ny]);
@@ -310,6 +387,9 @@ struct PolarPatch {
     grid.nx = nx;
     grid.ny = ny;
   }
+  PolarPatch(const PolarPatch&) = delete;
+  PolarPatch& operator=(const PolarPatch&) = delete;
+
   const PLFLT* const* z() const { return zrow.data(); }
   void* pltr_data() { return &grid; }
 
@@ -325,10 +405,24 @@ struct PolarPatch {
   }
 };
 
+/// Index of the last ring with r_i ≤ r (0 if none).
+int ring_at_or_below(const PolarGrid& g, double r) {
+  int i = 0;
+  while (i + 1 < g.n_r && g.r[i + 1] <= r) ++i;
+  return i;
+}
+
+/// Index of the first ring with r_i ≥ r (n_r − 1 if none).
+int ring_at_or_above(const PolarGrid& g, double r) {
+  int i = 0;
+  while (i + 1 < g.n_r && g.r[i] < r) ++i;
+  return i;
+}
+
 /// Half-width of the square view window: min(R, 4a).
 double view_half_width(const FlowResult& r) { return std::min(r.grid.outer_radius(), 4.0 * r.grid.a); }
 
-/// "α = 1.5" (or the circulation when it is given, or "U = 0").
+/// "α = 1.5" (with the circulation when it is given, or "U = 0").
 std::string flow_label(const Case& c) {
   if (c.speed <= 0.0) return fmt::format("U = 0, Γ = {} m²/s", num(c.circulation()));
   std::string s = fmt::format("α = {}", num(c.spin_ratio(), 4));
@@ -338,19 +432,20 @@ std::string flow_label(const Case& c) {
 
 std::string case_title(const Case& c) { return plain(c.title.empty() ? std::string("Spinning cylinder") : c.title); }
 
-/// Square plot box over |x|, |y| ≤ w with equal scales, inside the given fraction of the page.
-void polar_frame(plstream& pls, double w, double right = 0.95) {
+/// Square plot box over |x|, |y| ≤ w with equal scales, within [0.09, right] of the page width.
+void square_frame(plstream& pls, double w, double right, double bottom = 0.10) {
   pls.adv(0);
-  pls.vpas(0.10, right, 0.10, 0.90, 1.0);
+  pls.vpas(0.09, right, bottom, 0.91, 1.0);
   pls.wind(-w, w, -w, w);
 }
 
-void polar_axes(plstream& pls, const std::string& title) {
+void frame_axes(plstream& pls, const char* xopt, const char* yopt, const std::string& xlabel,
+                const std::string& ylabel, const std::string& title) {
   pls.col0(kBlack);
   pls.width(1.2);
-  pls.box("bcnst", 0.0, 0, "bcnstv", 0.0, 0);
+  pls.box(xopt, 0.0, 0, yopt, 0.0, 0);
   pls.width(1.0);
-  pls.lab("x (m)", "y (m)", title.c_str());
+  pls.lab(xlabel.c_str(), ylabel.c_str(), title.c_str());
 }
 
 /// The body: a grey disc with a black rim.
@@ -358,11 +453,10 @@ void cylinder(plstream& pls, double a) { disc(pls, 0.0, 0.0, a, kGrey, kBlack, 2
 
 /// ψ at (r, θ) from the grid field: periodic cubic in θ on the two rings around r, linear in r.
 double psi_at(const PolarGrid& g, const std::vector<double>& psi, double r, double theta) {
-  int i = 0;
-  while (i + 2 < g.n_r && g.r[i + 1] < r) ++i;
+  const int i = std::min(ring_at_or_below(g, r), g.n_r - 2);
   const int nt = g.n_theta;
-  std::vector<double> a(psi.begin() + long(i) * nt, psi.begin() + long(i + 1) * nt);
-  std::vector<double> b(psi.begin() + long(i + 1) * nt, psi.begin() + long(i + 2) * nt);
+  const std::vector<double> a(psi.begin() + long(i) * nt, psi.begin() + long(i + 1) * nt);
+  const std::vector<double> b(psi.begin() + long(i + 1) * nt, psi.begin() + long(i + 2) * nt);
   const double fa = periodic_interpolate(a, theta), fb = periodic_interpolate(b, theta);
   const double t = std::clamp((r - g.r[i]) / (g.r[i + 1] - g.r[i]), 0.0, 1.0);
   return fa + t * (fb - fa);
@@ -374,13 +468,14 @@ void contour(plstream& pls, PolarPatch& p, const std::vector<PLFLT>& levels, PLI
   pls.col0(pen);
   pls.width(width);
   pls.lsty(style);
+  // plcont index ranges are 1-based and inclusive.
   pls.cont(p.z(), p.nx, p.ny, 1, p.nx, 1, p.ny, levels.data(), PLINT(levels.size()), plcallback::tr2,
            p.pltr_data());
   pls.lsty(1);
   pls.width(1.0);
 }
 
-/// cmap1: a perceptually ordered dark-blue → teal → yellow ramp (viridis-like).
+/// cmap1: a perceptually ordered dark-purple → teal → yellow ramp (viridis-like).
 void sequential_cmap1(plstream& pls) {
   const PLFLT pos[] = {0.0, 0.25, 0.5, 0.75, 1.0};
   const PLFLT r[] = {0.267, 0.230, 0.128, 0.369, 0.993};
@@ -391,7 +486,7 @@ void sequential_cmap1(plstream& pls) {
 }
 
 /// Axis range [lo, hi] padded by a fraction, never empty.
-std::pair<double, double> padded(double lo, double hi, double frac = 0.05) {
+std::pair<double, double> padded(double lo, double hi, double frac) {
   if (!std::isfinite(lo) || !std::isfinite(hi)) return {0.0, 1.0};
   if (hi - lo <= 1e-12 * std::max(1.0, std::fabs(hi))) {
     const double d = std::max(1.0, std::fabs(hi)) * 0.1;
@@ -411,56 +506,73 @@ void plot_streamlines(const FlowResult& r, const std::string& png, PlotSize size
   if (psi.size() != size_t(g.nodes()) || g.n_r < 2 || g.n_theta < 4)
     throw std::runtime_error("plot: the result has no psi field");
   const double a = g.a, w = view_half_width(r);
-  PolarPatch patch(g, psi, w * std::sqrt(2.0));
+  const int i_view = ring_at_or_above(g, w * std::sqrt(2.0));  // the window's corners
+  PolarPatch all(g, psi, 0, i_view);
 
-  // Levels: evenly spaced multiples of a round step, so that ψ = 0 (body and dividing streamline) is one.
-  const auto [lo, hi] = patch.range_in(w);
+  // Levels: multiples of a round step, so that ψ = 0 (the body, and the dividing streamline
+  // while the stagnation points are on the surface) is one of them.
+  const auto [lo, hi] = all.range_in(w);
   const double step = nice_step((hi - lo) / 24.0);
   std::vector<PLFLT> regular;
   if (hi > lo)
     for (long k = long(std::ceil(lo / step)); k <= long(std::floor(hi / step)); ++k)
       if (k != 0) regular.push_back(k * step);
 
-  // A free stagnation point (|α| > 2): the separatrix through it, and closed streamlines
-  // between it and the body, which the regular step is too coarse to show.
-  std::vector<PLFLT> dividing = {0.0}, closed;
-  const StagnationPoint* free_point = nullptr;
+  // |α| > 2: one free stagnation point, a saddle at r_s. The separatrix ψ = ψ_s through it encloses
+  // the closed streamlines, 0 < ψ/ψ_s < 1 at r < r_s; the same values at r > r_s are open streamlines.
+  std::vector<PLFLT> dividing = {0.0}, closed, open_inner;
+  const StagnationPoint* saddle = nullptr;
   for (const auto& s : r.stagnation)
-    if (!s.on_surface) free_point = &s;
-  if (free_point) {
-    const double ps = psi_at(g, psi, free_point->r, free_point->theta);
+    if (!s.on_surface) saddle = &s;
+  std::unique_ptr<PolarPatch> inner, outer;
+  if (saddle) {
+    const double ps = psi_at(g, psi, saddle->r, saddle->theta);
     dividing.push_back(ps);
     for (double f : {0.2, 0.4, 0.6, 0.8}) closed.push_back(f * ps);
-    // Regular levels inside the closed region would crowd it: those are covered by `closed`.
-    regular.erase(std::remove_if(regular.begin(), regular.end(),
-                                 [&](double v) { return (v - 0.0) * (v - ps) < 0.0; }),
-                  regular.end());
+    const int i_s = ring_at_or_below(g, saddle->r);
+    inner = std::make_unique<PolarPatch>(g, psi, 0, i_s);
+    outer = std::make_unique<PolarPatch>(g, psi, i_s, std::max(i_view, i_s + 1));
+    auto between = [&](double v) { return v * (v - ps) < 0.0; };  // strictly between 0 and ψ_s
+    for (double v : regular)
+      if (between(v)) open_inner.push_back(v);
+    regular.erase(std::remove_if(regular.begin(), regular.end(), between), regular.end());
   }
 
+  // The legend goes right of the square box when the page is wide enough, else inside it.
+  const bool legend_outside = size.width >= 1.2 * size.height;
   const std::string title = fmt::format("{}: streamlines, {}", case_title(r.c), flow_label(r.c));
   render_png(png, size, [&](plstream& pls) {
     text_scale(pls, size);
-    polar_frame(pls, w);
-    contour(pls, patch, regular, kBlue, 1.2);
-    contour(pls, patch, closed, kPurple, 1.4);
-    contour(pls, patch, dividing, kBlack, 2.4);
+    square_frame(pls, w, legend_outside ? 0.64 : 0.96);
+    contour(pls, all, regular, kBlue, 1.2);
+    if (saddle) {
+      contour(pls, *outer, open_inner, kBlue, 1.2);
+      contour(pls, *inner, closed, kPurple, 1.4);
+    }
+    contour(pls, all, dividing, kBlack, 2.4);
     cylinder(pls, a);
-    const double dot = w / 55.0;
+    const double dot = w / 60.0;
     for (const auto& s : r.stagnation_exact)
-      disc(pls, s.r * std::cos(s.theta), s.r * std::sin(s.theta), 1.9 * dot, -1, kBlack, 1.5);
+      disc(pls, s.r * std::cos(s.theta), s.r * std::sin(s.theta), 2.0 * dot, -1, kBlack, 1.5);
     for (const auto& s : r.stagnation)
       disc(pls, s.r * std::cos(s.theta), s.r * std::sin(s.theta), dot, kRed, kBlack, 1.0);
-    polar_axes(pls, title);
+    frame_axes(pls, "bcnst", "bcnstv", "x (m)", "y (m)", title);
 
     std::vector<LegendEntry> legend;
-    legend.push_back(line_entry(fmt::format("ψ contours, step {} m²/s", num(step)), kBlue, 1, 1.2));
-    legend.push_back(line_entry(free_point ? "separatrix (through the free stagnation point)" : "dividing streamline ψ = 0",
-                                kBlack, 1, 2.4));
-    if (free_point) legend.push_back(line_entry("closed streamlines", kPurple, 1, 1.4));
-    legend.push_back(symbol_entry("stagnation points: numeric", kRed, "●", 1.0));
-    legend.push_back(symbol_entry("exact", kBlack, "○", 1.3));
+    legend.push_back(line_entry(fmt::format("ψ contours, Δψ = {} m²/s", num(step)), kBlue, 1, 1.2));
+    if (saddle) {
+      legend.push_back(line_entry("separatrix ψ = ψ#ds#u", kBlack, 1, 2.4));
+      legend.push_back(line_entry("closed streamlines", kPurple, 1, 1.4));
+    } else if (!r.stagnation.empty()) {
+      legend.push_back(line_entry("dividing streamline ψ = 0", kBlack, 1, 2.4));
+    }
+    if (!r.stagnation.empty()) legend.push_back(symbol_entry("stagnation point, numeric", kRed, "●", 0.75));
+    if (!r.stagnation_exact.empty()) legend.push_back(symbol_entry("stagnation point, exact", kBlack, "○", 1.3));
     text_scale(pls, size, 0.8);
-    draw_legend(pls, legend, PL_POSITION_LEFT | PL_POSITION_BOTTOM, 0.01, 0.01);
+    if (legend_outside)
+      draw_legend(pls, legend, PL_POSITION_RIGHT | PL_POSITION_OUTSIDE, 0.02, 0.0);
+    else
+      draw_legend(pls, legend, PL_POSITION_LEFT | PL_POSITION_BOTTOM | PL_POSITION_INSIDE, 0.01, 0.01);
   });
 }
 
@@ -470,35 +582,47 @@ void plot_cp_field(const FlowResult& r, const std::string& png, PlotSize size) {
   if (r.fields.cp.size() != size_t(g.nodes()) || g.n_r < 2 || g.n_theta < 4)
     throw std::runtime_error("plot: the cp field does not match the grid");
   const double w = view_half_width(r);
-  PolarPatch patch(g, r.fields.cp, w * std::sqrt(2.0));
+  PolarPatch patch(g, r.fields.cp, 0, ring_at_or_above(g, w * std::sqrt(2.0)));
   auto [lo, hi] = patch.range_in(w);
   if (!(hi > lo)) {
     lo -= 0.5;
     hi += 0.5;
   }
-  const int n_shades = 32;
+  // Colours resolve Cp down to −8 (|u| = 3U); faster flow near the shoulders of a fast-spinning
+  // cylinder (Cp down to 1 − (|α| + 2)²) gets the darkest colour, shown as a cap on the colour bar.
+  const double clip = -8.0;
+  const bool capped = lo < clip && hi > clip;
+  const double c0 = capped ? clip : lo;
+  const int n_shades = 30;
   std::vector<PLFLT> edges(n_shades + 1);
-  for (int k = 0; k <= n_shades; ++k) edges[k] = lo + (hi - lo) * k / n_shades;
-  // The outermost edges are widened a little so that the extreme nodes are filled too.
-  const double eps = 1e-9 * (hi - lo);
-  edges.front() -= eps;
+  for (int k = 0; k <= n_shades; ++k) edges[k] = c0 + (hi - c0) * k / n_shades;
+  const double eps = 1e-9 * (hi - lo);  // so that the extreme nodes are filled too
+  if (!capped) edges.front() -= eps;
   edges.back() += eps;
 
-  const std::string title = fmt::format("{}: pressure coefficient Cp, {}", case_title(r.c), flow_label(r.c));
+  const std::string title = fmt::format("{}: pressure coefficient, {}", case_title(r.c), flow_label(r.c));
   render_png(png, size, [&](plstream& pls) {
     text_scale(pls, size);
     sequential_cmap1(pls);
-    polar_frame(pls, w, 0.84);
+    square_frame(pls, w, 0.84, 0.14);
     pls.psty(0);
+    const double cap_colour = 0.0;
+    if (capped) {
+      pls.shade(patch.z(), patch.nx, patch.ny, nullptr, -w, w, -w, w, lo - eps, clip, 1, cap_colour, 1.0, 0, 0.0,
+                0, 0.0, plcallback::fill, false, plcallback::tr2, patch.pltr_data());
+      pls.scmap1_range(0.1, 1.0);
+    }
     pls.shades(patch.z(), patch.nx, patch.ny, nullptr, -w, w, -w, w, edges.data(), PLINT(edges.size()), 1.0, 0,
                0.0, plcallback::fill, false, plcallback::tr2, patch.pltr_data());
-    // Cp = 0 (local speed = U) as a thin reference line.
-    contour(pls, patch, {0.0}, kWhite, 1.0, 2);
-    cylinder(pls, r.grid.a);
+    // Cp = 0: the local speed equals U.
+    contour(pls, patch, {0.0}, kBlack, 1.0, 2);
+    cylinder(pls, g.a);
     const double dot = w / 70.0;
     for (const auto& s : r.stagnation)
       disc(pls, s.r * std::cos(s.theta), s.r * std::sin(s.theta), dot, kRed, kBlack, 1.0);
-    polar_axes(pls, title);
+    frame_axes(pls, "bcnst", "bcnstv", "x (m)", "y (m)", title);
+    text_scale(pls, size, 0.8);
+    pls.mtex("b", 5.6, 0.0, 0.0, "dashed: Cp = 0 (|u| = U);  red dots: stagnation points (Cp = 1)");
 
     // Colour bar to the right of the plot box.
     text_scale(pls, size, 0.85);
@@ -510,9 +634,11 @@ void plot_cp_field(const FlowResult& r, const std::string& png, PlotSize size) {
     PLINT n_values[] = {PLINT(edges.size())};
     const PLFLT* values[] = {edges.data()};
     PLFLT cw = 0.0, ch = 0.0;
-    pls.colorbar(&cw, &ch, PL_COLORBAR_SHADE, PL_POSITION_RIGHT | PL_POSITION_OUTSIDE | PL_POSITION_VIEWPORT,
-                 0.03, 0.0, 0.04, 0.85, kWhite, kBlack, 1, 0.0, 0.0, 0, 0.0, 1, label_opts, labels, 1, axis_opts,
-                 ticks, sub_ticks, n_values, values);
+    const PLINT opt = PL_COLORBAR_SHADE | (capped ? PL_COLORBAR_CAP_LOW : 0);
+    pls.colorbar(&cw, &ch, opt, PL_POSITION_RIGHT | PL_POSITION_OUTSIDE | PL_POSITION_VIEWPORT, 0.03, 0.0, 0.04,
+                 0.80, kWhite, kBlack, 1, cap_colour, 0.0, 0, 0.0, 1, label_opts, labels, 1, axis_opts, ticks,
+                 sub_ticks, n_values, values);
+    pls.scmap1_range(0.0, 1.0);
   });
 }
 
@@ -529,97 +655,93 @@ void plot_surface_cp(const FlowResult& r, const std::string& png, PlotSize size)
     tx[k] = th * 180.0 / M_PI;
     ty[k] = ex.cp(ex.a, th);
   }
+  // At most ~90 markers: on a fine grid every node would merge into a band hiding the line.
+  const size_t n = s.cp.size(), stride = std::max<size_t>(1, (n + 89) / 90);
   std::vector<CurvePoint> pts;
-  for (size_t j = 0; j < s.cp.size(); ++j) pts.push_back({s.theta[j] * 180.0 / M_PI, s.cp[j]});
-  // Repeat θ = 0 at 360° so the points span the whole axis like the line does.
-  if (!pts.empty()) pts.push_back({360.0, s.cp[0]});
+  for (size_t j = 0; j < n; j += stride) pts.push_back({s.theta[j] * 180.0 / M_PI, s.cp[j]});
+  pts.push_back({360.0, s.cp[0]});  // θ = 0 again at 360°, like the line
   double lo = *std::min_element(ty.begin(), ty.end()), hi = *std::max_element(ty.begin(), ty.end());
-  for (const auto& p : pts)
-    if (std::isfinite(p.y)) {
-      lo = std::min(lo, p.y);
-      hi = std::max(hi, p.y);
+  for (double v : s.cp)
+    if (std::isfinite(v)) {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
     }
   const auto [ymin, ymax] = padded(lo, hi, 0.06);
   const std::string title = fmt::format("{}: surface pressure, {}", case_title(r.c), flow_label(r.c));
-  const std::string numeric_label = fmt::format("numeric (n#dθ#u = {})", r.grid.n_theta);
+  const std::string numeric_label =
+      stride == 1 ? fmt::format("numeric, n#dθ#u = {}", n) : fmt::format("numeric, n#dθ#u = {} (one node in {})", n, stride);
   render_png(png, size, [&](plstream& pls) {
     text_scale(pls, size);
     pls.adv(0);
-    pls.vpor(0.11, 0.95, 0.11, 0.90);
+    pls.vpor(0.12, 0.96, 0.12, 0.91);
     pls.wind(0.0, 360.0, ymin, ymax);
     pls.col0(kLightGrey);
     pls.box("g", 45.0, 0, "g", 0.0, 0);
     pls.col0(kDarkGrey);
-    pls.lsty(2);
     pls.join(0.0, 0.0, 360.0, 0.0);
-    pls.lsty(1);
     pls.col0(kBlack);
     pls.width(1.2);
     pls.box("bcnst", 45.0, 3, "bcnstv", 0.0, 0);
     pls.width(1.0);
-    pls.lab("θ (degrees, counter-clockwise from +x: 0° rear, 180° front)", "Cp", title.c_str());
+    pls.lab("θ (degrees, counter-clockwise from +x: 0° rear, 180° front)", "Cp = (p − p#d∞#u) / (½ρU#u2#d)",
+            title.c_str());
     pls.col0(kBlue);
     pls.width(2.0);
     pls.line(n_fine, tx.data(), ty.data());
     pls.width(1.0);
+    marker_scale(pls, size);
     markers(pls, pts, "●", kRed);
     text_scale(pls, size, 0.85);
-    draw_legend(pls,
-                {line_entry("exact 1 − (u#dθ#u/U)#u2#d", kBlue, 1, 2.0),
-                 symbol_entry(numeric_label, kRed, "●", 1.0)},
-                PL_POSITION_RIGHT | PL_POSITION_BOTTOM, 0.02, 0.03);
+    const std::vector<LegendEntry> legend = {line_entry("exact, 1 − (u#dθ#u/U)#u2#d", kBlue, 1, 2.0),
+                                             symbol_entry(numeric_label, kRed, "●", 0.65)};
+    std::vector<CurvePoint> occupied;
+    for (int k = 0; k < n_fine; ++k) occupied.push_back({tx[k], ty[k]});
+    const PLINT corner = pick_corner(occupied, 0.0, 360.0, ymin, ymax, legend_fraction(pls, legend), 0.02, 0.03,
+                                     {PL_POSITION_RIGHT | PL_POSITION_BOTTOM, PL_POSITION_LEFT | PL_POSITION_BOTTOM,
+                                      PL_POSITION_RIGHT | PL_POSITION_TOP, PL_POSITION_LEFT | PL_POSITION_TOP});
+    draw_legend(pls, legend, corner, 0.02, 0.03);
   });
 }
 
 void plot_sweep(const std::string& title, const std::vector<CurvePoint>& numeric,
                 const std::vector<ReferenceSet>& references, const std::string& png, PlotSize size) {
   // Ranges: every point, the model lines over the α range, and Prandtl's bound on the side of the data.
-  double xlo = 0.0, xhi = 2.5, ylo = 0.0, yhi = 0.0;
+  double xlo = 0.0, xhi = 0.0, ylo = 0.0, yhi = 0.0;
   bool any = false;
   auto take = [&](const CurvePoint& p) {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
+    if (!usable(p, false, false)) return;
     if (!any) xlo = xhi = p.x;
     any = true;
     xlo = std::min(xlo, p.x);
     xhi = std::max(xhi, p.x);
+    ylo = std::min(ylo, p.y);
+    yhi = std::max(yhi, p.y);
   };
   for (const auto& p : numeric) take(p);
   for (const auto& set : references)
     for (const auto& p : set.points) take(p);
-  if (!any || xhi - xlo < 1e-12) {
-    xlo = std::min(xlo, 0.0);
-    xhi = std::max(xhi, 2.5);
-  }
   xlo = std::min(xlo, 0.0);
+  if (xhi - xlo < 0.5) xhi = xlo + 2.5;
   for (double x : {xlo, xhi}) {
     ylo = std::min({ylo, -2 * M_PI * x, -4 * x});
     yhi = std::max({yhi, -2 * M_PI * x, -4 * x});
   }
-  auto yr = [&](const CurvePoint& p) {
-    if (std::isfinite(p.x) && std::isfinite(p.y)) {
-      ylo = std::min(ylo, p.y);
-      yhi = std::max(yhi, p.y);
-    }
-  };
-  for (const auto& p : numeric) yr(p);
-  for (const auto& set : references)
-    for (const auto& p : set.points) yr(p);
   const double bound = 4 * M_PI;
   if (ylo < 0.0) ylo = std::min(ylo, -bound);
   if (yhi > 0.0) yhi = std::max(yhi, bound);
   const auto [x0, x1] = padded(xlo, xhi, 0.03);
-  const auto [y0, y1] = padded(ylo, yhi, 0.06);
+  const auto [y0, y1] = padded(ylo, yhi, 0.05);
 
   render_png(png, size, [&](plstream& pls) {
     text_scale(pls, size);
     pls.adv(0);
-    pls.vpor(0.11, 0.95, 0.11, 0.90);
+    pls.vpor(0.12, 0.96, 0.12, 0.91);
     pls.wind(x0, x1, y0, y1);
     pls.col0(kLightGrey);
     pls.box("g", 0.0, 0, "g", 0.0, 0);
     pls.col0(kDarkGrey);
     pls.join(x0, 0.0, x1, 0.0);
-    // Prandtl's bound |C_L| = 4π and the spin ratio α = ±2 where it is reached.
+    // Prandtl's bound |C_L| = 4π, reached by potential flow at |α| = 2.
     pls.col0(kOrange);
     pls.width(1.8);
     pls.lsty(3);
@@ -628,8 +750,15 @@ void plot_sweep(const std::string& title, const std::vector<CurvePoint>& numeric
     for (double al : {-2.0, 2.0})
       if (al >= x0 && al <= x1) pls.join(al, y0, al, y1);
     pls.lsty(1);
+    pls.width(1.0);
+    text_scale(pls, size, 0.85);
+    pls.col0(kOrange);
     for (double al : {-2.0, 2.0})
-      if (al >= x0 && al <= x1) pls.ptex(al + 0.01 * (x1 - x0), y0 + 0.04 * (y1 - y0), 0.0, 1.0, 0.0, "α = 2");
+      if (al >= x0 && al <= x1) {
+        const std::string t = al > 0 ? "α = 2" : "α = −2";
+        const double b = al > 0 ? -bound : bound;  // where Kutta–Joukowski meets the bound
+        pls.ptex(al + 0.012 * (x1 - x0), b + 0.02 * (y1 - y0), 1.0, 0.0, 0.0, t.c_str());
+      }
     // Kutta–Joukowski and the seed's estimate.
     const PLFLT lx[2] = {x0, x1};
     PLFLT ly[2] = {-2 * M_PI * x0, -2 * M_PI * x1};
@@ -643,31 +772,35 @@ void plot_sweep(const std::string& title, const std::vector<CurvePoint>& numeric
     pls.line(2, lx, ly);
     pls.lsty(1);
     pls.width(1.0);
-    pls.col0(kBlack);
-    pls.width(1.2);
-    pls.box("bcnst", 0.0, 0, "bcnstv", 0.0, 0);
-    pls.width(1.0);
-    pls.lab("spin ratio α = aω/U", "lift coefficient C#dL#u", plain(title).c_str());
+    text_scale(pls, size);
+    frame_axes(pls, "bcnst", "bcnstv", "spin ratio α = aω/U", "lift coefficient C#dL#u", plain(title));
 
     std::vector<LegendEntry> legend;
-    legend.push_back(line_entry("Kutta–Joukowski  C#dL#u = −2πα", kBlue, 1, 2.0));
-    legend.push_back(line_entry("seed estimate  C#dL#u = −4α", kGreen, 2, 2.0));
-    legend.push_back(line_entry("Prandtl's bound  |C#dL#u| = 4π", kOrange, 3, 1.8));
+    legend.push_back(line_entry("Kutta–Joukowski, C#dL#u = −2πα", kBlue, 1, 2.0));
+    legend.push_back(line_entry("seed estimate, C#dL#u = −4α", kGreen, 2, 2.0));
+    legend.push_back(line_entry("Prandtl's bound, |C#dL#u| = 4π", kOrange, 3, 1.8));
     // Reference sets first, numeric on top.
-    std::vector<std::string> ref_labels;
     for (size_t k = 0; k < references.size(); ++k) {
       const PLINT pen = kSeriesPens[(k + 2) % std::size(kSeriesPens)];
       const char* glyph = kMarkers[(k + 1) % std::size(kMarkers)];
-      text_scale(pls, size, 1.1);
+      marker_scale(pls, size, 1.2);
       markers(pls, references[k].points, glyph, pen);
-      legend.push_back(symbol_entry(plain(references[k].label), pen, glyph, 1.1));
+      legend.push_back(symbol_entry(plain(references[k].label), pen, glyph, 0.7));
     }
-    text_scale(pls, size, 1.0);
+    marker_scale(pls, size);
     markers(pls, numeric, "●", kRed);
-    if (!numeric.empty()) legend.push_back(symbol_entry("numeric (potential flow)", kRed, "●", 1.0));
+    if (!numeric.empty()) legend.push_back(symbol_entry("numeric (potential flow)", kRed, "●", 0.6));
     text_scale(pls, size, 0.8);
-    // C_L falls with α: the top right is always clear of the lines.
-    draw_legend(pls, legend, PL_POSITION_RIGHT | PL_POSITION_TOP, 0.02, 0.02);
+    std::vector<CurvePoint> occupied;
+    for (const auto& p : numeric) occupied.push_back(p);
+    for (const auto& set : references) occupied.insert(occupied.end(), set.points.begin(), set.points.end());
+    sample_segment(occupied, x0, -2 * M_PI * x0, x1, -2 * M_PI * x1);
+    sample_segment(occupied, x0, -4 * x0, x1, -4 * x1);
+    // C_L falls with α: below the lines on the left is usually clear.
+    const PLINT corner = pick_corner(occupied, x0, x1, y0, y1, legend_fraction(pls, legend), 0.02, 0.03,
+                                     {PL_POSITION_LEFT | PL_POSITION_BOTTOM, PL_POSITION_RIGHT | PL_POSITION_TOP,
+                                      PL_POSITION_RIGHT | PL_POSITION_BOTTOM, PL_POSITION_LEFT | PL_POSITION_TOP});
+    draw_legend(pls, legend, corner, 0.02, 0.03);
   });
 }
 
@@ -676,7 +809,7 @@ void plot_loglog(const std::string& title, const std::string& xlabel, const std:
   double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo, ylo = xlo, yhi = -xlo;
   for (const auto& s : series)
     for (const auto& p : s.points)
-      if (p.x > 0 && p.y > 0 && std::isfinite(p.x) && std::isfinite(p.y)) {
+      if (usable(p, true, true)) {
         xlo = std::min(xlo, std::log10(p.x));
         xhi = std::max(xhi, std::log10(p.x));
         ylo = std::min(ylo, std::log10(p.y));
@@ -700,22 +833,18 @@ void plot_loglog(const std::string& title, const std::string& xlabel, const std:
   render_png(png, size, [&](plstream& pls) {
     text_scale(pls, size);
     pls.adv(0);
-    pls.vpor(0.12, 0.95, 0.11, 0.90);
+    pls.vpor(0.13, 0.96, 0.12, 0.91);
     pls.wind(xlo, xhi, ylo, yhi);
     pls.col0(kLightGrey);
-    pls.box("ghl", 0.0, 0, "ghl", 0.0, 0);
-    pls.col0(kBlack);
-    pls.width(1.2);
-    pls.box("bcnstl", 0.0, 0, "bcnstvl", 0.0, 0);
-    pls.width(1.0);
-    pls.lab(plain(xlabel).c_str(), plain(ylabel).c_str(), plain(title).c_str());
+    pls.box("gl", 0.0, 0, "gl", 0.0, 0);
+    frame_axes(pls, "bcnstl", "bcnstvl", plain(xlabel), plain(ylabel), plain(title));
     std::vector<LegendEntry> legend;
     for (size_t k = 0; k < series.size(); ++k) {
       const PLINT pen = kSeriesPens[k % std::size(kSeriesPens)];
       const char* glyph = kMarkers[k % std::size(kMarkers)];
       std::vector<PLFLT> x, y;
       for (const auto& p : series[k].points)
-        if (p.x > 0 && p.y > 0 && std::isfinite(p.x) && std::isfinite(p.y)) {
+        if (usable(p, true, true)) {
           x.push_back(std::log10(p.x));
           y.push_back(std::log10(p.y));
         }
@@ -723,13 +852,31 @@ void plot_loglog(const std::string& title, const std::string& xlabel, const std:
       pls.width(1.6);
       if (x.size() > 1) pls.line(PLINT(x.size()), x.data(), y.data());
       pls.width(1.0);
+      marker_scale(pls, size);
       markers(pls, series[k].points, glyph, pen, true, true);
       LegendEntry e = line_entry(plain(series[k].label), pen, 1, 1.6);
       e.symbol = glyph;
+      e.symbol_scale = 0.6;
       legend.push_back(e);
     }
     text_scale(pls, size, 0.8);
-    draw_legend(pls, legend, PL_POSITION_RIGHT | PL_POSITION_TOP, 0.02, 0.02);
+    std::vector<CurvePoint> occupied;
+    for (const auto& s : series) {
+      bool first = true;
+      CurvePoint prev{0.0, 0.0};
+      for (const auto& p : s.points)
+        if (usable(p, true, true)) {
+          const CurvePoint q{std::log10(p.x), std::log10(p.y)};
+          if (!first) sample_segment(occupied, prev.x, prev.y, q.x, q.y, 30);
+          occupied.push_back(q);
+          prev = q;
+          first = false;
+        }
+    }
+    const PLINT corner = pick_corner(occupied, xlo, xhi, ylo, yhi, legend_fraction(pls, legend), 0.02, 0.02,
+                                     {PL_POSITION_RIGHT | PL_POSITION_TOP, PL_POSITION_LEFT | PL_POSITION_BOTTOM,
+                                      PL_POSITION_RIGHT | PL_POSITION_BOTTOM, PL_POSITION_LEFT | PL_POSITION_TOP});
+    draw_legend(pls, legend, corner, 0.02, 0.02);
   });
 }
 

@@ -45,8 +45,11 @@ std::string summary_text(const FlowResult& r, const std::string& output_path) {
                            c.density));
   line("circulation", fmt::format("Γ = {:.8g} m²/s ({})", c.circulation(),
                                   c.circulation_given ? "given" : "spin model, Γ = 2πa²ω"));
-  line("grid", fmt::format("n_θ × n_r = {} × {} ({} nodes), {} spacing, R/a = {:.6g}, far field {}",
-                           g.n_theta, g.n_r, g.nodes(), to_string(g.spacing), c.outer_radius,
+  const double R = g.outer_radius() / g.a;
+  line("grid", fmt::format("n_θ × n_r = {} × {} ({} nodes), {} spacing, R/a = {:.6g}{}, far field {}",
+                           g.n_theta, g.n_r, g.nodes(), to_string(g.spacing), R,
+                           std::fabs(R / c.outer_radius - 1) > 1e-12
+                               ? fmt::format(" (asked {:.6g}, rounded up to whole square cells)", c.outer_radius) : "",
                            to_string(c.far_field)));
   if (!r.info.grid_choice.empty()) line("", r.info.grid_choice);
   line("solver", fmt::format("{}, {} stencil, {} thread{}", r.info.method, to_string(c.stencil), r.info.threads,

@@ -2,6 +2,7 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCore>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 
 #include "solver/cholmod_solver.hpp"
@@ -73,35 +74,123 @@ SpMat assemble_matrix(const DiscreteOperator& op, bool lower_only) {
   return A;
 }
 
+std::vector<long> nested_dissection(const DiscreteOperator& op) {
+  const int n = op.n_theta, L = op.last_ring();
+  const bool exact = op.far_field == FarField::exact;
+  const int rings = exact ? L - 1 : L;  // exact: the outer ring is a clique, ordered last
+  std::vector<long> order;
+  order.reserve(size_t(op.unknowns()));
+  auto node = [n](int i, int j) { return long(i - 1) * n + j; };
+  // Rectangle [i0, i1) × [j0, j1) of rings × columns: halves first, their separator last.
+  std::function<void(int, int, int, int)> dissect = [&](int i0, int i1, int j0, int j1) {
+    const int ni = i1 - i0, nj = j1 - j0;
+    if (ni <= 0 || nj <= 0) return;
+    if (long(ni) * nj <= 64) {
+      for (int i = i0; i < i1; ++i)
+        for (int j = j0; j < j1; ++j) order.push_back(node(i, j));
+      return;
+    }
+    if (nj >= ni) {
+      const int jm = j0 + nj / 2;
+      dissect(i0, i1, j0, jm);
+      dissect(i0, i1, jm + 1, j1);
+      for (int i = i0; i < i1; ++i) order.push_back(node(i, jm));
+    } else {
+      const int im = i0 + ni / 2;
+      dissect(i0, im, j0, j1);
+      dissect(im + 1, i1, j0, j1);
+      for (int j = j0; j < j1; ++j) order.push_back(node(im, j));
+    }
+  };
+  // A periodic annulus of rings [i0, i1): cut a ring while it is tall, else open it into two
+  // rectangles along the radial lines j = 0 and j = n/2.
+  std::function<void(int, int)> annulus = [&](int i0, int i1) {
+    if (i1 <= i0) return;
+    if (i1 - i0 > n / 2) {
+      const int im = i0 + (i1 - i0) / 2;
+      annulus(i0, im);
+      annulus(im + 1, i1);
+      for (int j = 0; j < n; ++j) order.push_back(node(im, j));
+      return;
+    }
+    dissect(i0, i1, 1, n / 2);
+    dissect(i0, i1, n / 2 + 1, n);
+    for (int j : {0, n / 2})
+      for (int i = i0; i < i1; ++i) order.push_back(node(i, j));
+  };
+  annulus(1, rings + 1);
+  if (exact)
+    for (int j = 0; j < n; ++j) order.push_back(node(L, j));
+  else
+    order.push_back(long(L) * n);  // C
+  return order;
+}
+
 namespace {
+
+/// CHOLMOD's workspace and a factor, freed together.
+struct Cholmod {
+  cholmod_common c;
+  cholmod_factor* L = nullptr;
+  Cholmod() { cholmod_l_start(&c); }
+  ~Cholmod() {
+    if (L) cholmod_l_free_factor(&L, &c);
+    cholmod_l_finish(&c);
+  }
+};
 
 class CholmodSolver final : public PsiSolver {
  public:
   CholmodSolver(const PolarGrid& grid, const DiscreteOperator& op) : PsiSolver(grid, op) {
     double t0 = now_s();
     A_ = assemble_matrix(op);
+    std::vector<long> perm = nested_dissection(op);
     double t1 = now_s();
     timing.assemble_s = t1 - t0;
-    llt_.analyzePattern(A_);
-    llt_.factorize(A_);
-    if (llt_.info() != Eigen::Success)
+    cholmod_sparse a = Eigen::viewAsCholmod(A_);
+    a.stype = -1;  // the lower triangle holds the matrix
+    chol_.c.nmethods = 1;
+    chol_.c.method[0].ordering = CHOLMOD_GIVEN;
+    chol_.c.postorder = 1;
+    chol_.c.print = 0;
+    chol_.L = cholmod_l_analyze_p(&a, perm.data(), nullptr, 0, &chol_.c);
+    if (!chol_.L) throw std::runtime_error("CHOLMOD analysis failed (status " + std::to_string(chol_.c.status) + ")");
+    cholmod_l_factorize(&a, chol_.L, &chol_.c);
+    if (chol_.c.status != CHOLMOD_OK || chol_.L->minor < chol_.L->n)
       throw std::runtime_error("CHOLMOD factorization failed: the matrix is not positive definite "
-                               "(status " + std::to_string(llt_.cholmod().status) + ")");
+                               "(status " + std::to_string(chol_.c.status) + ", column " +
+                               std::to_string(chol_.L->minor) + ")");
     timing.factor_s = now_s() - t1;
   }
 
   std::vector<double> solve_unknowns(const std::vector<double>& rhs) override {
-    const Eigen::Map<const Eigen::VectorXd> b(rhs.data(), long(rhs.size()));
-    Eigen::VectorXd x = llt_.solve(b);
-    if (llt_.info() != Eigen::Success) throw std::runtime_error("CHOLMOD solve failed");
-    return std::vector<double>(x.data(), x.data() + x.size());
+    std::vector<double> b = rhs;
+    cholmod_dense bd = dense_view(b);
+    cholmod_dense* x = cholmod_l_solve(CHOLMOD_A, chol_.L, &bd, &chol_.c);
+    if (!x) throw std::runtime_error("CHOLMOD solve failed (status " + std::to_string(chol_.c.status) + ")");
+    const double* xv = static_cast<const double*>(x->x);
+    std::vector<double> out(xv, xv + rhs.size());
+    cholmod_l_free_dense(&x, &chol_.c);
+    return out;
   }
 
   Method method() const override { return Method::cholmod; }
 
  private:
+  static cholmod_dense dense_view(std::vector<double>& v) {
+    cholmod_dense d{};
+    d.nrow = v.size();
+    d.ncol = 1;
+    d.nzmax = v.size();
+    d.d = v.size();
+    d.x = v.data();
+    d.xtype = CHOLMOD_REAL;
+    d.dtype = CHOLMOD_DOUBLE;
+    return d;
+  }
+
   SpMat A_;
-  Eigen::CholmodSupernodalLLT<SpMat, Eigen::Lower> llt_;
+  Cholmod chol_;
 };
 
 }  // namespace

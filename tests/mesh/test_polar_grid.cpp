@@ -57,3 +57,15 @@ TEST_CASE("grid from a case uses the case's parameters", "[mesh]") {
   REQUIRE_THROWS(make_grid(0.0, 10.0, 7, 32, Spacing::uniform));
   REQUIRE_THROWS(make_grid(1.0, 1.0, 7, 32, Spacing::uniform));
 }
+
+TEST_CASE("a geometric case grid has exactly square cells and covers the R asked for", "[mesh]") {
+  Case c;
+  c.outer_radius = GENERATE(1.5, 20.0, 1e4);
+  c.n_theta = GENERATE(8, 100, 256);
+  const PolarGrid g = make_grid(c);
+  REQUIRE(g.outer_radius() / g.a >= c.outer_radius * (1 - 1e-12));
+  // At most one cell more than asked, and never fewer than two cells.
+  const double largest = std::max(c.outer_radius * std::exp(g.d_theta), std::exp(2 * g.d_theta));
+  REQUIRE(g.outer_radius() / g.a < largest * (1 + 1e-12));
+  for (int i = 0; i + 1 < g.n_r; ++i) REQUIRE(g.d_xi(i) == Approx(g.d_theta).epsilon(1e-12));
+}
