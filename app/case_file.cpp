@@ -277,8 +277,8 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
                   ? StencilKind::five_point : StencilKind::nine_point;
   c.output_file = r.word("output", "file", c.output_file);
   if (c.output_file.empty()) r.fail("output.file", "must not be empty");
-  c.output_fields = r.words("output", "fields");
-  for (const auto& f : c.output_fields) {
+  if (r.has("output", "fields")) c.output_fields = r.words("output", "fields");
+  for (const auto& f : c.output_fields.value_or(std::vector<std::string>{})) {
     const auto& names = field_names();
     if (std::find(names.begin(), names.end(), f) == names.end()) {
       std::string list;
@@ -328,9 +328,9 @@ std::string to_toml(const Case& c) {
   else t += fmt::format("n_r = {}\n", c.n_r);
   t += fmt::format("\n[solver]\nmethod = {}\nstencil = {}\n", str(to_string(c.method)), str(to_string(c.stencil)));
   t += fmt::format("\n[output]\nfile = {}\n", str(c.output_file));
-  if (!c.output_fields.empty()) {
+  if (c.output_fields) {
     std::string list;
-    for (const auto& f : c.output_fields) list += (list.empty() ? "" : ", ") + str(f);
+    for (const auto& f : *c.output_fields) list += (list.empty() ? "" : ", ") + str(f);
     t += fmt::format("fields = [{}]\n", list);
   }
   return t;

@@ -29,7 +29,7 @@ FlowResult run_case(const Case& c, int threads) {
   return r;
 }
 
-int command_run(const std::string& case_path, const std::string& output, const std::vector<std::string>& sets,
+void command_run(const std::string& case_path, const std::string& output, const std::vector<std::string>& sets,
                 int threads, bool quiet) {
   Case c = load_case(case_path, sets);
   if (!output.empty()) {
@@ -40,12 +40,10 @@ int command_run(const std::string& case_path, const std::string& output, const s
   FlowResult r = run_case(c, threads);
   write_result(r, c.output_file);
   if (!quiet) std::fputs(summary_text(r, c.output_file).c_str(), stdout);
-  return 0;
 }
 
-int command_inspect(const std::string& path) {
+void command_inspect(const std::string& path) {
   std::fputs(describe_result(path).c_str(), stdout);
-  return 0;
 }
 
 }  // namespace magnus

@@ -9,11 +9,11 @@ namespace magnus {
 /// Solve one case and post-process it (no files). threads ≥ 1.
 FlowResult run_case(const Case& c, int threads = 1);
 
-/// `magnus run`: solve, write HDF5 + XDMF atomically, print the summary. Returns the exit status.
-int command_run(const std::string& case_path, const std::string& output, const std::vector<std::string>& sets,
+/// `magnus run`: solve, write HDF5 + XDMF atomically, print the summary. Throws on failure.
+void command_run(const std::string& case_path, const std::string& output, const std::vector<std::string>& sets,
                 int threads, bool quiet);
 
-/// `magnus inspect`: print what a result holds.
-int command_inspect(const std::string& path);
+/// `magnus inspect`: print what a result holds. Throws on failure.
+void command_inspect(const std::string& path);
 
 }  // namespace magnus

@@ -1,5 +1,6 @@
 #pragma once
 // Resolved parameters of one flow case, SI units. Plain data: parsing lives in app/.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,7 +31,7 @@ struct Case {
   Method method = Method::automatic;
   StencilKind stencil = StencilKind::five_point;
   std::string output_file = "magnus.h5";
-  std::vector<std::string> output_fields;  ///< empty: all fields
+  std::optional<std::vector<std::string>> output_fields;  ///< absent: all fields; [] none
   std::string source_text;      ///< resolved case as TOML, stored in results
 
   /// Γ = 2πa²ω (spin model) or the given value, m^2/s.

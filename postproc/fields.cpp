@@ -38,11 +38,11 @@ bool FieldSelection::any_velocity() const {
   return false;
 }
 
-FieldSelection select_fields(const std::vector<std::string>& names) {
+FieldSelection select_fields(const std::optional<std::vector<std::string>>& names) {
   FieldSelection s;
-  if (names.empty()) return s;
+  if (!names) return s;
   s.on.assign(field_names().size(), false);
-  for (const auto& n : names) s.on[field_index(n)] = true;
+  for (const auto& n : *names) s.on[field_index(n)] = true;
   return s;
 }
 
@@ -131,14 +131,19 @@ Fields compute_fields(const PolarGrid& g, const Case& c, const std::vector<doubl
   return f;
 }
 
-Surface compute_surface(const PolarGrid& g, const Case& c, const std::vector<double>& psi, int order) {
-  const int n = g.n_theta;
+std::vector<double> surface_u_theta(const PolarGrid& g, const std::vector<double>& psi, int order) {
   const RadialDerivative D = radial_derivative(g.xi, order, order > 2);
+  std::vector<double> u(g.n_theta);
+  d_dxi(g, D, psi, 0, u.data());
+  for (double& v : u) v *= -1.0 / g.a;
+  return u;
+}
+
+Surface surface_from_u_theta(const PolarGrid& g, const Case& c, std::vector<double> u_theta) {
+  const int n = g.n_theta;
   Surface s;
   s.theta = g.theta;
-  s.u_theta.resize(n);
-  d_dxi(g, D, psi, 0, s.u_theta.data());
-  for (double& u : s.u_theta) u *= -1.0 / g.a;
+  s.u_theta = std::move(u_theta);
   const double U2 = c.speed * c.speed;
   s.pressure.resize(n);
   for (int j = 0; j < n; ++j)
@@ -153,6 +158,10 @@ Surface compute_surface(const PolarGrid& g, const Case& c, const std::vector<dou
     }
   }
   return s;
+}
+
+Surface compute_surface(const PolarGrid& g, const Case& c, const std::vector<double>& psi, int order) {
+  return surface_from_u_theta(g, c, surface_u_theta(g, psi, order));
 }
 
 double periodic_interpolate(const std::vector<double>& f, double theta) {

@@ -1,5 +1,6 @@
 #pragma once
 // Velocity, pressure and Cp from ψ: central differences inside, one-sided at r = a and r = R.
+#include <optional>
 #include <string>
 #include <vector>
 #include "mesh/polar_grid.hpp"
@@ -18,8 +19,8 @@ struct FieldSelection {
   bool has(const std::string& name) const;
   bool any_velocity() const;
 };
-/// Selection from names (empty: all). Throws std::invalid_argument naming an unknown field.
-FieldSelection select_fields(const std::vector<std::string>& names);
+/// Selection from names (absent: all; empty: none). Throws std::invalid_argument naming an unknown field.
+FieldSelection select_fields(const std::optional<std::vector<std::string>>& names);
 
 /// Fields (n_r, n_θ), row-major; a field not selected stays empty.
 struct Fields {
@@ -44,7 +45,13 @@ int derivative_order(StencilKind stencil);
 Fields compute_fields(const PolarGrid& g, const Case& c, const std::vector<double>& psi,
                       const FieldSelection& sel, int order);
 
-/// Surface velocity, pressure p = p∞ + ½ρ(U² − u_θ²) and Cp from the one-sided wall derivative.
+/// Surface velocity u_θ(a, θ_j) = −(1/a)·∂ψ/∂ξ at the wall, m/s.
+std::vector<double> surface_u_theta(const PolarGrid& g, const std::vector<double>& psi, int order);
+
+/// Surface pressure p = p∞ + ½ρ(U² − u_θ²) and Cp (u_r = 0 on the body) from u_θ.
+Surface surface_from_u_theta(const PolarGrid& g, const Case& c, std::vector<double> u_theta);
+
+/// surface_from_u_theta(surface_u_theta(ψ)).
 Surface compute_surface(const PolarGrid& g, const Case& c, const std::vector<double>& psi, int order);
 
 /// u_θ(r_i, θ) along the ray θ (periodic cubic interpolation between columns), m/s.

@@ -42,13 +42,12 @@ Forces compute_forces(const Case& c, const Surface& s) {
   return f;
 }
 
-std::vector<StagnationPoint> find_stagnation_points(const PolarGrid& g, const Case& c,
-                                                    const std::vector<double>& psi,
-                                                    const Surface& s, int order) {
+std::vector<StagnationPoint> find_stagnation_points(
+    const PolarGrid& g, const Case& c, const std::vector<double>& u,
+    const std::function<std::vector<double>(double)>& ray_u_theta) {
   std::vector<StagnationPoint> pts;
   if (c.speed <= 0.0) return pts;
   const int n = g.n_theta;
-  const auto& u = s.u_theta;
   for (int j = 0; j < n; ++j) {
     const double u0 = u[j], u1 = u[(j + 1) % n];
     if (u0 == 0.0 || (u0 < 0.0) != (u1 < 0.0)) {
@@ -59,7 +58,7 @@ std::vector<StagnationPoint> find_stagnation_points(const PolarGrid& g, const Ca
   if (!pts.empty()) return pts;
   // No zero on the body: a free stagnation point on the y axis, on the side of Γ.
   const double theta = c.circulation() > 0.0 ? M_PI / 2 : 3 * M_PI / 2;
-  const std::vector<double> ray = u_theta_on_ray(g, psi, theta, order);
+  const std::vector<double> ray = ray_u_theta(theta);
   for (int i = 0; i + 1 < g.n_r; ++i)
     if ((ray[i] < 0.0) != (ray[i + 1] < 0.0)) {
       const double t = ray[i] / (ray[i] - ray[i + 1]);

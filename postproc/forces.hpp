@@ -1,5 +1,6 @@
 #pragma once
 // Forces from the surface pressure, the three lift figures, stagnation points and error norms.
+#include <functional>
 #include <optional>
 #include <vector>
 #include "postproc/exact.hpp"
@@ -26,11 +27,11 @@ struct Forces {
 /// u_θ = ū + u' (ū the mean): the constant parts, p∞ and ½ρ(U² − ū²), integrate to zero exactly.
 Forces compute_forces(const Case& c, const Surface& s);
 
-/// Stagnation points from the computed flow: sign changes of u_θ on the surface, or of u_θ along
-/// the y axis for a free point (|Γ| > 4πaU).
-std::vector<StagnationPoint> find_stagnation_points(const PolarGrid& g, const Case& c,
-                                                    const std::vector<double>& psi,
-                                                    const Surface& s, int order);
+/// Stagnation points from the computed flow: sign changes of the surface u_θ, or else of u_θ along
+/// the y axis on the side of Γ (a free point, |Γ| > 4πaU); ray(θ) gives u_θ(r_i, θ), m/s.
+std::vector<StagnationPoint> find_stagnation_points(
+    const PolarGrid& g, const Case& c, const std::vector<double>& surface_u_theta,
+    const std::function<std::vector<double>(double)>& ray);
 
 /// Errors against the exact solution (DESIGN §5 /errors).
 struct Errors {

@@ -11,7 +11,8 @@ FlowResult postprocess(const PolarGrid& g, const Case& c, const std::vector<doub
   r.fields = compute_fields(g, c, psi, sel, order);
   r.surface = compute_surface(g, c, psi, order);
   r.forces = compute_forces(c, r.surface);
-  r.stagnation = find_stagnation_points(g, c, psi, r.surface, order);
+  r.stagnation = find_stagnation_points(g, c, r.surface.u_theta,
+                                       [&](double theta) { return u_theta_on_ray(g, psi, theta, order); });
   r.stagnation_exact = exact_flow(c).stagnation_points();
   r.errors = compute_errors(g, c, psi, r.surface, r.forces);
   return r;

@@ -37,7 +37,9 @@ TEST_CASE("overrides (--set): TOML values, bare words are strings", "[app][case]
                                                   "output.fields=[\"psi\", \"cp\"]", "title=hello"});
   REQUIRE(c.n_theta == 128);
   REQUIRE(c.method == Method::cholmod);
-  REQUIRE(c.output_fields == std::vector<std::string>{"psi", "cp"});
+  REQUIRE(*c.output_fields == std::vector<std::string>{"psi", "cp"});
+  REQUIRE_FALSE(parse("").output_fields.has_value());
+  REQUIRE(parse("[output]\nfields = []\n").output_fields->empty());
   REQUIRE(c.title == "hello");
 }
 

@@ -20,7 +20,7 @@ void require_equal(const std::vector<double>& a, const std::vector<double>& b) {
 TEST_CASE("HDF5 round trip: every dataset and attribute of DESIGN §5, with units, as computed", "[postproc][hdf5]") {
   const std::string dir = test::temp_dir("hdf5");
   Case c = test::make_case(1.0, 32);
-  c.output_fields = {};  // all fields
+  c.output_fields.reset();  // all fields
   c.source_text = "title = \"round trip\"\n";
   const FlowResult r = run_case(c);
   const std::string path = dir + "/r.h5";
