@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstdlib>
+#include <cstring>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -16,15 +18,17 @@ namespace magnus {
 
 namespace {
 
-void init_fftw_threads() {
-  static std::once_flag once;
-  std::call_once(once, [] { fftw_init_threads(); });
+using cplx = std::complex<double>;
+
+std::mutex& fftw_planner_mutex() {
+  static std::mutex m;  // FFTW's planner is not thread-safe
+  return m;
 }
 
 /// Run body(k_begin, k_end) over [0, m) split across `threads` threads.
 template <class F>
-void parallel_over_modes(int m, int threads, F&& body) {
-  if (threads <= 1 || m < 64) return body(0, m);
+void parallel_over_modes(int m, int threads, const F& body) {
+  if (threads <= 1 || m < 256) return body(0, m);
   std::vector<std::thread> pool;
   const int chunk = (m + threads - 1) / threads;
   for (int t = 1; t < threads; ++t) {
@@ -35,67 +39,73 @@ void parallel_over_modes(int m, int threads, F&& body) {
   for (auto& th : pool) th.join();
 }
 
+template <class T>
+struct FftwBuffer {
+  T* p = nullptr;
+  explicit FftwBuffer(size_t n) : p(static_cast<T*>(fftw_malloc(sizeof(T) * std::max<size_t>(n, 1)))) {
+    if (!p) throw std::bad_alloc();
+  }
+  ~FftwBuffer() { fftw_free(p); }
+  FftwBuffer(const FftwBuffer&) = delete;
+  FftwBuffer& operator=(const FftwBuffer&) = delete;
+};
+
 class FftSolver final : public PsiSolver {
  public:
   FftSolver(const PolarGrid& grid, const DiscreteOperator& op, int threads)
-      : PsiSolver(grid, op), threads_(std::max(1, threads)) {
+      : PsiSolver(grid, op), threads_(std::max(1, threads)), n_(op.n_theta), m_(n_ / 2 + 1),
+        L_(op.last_ring()), spec_(size_t(L_) * m_), ring_real_(size_t(n_)), ring_spec_(size_t(m_)) {
     const double t0 = now_s();
-    n_ = op.n_theta;
-    m_ = n_ / 2 + 1;
-    L_ = op.last_ring();
-    // Symbols T_k(i, i) and T_k(i, i+1) for rings 1…L, stored [i][k] so sweeps run along k.
-    diag_.assign(size_t(L_) * m_, 0.0);
-    off_.assign(size_t(L_) * m_, 0.0);
-    std::vector<double> c2(m_);
-    for (int k = 0; k < m_; ++k) c2[k] = 2.0 * std::cos(k * op.d_theta);
-    for (int i = 1; i <= L_; ++i) {
-      const RingStencil& s = op.ring[i];
-      for (int k = 0; k < m_; ++k) {
-        diag_[at(i, k)] = s.a[1] + c2[k] * s.b[1];
-        off_[at(i, k)] = s.a[2] + c2[k] * s.b[2];
-      }
-    }
-    if (op.far_field == FarField::exact)
-      for (int k = 0; k < m_; ++k) diag_[at(L_, k)] += op.exterior(k);
-    const double t1 = now_s();
-    timing.assemble_s = t1 - t0;
     factor();
-    init_fftw_threads();
-    fftw_plan_with_nthreads(threads_);
-    real_ = fftw_alloc_real(size_t(L_) * n_);
-    spec_ = fftw_alloc_complex(size_t(L_) * m_);
-    forward_ = fftw_plan_many_dft_r2c(1, &n_, L_, real_, nullptr, 1, n_, spec_, nullptr, 1, m_,
-                                      FFTW_ESTIMATE);
-    inverse_ = fftw_plan_many_dft_c2r(1, &n_, L_, spec_, nullptr, 1, m_, real_, nullptr, 1, n_,
-                                      FFTW_ESTIMATE);
-    if (!real_ || !spec_ || !forward_ || !inverse_) throw std::runtime_error("FFTW planning failed");
-    timing.factor_s = now_s() - t1;
+    const double t1 = now_s();
+    plan();
+    timing.factor_s = now_s() - t0;
+    (void)t1;
   }
 
   ~FftSolver() override {
-    fftw_destroy_plan(forward_);
-    fftw_destroy_plan(inverse_);
-    fftw_free(real_);
-    fftw_free(spec_);
+    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    for (fftw_plan p : {forward_, inverse_, ring_forward_})
+      if (p) fftw_destroy_plan(p);
   }
 
   std::vector<double> solve_unknowns(const std::vector<double>& rhs) override {
-    std::copy(rhs.begin(), rhs.begin() + long(L_) * n_, real_);
-    fftw_execute(forward_);
-    auto* y = reinterpret_cast<std::complex<double>*>(spec_);
+    std::vector<double> x(size_t(op_.unknowns()), 0.0);
+    // Forward transform of every ring (into the spectrum), then the sweeps, then back.
+    std::copy(rhs.begin(), rhs.begin() + long(L_) * n_, x.begin());
+    fftw_execute_dft_r2c(forward_, x.data(), reinterpret_cast<fftw_complex*>(spec_.p));
+    cplx* y = spec_.p;
     parallel_over_modes(m_, threads_, [&](int kb, int ke) { forward_sweep(y, kb, ke); });
-    double x_c = 0.0;
-    if (op_.far_field == FarField::freestream) {
-      // Mode 0 carries one more unknown X = n·C, coupled to ring L by −w_L.
-      x_c = (rhs[size_t(L_) * n_] - lower_c_ * y[at(L_, 0)].real()) * inv_pivot_c_;
-    }
-    parallel_over_modes(m_, threads_, [&](int kb, int ke) { back_sweep(y, kb, ke, x_c); });
-    fftw_execute(inverse_);
-    std::vector<double> x(size_t(op_.unknowns()));
+    const double x_c = op_.far_field == FarField::freestream
+                           ? (rhs[size_t(L_) * n_] - lower_c_ * y[at(L_, 0)].real()) * inv_pivot_c_
+                           : 0.0;
+    parallel_over_modes(m_, threads_, [&](int kb, int ke) { back_sweep(y, kb, ke, x_c, true); });
+    fftw_execute_dft_c2r(inverse_, reinterpret_cast<fftw_complex*>(spec_.p), x.data());
     const double scale = 1.0 / n_;
-    for (size_t q = 0; q < size_t(L_) * n_; ++q) x[q] = real_[q] * scale;
+    for (size_t q = 0; q < size_t(L_) * n_; ++q) x[q] *= scale;
     if (op_.far_field == FarField::freestream) x[size_t(L_) * n_] = x_c / n_;
     return x;
+  }
+
+  std::vector<double> solve_boundary(const BoundaryData& bd) override {
+    // Only ring L has a right-hand side: one short FFT; forward elimination leaves y_L = r̂_L.
+    const double scale = 1.0 / n_;
+    for (int j = 0; j < n_; ++j) ring_real_.p[j] = bd.outer[j] * scale;
+    fftw_execute(ring_forward_);
+    cplx* y = spec_.p;
+    std::copy(ring_spec_.p, ring_spec_.p + m_, y + at(L_, 0));
+    const double x_c = op_.far_field == FarField::freestream
+                           ? (bd.c_rhs * scale - lower_c_ * y[at(L_, 0)].real()) * inv_pivot_c_
+                           : 0.0;
+    parallel_over_modes(m_, threads_, [&](int kb, int ke) { back_sweep(y, kb, ke, x_c, false); });
+    std::vector<double> psi(size_t(op_.n_r) * n_);
+    std::fill(psi.begin(), psi.begin() + n_, 0.0);  // ψ = 0 on the body
+    fftw_execute_dft_c2r(inverse_, reinterpret_cast<fftw_complex*>(spec_.p), psi.data() + n_);
+    if (op_.far_field == FarField::freestream) {
+      const double C = x_c;  // X = n·C, scaled by 1/n above
+      for (int j = 0; j < n_; ++j) psi[size_t(op_.n_r - 1) * n_ + j] = bd.g[j] + C;
+    }
+    return psi;
   }
 
   Method method() const override { return Method::fft; }
@@ -103,68 +113,99 @@ class FftSolver final : public PsiSolver {
  private:
   size_t at(int i, int k) const { return size_t(i - 1) * m_ + k; }
 
-  /// Symmetric tridiagonal LU of every mode: lower_[i][k] = T(i−1,i)/d'_{i−1}, inv_pivot_ = 1/d'.
+  /// Symmetric tridiagonal LU of every mode, ring by ring with the symbols
+  /// T_k(i,i) = a[1] + 2cos(kΔθ)·b[1] and T_k(i,i+1) = a[2] + 2cos(kΔθ)·b[2] formed on the fly:
+  /// pivot d'_i = T_k(i,i) − T_k(i−1,i)·upper_{i−1}, inv_pivot_ = 1/d'_i, upper_ = T_k(i,i+1)/d'_i.
+  /// (The lower factor of a symmetric matrix is upper_ of the ring before.)
   void factor() {
-    lower_.assign(size_t(L_) * m_, 0.0);
     inv_pivot_.assign(size_t(L_) * m_, 0.0);
-    for (int k = 0; k < m_; ++k) inv_pivot_[at(1, k)] = 1.0 / diag_[at(1, k)];
-    for (int i = 2; i <= L_; ++i)
+    upper_.assign(size_t(L_) * m_, 0.0);
+    std::vector<double> c2(m_), ext(m_, 0.0);
+    for (int k = 0; k < m_; ++k) c2[k] = 2.0 * std::cos(k * op_.d_theta);
+    if (op_.far_field == FarField::exact)
+      for (int k = 0; k < m_; ++k) ext[k] = op_.exterior(k);
+    bool ok = true;
+    for (int i = 1; i <= L_; ++i) {
+      const RingStencil& s = op_.ring[i];
+      const RingStencil& sp = op_.ring[i - 1];
+      double* p = &inv_pivot_[at(i, 0)];
+      double* u = &upper_[at(i, 0)];
+      const double* up = i > 1 ? &upper_[at(i - 1, 0)] : nullptr;
       for (int k = 0; k < m_; ++k) {
-        const double l = off_[at(i - 1, k)] * inv_pivot_[at(i - 1, k)];
-        lower_[at(i, k)] = l;
-        inv_pivot_[at(i, k)] = 1.0 / (diag_[at(i, k)] - l * off_[at(i - 1, k)]);
+        double d = s.a[1] + c2[k] * s.b[1] + (i == L_ ? ext[k] : 0.0);
+        if (up) d -= (sp.a[2] + c2[k] * sp.b[2]) * up[k];
+        p[k] = 1.0 / d;
+        u[k] = (s.a[2] + c2[k] * s.b[2]) * p[k];
+        ok = ok && d > 0.0 && std::isfinite(p[k]);
       }
-    for (size_t q = 0; q < inv_pivot_.size(); ++q)
-      if (!(inv_pivot_[q] > 0.0) || !std::isfinite(inv_pivot_[q]))
-        throw std::runtime_error("FFT path: a mode's tridiagonal system is not positive definite");
+    }
+    if (!ok) throw std::runtime_error("FFT path: a mode's tridiagonal system is not positive definite");
     if (op_.far_field == FarField::freestream) {
       const double w = op_.w[L_];
-      off_c_ = -w;
+      off_c_ = -w;  // coupling of ring L (mode 0) with X = n·C
       lower_c_ = off_c_ * inv_pivot_[at(L_, 0)];
       inv_pivot_c_ = 1.0 / (w - lower_c_ * off_c_);
-      if (!(inv_pivot_c_ > 0.0)) throw std::runtime_error("FFT path: circulation row is singular");
+      if (!(inv_pivot_c_ > 0.0) || !std::isfinite(inv_pivot_c_))
+        throw std::runtime_error("FFT path: the circulation row is singular");
     }
   }
 
-  void forward_sweep(std::complex<double>* y, int kb, int ke) const {
+  void plan() {
+    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    static std::once_flag once;
+    std::call_once(once, [] { fftw_init_threads(); });
+    fftw_plan_with_nthreads(threads_);
+    // Plans for many rings; executed on other arrays of the same layout (FFTW_UNALIGNED).
+    std::vector<double> probe(size_t(L_) * n_ + 1);
+    const unsigned flags = FFTW_ESTIMATE | FFTW_UNALIGNED;
+    auto* spec = reinterpret_cast<fftw_complex*>(spec_.p);
+    forward_ = fftw_plan_many_dft_r2c(1, &n_, L_, probe.data(), nullptr, 1, n_, spec, nullptr, 1, m_, flags);
+    inverse_ = fftw_plan_many_dft_c2r(1, &n_, L_, spec, nullptr, 1, m_, probe.data(), nullptr, 1, n_, flags);
+    ring_forward_ = fftw_plan_dft_r2c_1d(n_, ring_real_.p, reinterpret_cast<fftw_complex*>(ring_spec_.p),
+                                         FFTW_ESTIMATE);
+    if (!forward_ || !inverse_ || !ring_forward_) throw std::runtime_error("FFTW planning failed");
+  }
+
+  void forward_sweep(cplx* y, int kb, int ke) const {
     for (int i = 2; i <= L_; ++i) {
-      const double* l = &lower_[at(i, 0)];
-      std::complex<double>* yi = &y[at(i, 0)];
-      const std::complex<double>* yp = &y[at(i - 1, 0)];
+      const double* l = &upper_[at(i - 1, 0)];  // T(i−1,i)/d'_{i−1}
+      cplx* yi = &y[at(i, 0)];
+      const cplx* yp = &y[at(i - 1, 0)];
       for (int k = kb; k < ke; ++k) yi[k] -= l[k] * yp[k];
     }
   }
 
-  void back_sweep(std::complex<double>* y, int kb, int ke, double x_c) const {
-    {
-      std::complex<double>* yL = &y[at(L_, 0)];
-      const double* p = &inv_pivot_[at(L_, 0)];
-      for (int k = kb; k < ke; ++k) yL[k] *= p[k];
-      if (kb == 0 && op_.far_field == FarField::freestream)
-        yL[0] -= off_c_ * x_c * p[0];
-    }
+  /// x_L = y_L/d'_L, x_i = y_i/d'_i − u_i·x_{i+1}; without `with_rhs` the y_i (i < L) are zero.
+  void back_sweep(cplx* y, int kb, int ke, double x_c, bool with_rhs) const {
+    cplx* yL = &y[at(L_, 0)];
+    const double* pL = &inv_pivot_[at(L_, 0)];
+    for (int k = kb; k < ke; ++k) yL[k] *= pL[k];
+    if (kb == 0 && op_.far_field == FarField::freestream) yL[0] -= off_c_ * x_c * pL[0];
     for (int i = L_ - 1; i >= 1; --i) {
-      const double* o = &off_[at(i, 0)];
+      const double* u = &upper_[at(i, 0)];
       const double* p = &inv_pivot_[at(i, 0)];
-      std::complex<double>* yi = &y[at(i, 0)];
-      const std::complex<double>* yn = &y[at(i + 1, 0)];
-      for (int k = kb; k < ke; ++k) yi[k] = (yi[k] - o[k] * yn[k]) * p[k];
+      cplx* yi = &y[at(i, 0)];
+      const cplx* yn = &y[at(i + 1, 0)];
+      if (with_rhs)
+        for (int k = kb; k < ke; ++k) yi[k] = yi[k] * p[k] - u[k] * yn[k];
+      else
+        for (int k = kb; k < ke; ++k) yi[k] = -u[k] * yn[k];
     }
   }
 
   int threads_;
-  int n_ = 0, m_ = 0, L_ = 0;
-  std::vector<double> diag_, off_, lower_, inv_pivot_;
+  int n_, m_, L_;
+  std::vector<double> inv_pivot_, upper_;
   double off_c_ = 0.0, lower_c_ = 0.0, inv_pivot_c_ = 0.0;
-  double* real_ = nullptr;
-  fftw_complex* spec_ = nullptr;
-  fftw_plan forward_ = nullptr, inverse_ = nullptr;
+  FftwBuffer<cplx> spec_;
+  FftwBuffer<double> ring_real_;
+  FftwBuffer<cplx> ring_spec_;
+  fftw_plan forward_ = nullptr, inverse_ = nullptr, ring_forward_ = nullptr;
 };
 
 }  // namespace
 
-std::unique_ptr<PsiSolver> make_fft_solver(const PolarGrid& grid, const DiscreteOperator& op,
-                                           int threads) {
+std::unique_ptr<PsiSolver> make_fft_solver(const PolarGrid& grid, const DiscreteOperator& op, int threads) {
   return std::make_unique<FftSolver>(grid, op, threads);
 }
 

@@ -22,10 +22,13 @@ std::unique_ptr<PsiSolver> make_solver(const PolarGrid& grid, const DiscreteOper
 
 std::vector<double> PsiSolver::solve(double U, double Gamma) {
   const double t0 = now_s();
-  const BoundaryData bd = boundary_data(op_, grid_, U, Gamma);
-  std::vector<double> psi = unpack_psi(op_, bd, solve_unknowns(assemble_rhs(op_, bd)));
+  std::vector<double> psi = solve_boundary(boundary_data(op_, grid_, U, Gamma));
   timing.solve_s += now_s() - t0;
   return psi;
+}
+
+std::vector<double> PsiSolver::solve_boundary(const BoundaryData& bd) {
+  return unpack_psi(op_, bd, solve_unknowns(assemble_rhs(op_, bd)));
 }
 
 std::vector<double> PsiBasis::combine(double U, double Gamma) const {

@@ -22,6 +22,8 @@ class PsiSolver {
   std::vector<double> solve(double U, double Gamma);
   /// x = A⁻¹·rhs for any right-hand side in the unknowns' layout (rings 1…L row-major, then C).
   virtual std::vector<double> solve_unknowns(const std::vector<double>& rhs) = 0;
+  /// ψ on all rings for boundary data alone (right-hand side zero but on the outer ring and C).
+  virtual std::vector<double> solve_boundary(const BoundaryData& bd);
   virtual Method method() const = 0;
   const DiscreteOperator& op() const { return op_; }
   SolveTiming timing;

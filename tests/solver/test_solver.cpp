@@ -29,8 +29,10 @@ double max_abs(const std::vector<double>& a) {
 TEST_CASE("the assembled matrix is symmetric and positive definite", "[solver]") {
   const auto spacing = GENERATE(Spacing::geometric, Spacing::uniform);
   const auto far = GENERATE(FarField::exact, FarField::freestream);
+  const auto stencil = GENERATE(StencilKind::five_point, StencilKind::nine_point);
+  if (stencil == StencilKind::nine_point && spacing == Spacing::uniform) return;
   const PolarGrid g = make_grid(1.0, 5.0, 9, 16, spacing);
-  const DiscreteOperator op = make_operator(g, StencilKind::five_point, far);
+  const DiscreteOperator op = make_operator(g, stencil, far);
   const SparseMatrix A = assemble_matrix(op, false);
   const SparseMatrix At = A.transpose();
   REQUIRE(A.rows() == op.unknowns());
@@ -53,9 +55,11 @@ TEST_CASE("a sign slip in one ring's coupling breaks symmetry", "[solver]") {
 TEST_CASE("CHOLMOD and FFT solve the same discrete system to round-off", "[solver]") {
   const auto spacing = GENERATE(Spacing::geometric, Spacing::uniform);
   const auto far = GENERATE(FarField::exact, FarField::freestream);
+  const auto stencil = GENERATE(StencilKind::five_point, StencilKind::nine_point);
   const int n_theta = GENERATE(16, 64);
+  if (stencil == StencilKind::nine_point && spacing == Spacing::uniform) return;  // refused, see below
   const PolarGrid g = make_grid(1.0, 20.0, default_n_r(spacing, 20.0, n_theta), n_theta, spacing);
-  const DiscreteOperator op = make_operator(g, StencilKind::five_point, far);
+  const DiscreteOperator op = make_operator(g, stencil, far);
   auto chol = make_cholmod_solver(g, op);
   auto fft = make_fft_solver(g, op);
   // Every Fourier mode: a random right-hand side.
@@ -112,4 +116,23 @@ TEST_CASE("exact far field: the decaying roots are those of the exterior recurre
   }
   // Mode k decays like (a/r)^k: μ_k ≈ e^{−kΔξ} for kΔθ ≪ 1.
   REQUIRE(op.mu[1] == Approx(std::exp(-g.d_xi(0))).epsilon(1e-3));
+}
+
+TEST_CASE("the 9-point stencil is refused where its conditions fail (uniform spacing)", "[solver]") {
+  const PolarGrid g = make_grid(1.0, 5.0, 9, 16, Spacing::uniform);
+  REQUIRE_THROWS_WITH(make_operator(g, StencilKind::nine_point, FarField::exact),
+                      Catch::Contains("geometric"));
+  REQUIRE(stencil_refusal(make_grid(1.0, 5.0, 9, 16, Spacing::geometric), StencilKind::nine_point).empty());
+}
+
+TEST_CASE("9-point symbols: Mehrstellen weights on square cells", "[solver]") {
+  const PolarGrid g = make_grid(1.0, std::exp(2 * M_PI / 16 * 8), 9, 16, Spacing::geometric);
+  const DiscreteOperator op = make_operator(g, StencilKind::nine_point, FarField::exact);
+  const RingStencil& s = op.ring[3];
+  // (1/6h²)[20 C − 4 (N+S+E+W) − (corners)], times h²: 10/3, −2/3, −1/6.
+  REQUIRE(s.a[1] == Approx(10.0 / 3));
+  REQUIRE(s.a[0] == Approx(-2.0 / 3));
+  REQUIRE(s.b[1] == Approx(-2.0 / 3));
+  REQUIRE(s.b[0] == Approx(-1.0 / 6));
+  REQUIRE(op.w[3] == Approx(1.0));  // mode-0 flux weight Δθ/Δξ
 }

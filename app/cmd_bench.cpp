@@ -1,0 +1,85 @@
+// magnus bench CASE [--ladder 32,64,…] [--repeats N] [--method M]… [--stencil S]… [--csv F] [--plot F.png]
+#include <fmt/core.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <map>
+#include <memory>
+
+#include "app/bench.hpp"
+#include "app/case_file.hpp"
+#include "app/commands.hpp"
+#include "postproc/hdf5_io.hpp"
+#include "postproc/plot.hpp"
+
+namespace magnus {
+
+void add_bench_command(CLI::App& app) {
+  struct Options {
+    std::string case_path, csv, plot;
+    std::vector<std::string> sets, methods, stencils;
+    std::vector<int> ladder;
+    int repeats = 5, threads = 1;
+    long cholmod_max = 300000;
+  };
+  auto o = std::make_shared<Options>();
+  auto* b = app.add_subcommand("bench", "speed against error: a ladder of grids for each solver and stencil");
+  b->add_option("case", o->case_path, "case file (TOML)")->required();
+  b->add_option("--set", o->sets, "override a case key: section.key=value (repeatable)");
+  b->add_option("--ladder", o->ladder, "n_theta of each rung (default 32,64,…,1024)")->delimiter(',')
+      ->check(CLI::Range(8, 1 << 20));
+  b->add_option("--repeats", o->repeats, "median over this many runs per rung (default 5)")->check(CLI::Range(1, 1000));
+  b->add_option("--method", o->methods, "cholmod and/or fft (default both)")->delimiter(',')
+      ->check(CLI::IsMember({"cholmod", "fft"}));
+  b->add_option("--stencil", o->stencils, "5-point and/or 9-point (default both)")->delimiter(',')
+      ->check(CLI::IsMember({"5-point", "9-point"}));
+  b->add_option("--cholmod-max-unknowns", o->cholmod_max, "skip larger CHOLMOD rungs (default 300000)");
+  b->add_option("--threads", o->threads, "threads for the solver")->check(CLI::Range(1, 64));
+  b->add_option("--csv", o->csv, "write the table as CSV");
+  b->add_option("--plot", o->plot, "write a log-log PNG of C_L error against time (the Pareto front)");
+  b->callback([o] {
+    const Case c = load_case(o->case_path, o->sets);
+    BenchOptions opt;
+    if (!o->ladder.empty()) opt.ladder = o->ladder;
+    for (int n : opt.ladder)
+      if (n % 2) throw std::runtime_error(fmt::format("--ladder: n_theta = {} must be even", n));
+    if (!o->methods.empty()) {
+      opt.methods.clear();
+      for (const auto& m : o->methods) opt.methods.push_back(m == "fft" ? Method::fft : Method::cholmod);
+    }
+    if (!o->stencils.empty()) {
+      opt.stencils.clear();
+      for (const auto& s : o->stencils)
+        opt.stencils.push_back(s == "9-point" ? StencilKind::nine_point : StencilKind::five_point);
+    }
+    opt.repeats = o->repeats;
+    opt.threads = o->threads;
+    opt.cholmod_max_unknowns = o->cholmod_max;
+    if (!o->csv.empty()) check_writable(o->csv);
+    if (!o->plot.empty()) check_writable(o->plot);
+    const bool tty = ::isatty(2);
+    auto progress = [tty](const std::string& text) {
+      if (tty) std::fprintf(stderr, "\r\033[K%s", text.c_str());
+    };
+    const auto rows = run_bench(c, opt, progress);
+    if (tty) std::fprintf(stderr, "\r\033[K");
+    std::printf("magnus bench — %s (α = %.6g, far field %s, %d thread%s, median of %d)\n", c.title.c_str(),
+                c.spin_ratio(), to_string(c.far_field), opt.threads, opt.threads == 1 ? "" : "s", opt.repeats);
+    std::fputs(bench_table(rows).c_str(), stdout);
+    if (!o->csv.empty()) write_text_atomic(o->csv, bench_csv(rows));
+    if (!o->plot.empty()) {
+      std::map<std::string, Series> by;
+      for (const auto& r : rows) {
+        Series& s = by[r.method + " " + r.stencil];
+        s.label = r.method + ", " + r.stencil;
+        if (r.cl_rel > 0) s.points.push_back({r.total_s * 1e3, r.cl_rel});
+      }
+      std::vector<Series> series;
+      for (auto& [k, s] : by) series.push_back(s);
+      plot_loglog("C_L error against time: " + c.title, "time for one lift figure (ms)", "relative C_L error",
+                  series, o->plot);
+    }
+  });
+}
+
+}  // namespace magnus
