@@ -163,6 +163,125 @@ void reject_unknown_keys(const toml::table& t, const std::string& origin) {
   }
 }
 
+// toml++ 3.3 (Debian 12) reaches __builtin_unreachable() — undefined behaviour — when its whitespace test meets
+// some non-ASCII code points outside a string or comment ("title = Über", "[Ü]", "a = [ψ]", "\Ü" in a """
+// string: https://github.com/marzer/tomlplusplus/issues/190, fixed upstream after 3.4). The parser never sees
+// them: each is swapped for a private-use code point that toml++ treats the same way (a non-ASCII character
+// that is neither whitespace nor allowed in a bare key), and swapped back in what the parse returns.
+bool toml_ub_codepoint(char32_t c) {
+  // The ranges where toml++'s is_non_ascii_horizontal_whitespace() has no case (blocks 0, 11, 63 of 0x3FA).
+  return (c >= 0xA1 && c <= 0x499) || (c >= 0x2D1E && c <= 0x3117 && c != 0x3000) || (c >= 0xFAC6 && c <= 0xFEFE);
+}
+constexpr char32_t shield_offset = 0xF0000;  // plane 15, private use: 0xF00A1 ... 0xFFEFE
+
+/// Decodes one well-formed UTF-8 sequence at s[i] (length in *len); returns 0 with *len = 1 if malformed.
+char32_t decode_utf8(std::string_view s, size_t i, size_t* len) {
+  const auto b = [&](size_t k) { return static_cast<unsigned char>(s[i + k]); };
+  const auto cont = [&](size_t k) { return i + k < s.size() && (b(k) & 0xC0) == 0x80; };
+  *len = 1;
+  const unsigned c0 = b(0);
+  if (c0 >= 0xC2 && c0 <= 0xDF && cont(1)) {
+    *len = 2;
+    return char32_t(((c0 & 0x1F) << 6) | (b(1) & 0x3F));
+  }
+  if (c0 >= 0xE0 && c0 <= 0xEF && cont(1) && cont(2)) {
+    const char32_t c = char32_t(((c0 & 0x0F) << 12) | ((b(1) & 0x3F) << 6) | (b(2) & 0x3F));
+    if (c < 0x800 || (c >= 0xD800 && c <= 0xDFFF)) return 0;
+    *len = 3;
+    return c;
+  }
+  if (c0 >= 0xF0 && c0 <= 0xF4 && cont(1) && cont(2) && cont(3)) {
+    const char32_t c = char32_t(((c0 & 0x07) << 18) | ((b(1) & 0x3F) << 12) | ((b(2) & 0x3F) << 6) | (b(3) & 0x3F));
+    if (c < 0x10000 || c > 0x10FFFF) return 0;
+    *len = 4;
+    return c;
+  }
+  return 0;
+}
+
+void append_utf8(std::string& out, char32_t c) {
+  if (c < 0x80) {
+    out += char(c);
+  } else if (c < 0x800) {
+    out += char(0xC0 | (c >> 6));
+    out += char(0x80 | (c & 0x3F));
+  } else if (c < 0x10000) {
+    out += char(0xE0 | (c >> 12));
+    out += char(0x80 | ((c >> 6) & 0x3F));
+    out += char(0x80 | (c & 0x3F));
+  } else {
+    out += char(0xF0 | (c >> 18));
+    out += char(0x80 | ((c >> 12) & 0x3F));
+    out += char(0x80 | ((c >> 6) & 0x3F));
+    out += char(0x80 | (c & 0x3F));
+  }
+}
+
+/// Maps every code point c in s with from(c) to to(c); malformed bytes are left for toml++ to reject.
+template <class From, class To>
+std::string map_codepoints(std::string_view s, From from, To to, bool* changed = nullptr) {
+  std::string out;
+  out.reserve(s.size());
+  for (size_t i = 0; i < s.size();) {
+    size_t len;
+    const char32_t c = decode_utf8(s, i, &len);
+    if (len > 1 && from(c)) {
+      append_utf8(out, to(c));
+      if (changed) *changed = true;
+    } else {
+      out.append(s.substr(i, len));
+    }
+    i += len;
+  }
+  return out;
+}
+
+std::string unshield(std::string_view s) {
+  return map_codepoints(s, [](char32_t c) { return c > shield_offset && toml_ub_codepoint(c - shield_offset); },
+                        [](char32_t c) { return c - shield_offset; });
+}
+
+/// A copy of a parsed value with every string and key unshielded.
+void unshield_into(const toml::node& n, toml::array& out);
+toml::table unshield_table(const toml::table& t) {
+  toml::table out;
+  for (auto&& [k, v] : t) {
+    const std::string key = unshield(k.str());
+    if (const auto* sub = v.as_table()) out.insert(key, unshield_table(*sub));
+    else if (const auto* arr = v.as_array()) {
+      toml::array a;
+      for (const auto& e : *arr) unshield_into(e, a);
+      out.insert(key, std::move(a));
+    } else if (const auto* str = v.as_string()) out.insert(key, unshield(str->get()));
+    else v.visit([&](const auto& value) { out.insert(key, value); });
+  }
+  return out;
+}
+void unshield_into(const toml::node& n, toml::array& out) {
+  if (const auto* sub = n.as_table()) out.push_back(unshield_table(*sub));
+  else if (const auto* arr = n.as_array()) {
+    toml::array a;
+    for (const auto& e : *arr) unshield_into(e, a);
+    out.push_back(std::move(a));
+  } else if (const auto* str = n.as_string()) out.push_back(unshield(str->get()));
+  else n.visit([&](const auto& value) { out.push_back(value); });
+}
+
+/// toml::parse without toml++'s undefined behaviour (above). Throws toml::parse_error (description shielded:
+/// pass it through unshield()) or CaseError.
+toml::table parse_toml(const std::string& text, const std::string& origin) {
+  bool changed = false;
+  // Private-use code points of the swap range cannot be told apart from swapped ones: refuse them.
+  map_codepoints(text, [](char32_t c) { return c > shield_offset && toml_ub_codepoint(c - shield_offset); },
+                 [&](char32_t c) -> char32_t {
+                   throw CaseError(fmt::format("{}: unsupported character U+{:X} (private use)", origin, uint32_t(c)));
+                 });
+  const std::string safe = map_codepoints(text, toml_ub_codepoint, [](char32_t c) { return c + shield_offset; },
+                                          &changed);
+  toml::table t = toml::parse(safe, origin);
+  return changed ? unshield_table(t) : t;
+}
+
 void apply_override(toml::table& t, const std::string& spec) {
   const auto eq = spec.find('=');
   if (eq == std::string::npos || eq == 0)
@@ -184,10 +303,14 @@ void apply_override(toml::table& t, const std::string& spec) {
     if (!target) throw CaseError(fmt::format("--set {}: {} is not a table in the case", spec, section));
   }
   try {
-    toml::table parsed = toml::parse("v = " + text);
+    toml::table parsed = parse_toml("v = " + text, "--set " + spec);
     target->insert_or_assign(key, parsed["v"]);
   } catch (const toml::parse_error&) {
-    target->insert_or_assign(key, text);  // a bare word is a string
+    // A bare word is a string; like every TOML string it must be UTF-8.
+    for (size_t i = 0, len = 0; i < text.size(); i += len)
+      if (decode_utf8(text, i, &len) == 0 && static_cast<unsigned char>(text[i]) >= 0x80)
+        throw CaseError(fmt::format("--set {}: the value is not valid UTF-8", spec));
+    target->insert_or_assign(key, text);
   }
 }
 
@@ -204,6 +327,9 @@ const std::vector<std::string>& case_keys() {
 }
 
 std::string nearest_key(const std::string& key) {
+  // The edit distance is at least the difference in length, and no valid key is longer than 20 characters:
+  // a key this long is never within max(2, size/3) of one (and a megabyte key would cost seconds).
+  if (key.size() > 64) return "";
   std::string best;
   size_t best_d = std::string::npos;
   for (const auto& k : case_keys()) {
@@ -223,13 +349,20 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
                 const std::vector<std::string>& overrides) {
   toml::table t;
   try {
-    t = toml::parse(toml_text, origin);
+    t = parse_toml(toml_text, origin);
   } catch (const toml::parse_error& e) {
     throw CaseError(fmt::format("{}:{}:{}: malformed TOML: {}", origin, e.source().begin.line,
-                                e.source().begin.column, e.description()));
+                                e.source().begin.column, unshield(e.description())));
   }
   reject_unknown_keys(t, origin);
-  for (const auto& o : overrides) apply_override(t, o);
+  for (const auto& o : overrides) {
+    // A tolerance on the command line supersedes the file's grid and stencil.
+    if (o.rfind("grid.tolerance=", 0) == 0) {
+      if (auto* g = t.get_as<toml::table>("grid")) g->erase("n_theta"), g->erase("n_r");
+      if (auto* s = t.get_as<toml::table>("solver")) s->erase("stencil");
+    }
+    apply_override(t, o);
+  }
 
   const Reader r(t, origin);
   Case c;
@@ -258,6 +391,14 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
   if (c.circulation_given && !r.has("circulation", "value"))
     r.fail("circulation.value", "is required with circulation.model = \"given\"");
   c.circulation_value = r.number("circulation", "value", 0.0, any, "finite (m^2/s)");
+  // Each value is finite, but what is derived from them must be too (1e300 * 1e300 is not).
+  if (!std::isfinite(c.spin))
+    r.fail("cylinder.spin_ratio", fmt::format("gives a spin omega = alpha*U/a that is not finite (a = {}, U = {})",
+                                              c.radius, c.speed));
+  if (!std::isfinite(c.circulation()))
+    r.fail("cylinder.radius", fmt::format("gives a circulation 2*pi*a^2*omega that is not finite (a = {}, omega = {})", c.radius, c.spin));
+  if (!std::isfinite(c.spin_ratio()))
+    r.fail("flow.speed", fmt::format("{} is too small: the spin ratio a*omega/U is not finite", c.speed));
   c.outer_radius = r.number("domain", "outer_radius", c.outer_radius,
                             [](double v) { return v > 1.0 && v <= 1e12; }, "> 1 and <= 1e12 (R/a)");
   c.far_field = r.word("domain", "far_field", "exact", {"exact", "freestream"}) == "exact"
@@ -288,8 +429,11 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
   }
   if (c.stencil == StencilKind::nine_point && c.spacing == Spacing::uniform)
     r.fail("solver.stencil", "\"9-point\" needs grid.spacing = \"geometric\" (uniform in ln r)");
-  if (c.tolerance > 0.0 && r.has("grid", "n_r"))
-    r.fail("grid.tolerance", "conflicts with grid.n_r: the tolerance chooses the grid");
+  for (const char* key : {"grid.n_theta", "grid.n_r", "solver.stencil"}) {
+    const std::string k(key);
+    if (c.tolerance > 0.0 && r.has(k.substr(0, k.find('.')), k.substr(k.find('.') + 1)))
+      r.fail("grid.tolerance", fmt::format("conflicts with {}: the tolerance chooses the grid and stencil", k));
+  }
   c.source_text = to_toml(c);
   return c;
 }
@@ -308,6 +452,8 @@ std::string to_toml(const Case& c) {
     for (char ch : v) {
       if (ch == '"' || ch == '\\') q += '\\';
       if (ch == '\n') { q += "\\n"; continue; }
+      // TOML basic strings may not hold control characters other than tab: escape them all.
+      if ((unsigned char)ch < 0x20 || ch == 0x7F) { q += fmt::format("\\u{:04X}", (unsigned char)ch); continue; }
       q += ch;
     }
     return q + "\"";

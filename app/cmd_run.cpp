@@ -1,8 +1,11 @@
 // magnus run CASE [-o FILE] [--set k=v]… [--threads N] [-q]
+#include <fmt/core.h>
+
 #include <memory>
 
 #include "app/commands.hpp"
 #include "app/run.hpp"
+#include "solver/memory.hpp"
 
 namespace magnus {
 
@@ -12,6 +15,8 @@ void add_run_command(CLI::App& app) {
     std::vector<std::string> sets;
     int threads = 1;
     bool quiet = false;
+    double tolerance = 0.0;
+    std::string max_memory;
   };
   auto o = std::make_shared<Options>();
   auto* run = app.add_subcommand("run", "solve a case, write HDF5 (+ XDMF), print a summary");
@@ -20,7 +25,23 @@ void add_run_command(CLI::App& app) {
   run->add_option("--set", o->sets, "override a case key: section.key=value (repeatable)");
   run->add_option("--threads", o->threads, "threads for the solver")->check(CLI::Range(1, 64));
   run->add_flag("-q,--quiet", o->quiet, "print nothing on success");
-  run->callback([o] { command_run(o->case_path, o->output, o->sets, o->threads, o->quiet); });
+  run->add_option("--tolerance", o->tolerance,
+                  "target relative C_L error: choose the smallest grid and stencil (supersedes the file's grid)")
+      ->check(CLI::Range(1e-14, 0.1));
+  run->add_option("--max-memory", o->max_memory, "refuse a run that would need more memory (e.g. 2G, 512M)");
+  run->callback([o] {
+    size_t max_bytes = 0;
+    if (!o->max_memory.empty()) {
+      try {
+        max_bytes = parse_bytes(o->max_memory);
+      } catch (const std::exception& e) {
+        throw std::runtime_error("--max-memory " + o->max_memory + ": " + e.what());
+      }
+    }
+    std::vector<std::string> sets = o->sets;
+    if (o->tolerance > 0.0) sets.push_back(fmt::format("grid.tolerance={}", o->tolerance));
+    command_run(o->case_path, o->output, sets, o->threads, o->quiet, max_bytes);
+  });
 }
 
 void add_inspect_command(CLI::App& app) {

@@ -7,11 +7,19 @@ namespace magnus {
 
 void add_run_command(CLI::App& app);
 void add_inspect_command(CLI::App& app);
+void add_sweep_command(CLI::App& app);
+void add_compare_command(CLI::App& app);
+void add_plot_command(CLI::App& app);
+void add_bench_command(CLI::App& app);
 
 /// Every subcommand.
 inline void add_commands(CLI::App& app) {
   add_run_command(app);
   add_inspect_command(app);
+  add_sweep_command(app);
+  add_compare_command(app);
+  add_plot_command(app);
+  add_bench_command(app);
 }
 
 }  // namespace magnus

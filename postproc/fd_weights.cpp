@@ -32,7 +32,9 @@ std::vector<double> fd_weights(double x0, const std::vector<double>& x, int m) {
 }
 
 RadialDerivative radial_derivative(const std::vector<double>& xi, int order, bool odd_at_wall) {
-  const int n = int(xi.size()), width = order + 1, half = order / 2;
+  const int n = int(xi.size());
+  order = std::min(order, n - 1);  // a grid with fewer rings than the stencil is wide: lower the order
+  const int width = order + 1, half = order / 2;
   RadialDerivative d;
   d.order = order;
   d.first.resize(n);

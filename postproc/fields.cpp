@@ -139,11 +139,21 @@ std::vector<double> surface_u_theta(const PolarGrid& g, const std::vector<double
   return u;
 }
 
-Surface surface_from_u_theta(const PolarGrid& g, const Case& c, std::vector<double> u_theta) {
+namespace {
+double mean_of(const std::vector<double>& v) {
+  double m = 0.0;
+  for (double x : v) m += x;
+  return m / double(v.size());
+}
+
+Surface surface_from_split(const PolarGrid& g, const Case& c, double mean, std::vector<double> fluct) {
   const int n = g.n_theta;
   Surface s;
   s.theta = g.theta;
-  s.u_theta = std::move(u_theta);
+  s.u_mean = mean;
+  s.u_theta.resize(n);
+  for (int j = 0; j < n; ++j) s.u_theta[j] = mean + fluct[j];
+  s.u_fluct = std::move(fluct);
   const double U2 = c.speed * c.speed;
   s.pressure.resize(n);
   for (int j = 0; j < n; ++j)
@@ -158,6 +168,21 @@ Surface surface_from_u_theta(const PolarGrid& g, const Case& c, std::vector<doub
     }
   }
   return s;
+}
+}  // namespace
+
+Surface surface_from_u_theta(const PolarGrid& g, const Case& c, std::vector<double> u_theta) {
+  const double m = mean_of(u_theta);
+  for (double& u : u_theta) u -= m;
+  return surface_from_split(g, c, m, std::move(u_theta));
+}
+
+Surface surface_from_basis(const PolarGrid& g, const Case& c, const std::vector<double>& s_U,
+                           const std::vector<double>& s_Gamma) {
+  const double U = c.speed, G = c.circulation(), mU = mean_of(s_U);
+  std::vector<double> fluct(s_U.size());
+  for (size_t j = 0; j < s_U.size(); ++j) fluct[j] = U * (s_U[j] - mU);
+  return surface_from_split(g, c, U * mU + G * mean_of(s_Gamma), std::move(fluct));
 }
 
 Surface compute_surface(const PolarGrid& g, const Case& c, const std::vector<double>& psi, int order) {

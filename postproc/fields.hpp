@@ -32,7 +32,9 @@ struct Fields {
 /// Values on the body r = a (n_θ).
 struct Surface {
   std::vector<double> theta;     ///< rad
-  std::vector<double> u_theta;   ///< m/s
+  std::vector<double> u_theta;   ///< m/s, = u_mean + u_fluct
+  double u_mean = 0.0;           ///< ū, the mean of u_θ (the circulation's part, Γ/(2πa)), m/s
+  std::vector<double> u_fluct;   ///< u' = u_θ − ū, m/s
   std::vector<double> pressure;  ///< Pa
   std::vector<double> cp, cp_exact;  ///< empty when U = 0 (undefined)
 };
@@ -50,6 +52,13 @@ std::vector<double> surface_u_theta(const PolarGrid& g, const std::vector<double
 
 /// Surface pressure p = p∞ + ½ρ(U² − u_θ²) and Cp (u_r = 0 on the body) from u_θ.
 Surface surface_from_u_theta(const PolarGrid& g, const Case& c, std::vector<double> u_theta);
+
+/// Surface from the wall velocities of the superposition basis: ū = U·mean(s_U) + Γ·mean(s_Γ),
+/// u' = U·(s_U − mean(s_U)). The Γ part of the discrete flow is axisymmetric (the operator commutes with
+/// rotations by Δθ and its boundary data is constant), so its θ-varying remainder is round-off and is
+/// dropped: u' carries no error of order ε·|ū| however large α is.
+Surface surface_from_basis(const PolarGrid& g, const Case& c, const std::vector<double>& s_U,
+                           const std::vector<double>& s_Gamma);
 
 /// surface_from_u_theta(surface_u_theta(ψ)).
 Surface compute_surface(const PolarGrid& g, const Case& c, const std::vector<double>& psi, int order);

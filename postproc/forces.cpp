@@ -10,12 +10,10 @@ Forces compute_forces(const Case& c, const Surface& s) {
   const double a = c.radius, rho = c.density, U = c.speed, omega = c.spin;
   const double h = 2.0 * M_PI / n;
   Forces f;
-  double mean = 0.0;
-  for (double u : s.u_theta) mean += u;
-  mean /= n;
+  const double mean = s.u_mean;
   double fx = 0.0, fy = 0.0;
   for (int j = 0; j < n; ++j) {
-    const double up = s.u_theta[j] - mean;
+    const double up = s.u_fluct[j];
     const double q = up * (2.0 * mean + up);  // |u|² − ū²
     fx += q * std::cos(s.theta[j]);
     fy += q * std::sin(s.theta[j]);

@@ -23,8 +23,8 @@ struct Forces {
   double magnus_S_exact = 0.0;          ///< 2πρa², kg/m
 };
 
-/// F = −∮ p n̂ a dθ by the periodic trapezoid, in the form ½ρ∮(2ū u' + u'²) n̂ a dθ with
-/// u_θ = ū + u' (ū the mean): the constant parts, p∞ and ½ρ(U² − ū²), integrate to zero exactly.
+/// F = −∮ p n̂ a dθ by the periodic trapezoid, in the form ½ρ∮(2ū u' + u'²) n̂ a dθ with the surface's
+/// split u_θ = ū + u': the constant parts, p∞ and ½ρ(U² − ū²), integrate to zero exactly and are dropped.
 Forces compute_forces(const Case& c, const Surface& s);
 
 /// Stagnation points from the computed flow: sign changes of the surface u_θ, or else of u_θ along

@@ -445,7 +445,25 @@ void frame_axes(plstream& pls, const char* xopt, const char* yopt, const std::st
   pls.width(1.2);
   pls.box(xopt, 0.0, 0, yopt, 0.0, 0);
   pls.width(1.0);
-  pls.lab(xlabel.c_str(), ylabel.c_str(), title.c_str());
+  pls.lab(xlabel.c_str(), ylabel.c_str(), "");
+  if (title.empty()) return;
+  // The title as pllab places it (2 lines above the box, centred on it), but moved sideways, or made
+  // smaller, so that it stays on the page when the box is off-centre (a legend beside it).
+  PLFLT def_mm = 0.0, ht_mm = 0.0, sx0 = 0.0, sx1 = 0.0, sy0 = 0.0, sy1 = 0.0, vx0 = 0.0, vx1 = 0.0, vy0 = 0.0,
+        vy1 = 0.0;
+  pls.gchr(def_mm, ht_mm);
+  pls.gspa(sx0, sx1, sy0, sy1);
+  pls.gvpd(vx0, vx1, vy0, vy1);
+  const double page = sx1 - sx0, box0 = vx0 * page, box = (vx1 - vx0) * page, margin = 1.5 * ht_mm;
+  double len = double(display_length(title)) * 0.7 * ht_mm;  // estimated generously (no string metrics)
+  const bool shrink = page > 0.0 && len > page - 2 * margin;
+  if (shrink) {
+    pls.schr(0.0, ht_mm / def_mm * (page - 2 * margin) / len);
+    len = page - 2 * margin;
+  }
+  const double centre = std::clamp(box0 + 0.5 * box, margin + 0.5 * len, std::max(margin + 0.5 * len, page - margin - 0.5 * len));
+  pls.mtex("t", 2.0, box > 0.0 ? (centre - box0) / box : 0.5, 0.5, title.c_str());
+  if (shrink) pls.schr(0.0, ht_mm / def_mm);
 }
 
 /// The body: a grey disc with a black rim.
@@ -704,7 +722,8 @@ void plot_surface_cp(const FlowResult& r, const std::string& png, PlotSize size)
 }
 
 void plot_sweep(const std::string& title, const std::vector<CurvePoint>& numeric,
-                const std::vector<ReferenceSet>& references, const std::string& png, PlotSize size) {
+                const std::vector<ReferenceSet>& references, const std::string& png, PlotSize size,
+                const std::string& xlabel) {
   // Ranges: every point, the model lines over the α range, and Prandtl's bound on the side of the data.
   double xlo = 0.0, xhi = 0.0, ylo = 0.0, yhi = 0.0;
   bool any = false;
@@ -773,7 +792,8 @@ void plot_sweep(const std::string& title, const std::vector<CurvePoint>& numeric
     pls.lsty(1);
     pls.width(1.0);
     text_scale(pls, size);
-    frame_axes(pls, "bcnst", "bcnstv", "spin ratio α = aω/U", "lift coefficient C#dL#u", plain(title));
+    frame_axes(pls, "bcnst", "bcnstv", xlabel.empty() ? std::string("spin ratio α = aω/U") : plain(xlabel),
+               "lift coefficient C#dL#u", plain(title));
 
     std::vector<LegendEntry> legend;
     legend.push_back(line_entry("Kutta–Joukowski, C#dL#u = −2πα", kBlue, 1, 2.0));

@@ -35,8 +35,10 @@ struct ReferenceSet {
 };
 
 /// C_L against spin ratio α = aω/U: numeric points, Kutta–Joukowski −2πα, seed estimate −4α, Prandtl's bound |C_L| = 4π (α = 2 marked), reference sets with a legend label each.
+/// xlabel replaces the x-axis label when not empty (e.g. the equivalent spin ratio Γ/(2πaU) of a circulation sweep).
 void plot_sweep(const std::string& title, const std::vector<CurvePoint>& numeric,
-                const std::vector<ReferenceSet>& references, const std::string& png, PlotSize size = {});
+                const std::vector<ReferenceSet>& references, const std::string& png, PlotSize size = {},
+                const std::string& xlabel = {});
 
 /// One labelled series of a log-log plot (e.g. one method and stencil).
 struct Series {

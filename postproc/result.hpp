@@ -32,8 +32,9 @@ struct FlowResult {
   RunInfo info;
 };
 
-/// Fields, surface, forces, stagnation points and errors from ψ (m²/s) on a grid.
-FlowResult postprocess(const PolarGrid& g, const Case& c, const std::vector<double>& psi,
-                       const FieldSelection& sel);
+/// Fields, surface, forces, stagnation points and errors from the superposition basis ψ_U, ψ_Γ
+/// (ψ = U·ψ_U + Γ·ψ_Γ; the surface split of surface_from_basis keeps the forces free of ε·α round-off).
+FlowResult postprocess(const PolarGrid& g, const Case& c, const std::vector<double>& psi_U,
+                       const std::vector<double>& psi_Gamma, const FieldSelection& sel);
 
 }  // namespace magnus

@@ -29,7 +29,7 @@ SweepPoint evaluate(const FlowBasis& b, const Case& c) {
   const double U = c.speed, G = c.circulation();
   SweepPoint p;
   p.c = c;
-  const Surface s = surface_from_u_theta(b.grid, c, combine(U, b.surface_U, G, b.surface_Gamma));
+  const Surface s = surface_from_basis(b.grid, c, b.surface_U, b.surface_Gamma);
   p.forces = compute_forces(c, s);
   p.stagnation = find_stagnation_points(b.grid, c, s.u_theta, [&](double theta) {
     return theta < M_PI ? combine(U, b.up_U, G, b.up_Gamma) : combine(U, b.down_U, G, b.down_Gamma);

@@ -7,6 +7,7 @@
 
 #include "solver/cholmod_solver.hpp"
 #include "solver/flow_solver.hpp"
+#include "solver/memory.hpp"
 
 namespace magnus {
 
@@ -141,7 +142,7 @@ struct Cholmod {
 
 class CholmodSolver final : public PsiSolver {
  public:
-  CholmodSolver(const PolarGrid& grid, const DiscreteOperator& op) : PsiSolver(grid, op) {
+  CholmodSolver(const PolarGrid& grid, const DiscreteOperator& op, size_t max_bytes) : PsiSolver(grid, op) {
     double t0 = now_s();
     A_ = assemble_matrix(op);
     std::vector<long> perm = nested_dissection(op);
@@ -155,6 +156,9 @@ class CholmodSolver final : public PsiSolver {
     chol_.c.print = 0;
     chol_.L = cholmod_l_analyze_p(&a, perm.data(), nullptr, 0, &chol_.c);
     if (!chol_.L) throw std::runtime_error("CHOLMOD analysis failed (status " + std::to_string(chol_.c.status) + ")");
+    // The symbolic factor knows the fill exactly: refuse before the numeric factorization allocates it.
+    const size_t factor_bytes = chol_.L->is_super ? 8 * (chol_.L->xsize + chol_.L->ssize) : 16 * chol_.L->nzmax;
+    check_memory(factor_bytes, max_bytes, "the cholmod factor");
     cholmod_l_factorize(&a, chol_.L, &chol_.c);
     if (chol_.c.status != CHOLMOD_OK || chol_.L->minor < chol_.L->n)
       throw std::runtime_error("CHOLMOD factorization failed: the matrix is not positive definite "
@@ -195,8 +199,9 @@ class CholmodSolver final : public PsiSolver {
 
 }  // namespace
 
-std::unique_ptr<PsiSolver> make_cholmod_solver(const PolarGrid& grid, const DiscreteOperator& op) {
-  return std::make_unique<CholmodSolver>(grid, op);
+std::unique_ptr<PsiSolver> make_cholmod_solver(const PolarGrid& grid, const DiscreteOperator& op,
+                                               size_t max_bytes) {
+  return std::make_unique<CholmodSolver>(grid, op, max_bytes);
 }
 
 }  // namespace magnus

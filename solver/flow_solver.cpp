@@ -15,8 +15,8 @@ Method resolve_method(Method requested, const DiscreteOperator&) {
 }
 
 std::unique_ptr<PsiSolver> make_solver(const PolarGrid& grid, const DiscreteOperator& op,
-                                       Method method, int threads) {
-  if (resolve_method(method, op) == Method::cholmod) return make_cholmod_solver(grid, op);
+                                       Method method, int threads, size_t max_bytes) {
+  if (resolve_method(method, op) == Method::cholmod) return make_cholmod_solver(grid, op, max_bytes);
   return make_fft_solver(grid, op, threads);
 }
 

@@ -36,11 +36,13 @@ class PsiSolver {
 /// The method `auto` resolves to for this operator (the fastest that applies).
 Method resolve_method(Method requested, const DiscreteOperator& op);
 
-/// Factor the operator with the chosen method. threads ≥ 1.
+/// Factor the operator with the chosen method. threads ≥ 1; max_bytes > 0 refuses a CHOLMOD factor
+/// larger than that (checked after the symbolic analysis, before the numeric factorization).
 std::unique_ptr<PsiSolver> make_solver(const PolarGrid& grid, const DiscreteOperator& op,
-                                       Method method, int threads = 1);
+                                       Method method, int threads = 1, size_t max_bytes = 0);
 
-std::unique_ptr<PsiSolver> make_cholmod_solver(const PolarGrid& grid, const DiscreteOperator& op);
+std::unique_ptr<PsiSolver> make_cholmod_solver(const PolarGrid& grid, const DiscreteOperator& op,
+                                               size_t max_bytes = 0);
 std::unique_ptr<PsiSolver> make_fft_solver(const PolarGrid& grid, const DiscreteOperator& op,
                                            int threads = 1);
 

@@ -28,12 +28,10 @@ TEST_CASE("forces from the exact surface velocity reproduce Kutta–Joukowski (s
   const double alpha = GENERATE(-1.5, 0.0, 0.5, 1.0, 3.0);
   Case c = make_case(alpha, 32);
   const ExactFlow ex = exact_flow(c);
-  Surface s;
-  for (int j = 0; j < 32; ++j) {
-    s.theta.push_back(2 * M_PI * j / 32);
-    s.u_theta.push_back(ex.u_theta(c.radius, s.theta.back()));
-  }
-  const Forces f = compute_forces(c, s);
+  const PolarGrid g = make_grid(c.radius, 20.0, 10, 32, Spacing::geometric);
+  std::vector<double> u;
+  for (double th : g.theta) u.push_back(ex.u_theta(c.radius, th));
+  const Forces f = compute_forces(c, surface_from_u_theta(g, c, u));
   const double q = 0.5 * c.density * c.speed * c.speed * 2 * c.radius;
   REQUIRE(f.lift == Approx(-c.density * c.speed * c.circulation()).margin(1e-13 * q));
   REQUIRE(std::fabs(f.drag) <= 1e-13 * q);

@@ -1,0 +1,85 @@
+#include "app/adapt.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "postproc/forces.hpp"
+#include "solver/flow_solver.hpp"
+
+namespace magnus {
+
+namespace {
+
+/// C_L on an n_θ grid with square cells (no fields, no files).
+double lift_coefficient(Case c, int n_theta, int threads) {
+  c.n_theta = n_theta;
+  c.n_r = 0;
+  const PolarGrid g = make_grid(c);
+  const DiscreteOperator op = make_operator(g, c.stencil, c.far_field);
+  const auto solver = make_solver(g, op, c.method, threads);
+  const std::vector<double> psi = solver->solve(c.speed, c.circulation());
+  return *compute_forces(c, compute_surface(g, c, psi, derivative_order(c.stencil))).cl;
+}
+
+double relative(double diff, double cl) { return std::fabs(cl) > 1e-12 ? std::fabs(diff / cl) : std::fabs(diff); }
+
+}  // namespace
+
+GridChoice choose_grid(const Case& base, int threads) {
+  const double tol = base.tolerance;
+  if (!(base.speed > 0.0))
+    throw std::runtime_error("grid.tolerance needs flow.speed > 0: the lift coefficient is undefined at U = 0");
+  if (base.far_field == FarField::freestream) {
+    const double floor = 1.0 / (base.outer_radius * base.outer_radius);
+    if (tol < 2.0 * floor)
+      throw std::runtime_error(fmt::format(
+          "grid.tolerance = {:.3g} cannot be met with domain.far_field = \"freestream\" at R/a = {:.6g}: its error "
+          "floor is (a/R)² = {:.3g}; use far_field = \"exact\" (no floor)", tol, base.outer_radius, floor));
+  }
+  Case c = base;
+  c.stencil = base.spacing == Spacing::geometric ? StencilKind::nine_point : StencilKind::five_point;
+  const double p = c.stencil == StencilKind::nine_point ? 6.0 : 2.0;
+  const int n_max = 1 << 14;
+  GridChoice choice;
+  choice.stencil = c.stencil;
+  int n = c.stencil == StencilKind::nine_point ? 16 : 32;
+  double cl = lift_coefficient(c, n, threads), est_prev = INFINITY;
+  choice.trail = std::to_string(n);
+  for (;;) {
+    const int n2 = 2 * n;
+    if (n2 > n_max)
+      throw std::runtime_error(fmt::format("grid.tolerance = {:.3g} needs n_theta > {} (estimate {:.3g} at {})", tol,
+                                           n_max, est_prev, n));
+    const double cl2 = lift_coefficient(c, n2, threads);
+    const double est = relative(cl2 - cl, cl2) / (std::pow(2.0, p) - 1.0);
+    choice.trail += " → " + std::to_string(n2);
+    if (est <= tol) {
+      choice.n_theta = n2;
+      choice.estimated_cl_rel = est;
+      // Smaller n the order predicts; accept it if it agrees with n2 to within the tolerance.
+      int n_star = int(std::ceil(n2 * std::pow(est / tol, 1.0 / p) / 4.0)) * 4;
+      n_star = std::max(8, n_star);
+      if (n_star < n2) {
+        const double cl_star = lift_coefficient(c, n_star, threads);
+        const double est_star = relative(cl_star - cl2, cl2) + est;
+        choice.trail += " → " + std::to_string(n_star);
+        if (est_star <= tol) {
+          choice.n_theta = n_star;
+          choice.estimated_cl_rel = est_star;
+        }
+      }
+      return choice;
+    }
+    if (est > 0.5 * est_prev && est_prev < 1e-9)
+      throw std::runtime_error(fmt::format(
+          "grid.tolerance = {:.3g} is below the round-off floor: the estimate stops falling at {:.3g} (n_theta = {})",
+          tol, est, n2));
+    est_prev = est;
+    n = n2;
+    cl = cl2;
+  }
+}
+
+}  // namespace magnus

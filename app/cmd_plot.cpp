@@ -1,0 +1,24 @@
+// magnus plot FILE [-o DIR] [--size WxH] [-q]
+#include <memory>
+
+#include "app/commands.hpp"
+#include "app/plot_command.hpp"
+
+namespace magnus {
+
+void add_plot_command(CLI::App& app) {
+  struct Options {
+    std::string file, dir, size;
+    bool quiet = false;
+  };
+  auto o = std::make_shared<Options>();
+  auto* plot = app.add_subcommand(
+      "plot", "PNG pictures of a result: streamlines, the Cp field, surface Cp against exact");
+  plot->add_option("file", o->file, "result file (HDF5, from magnus run)")->required();
+  plot->add_option("-o,--output-dir", o->dir, "directory for the PNGs (default: beside the result)");
+  plot->add_option("--size", o->size, "PNG size WxH in pixels (default 1000x800)");
+  plot->add_flag("-q,--quiet", o->quiet, "do not list the files written");
+  plot->callback([o] { command_plot(o->file, o->dir, o->size, o->quiet); });
+}
+
+}  // namespace magnus

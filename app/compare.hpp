@@ -1,0 +1,22 @@
+#pragma once
+// `magnus compare FILE… [--csv FILE]`: lift, drag, the three lift coefficients and the errors of several
+// results side by side, with the parameters that differ between them (only those).
+#include <string>
+#include <vector>
+
+namespace magnus {
+
+/// The comparison of result files: a text table (for stdout) and the same as CSV (one row per file).
+struct Comparison {
+  std::string table, csv;
+  std::vector<std::string> differing;  ///< names of the parameters that differ between the files
+};
+
+/// Read every file (magnus-flow results) and compare them. Throws std::runtime_error with one line
+/// naming the first unreadable or foreign file.
+Comparison compare_results(const std::vector<std::string>& paths);
+
+/// `magnus compare`: print the table; write the CSV atomically when csv is not empty. Throws on failure.
+void command_compare(const std::vector<std::string>& paths, const std::string& csv);
+
+}  // namespace magnus

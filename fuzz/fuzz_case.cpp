@@ -1,0 +1,75 @@
+// libFuzzer target for the case-file parser and the --set parser (issue 5, part 4).
+//
+// Each input is used twice:
+//   1. as a whole TOML case file: parse_case(text, "fuzz.toml");
+//   2. split on newlines into "section.key=value" overrides applied to an empty case.
+// CaseError is the parser's one documented failure and is caught. Anything else is a finding:
+// another exception (it escapes, std::terminate aborts), a crash, a hang, a sanitizer report,
+// or a broken invariant of an accepted case (checked below, reported by abort()).
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "app/case_file.hpp"
+
+using namespace magnus;
+
+namespace {
+
+[[noreturn]] void finding(const char* what, const std::string& detail) {
+  std::fprintf(stderr, "fuzz_case: invariant broken: %s\n%s\n", what, detail.c_str());
+  std::abort();
+}
+
+/// What every accepted case must satisfy (DESIGN §3 ranges), and its resolved TOML must read back the same.
+void check_accepted(const Case& c) {
+  for (double v : {c.radius, c.spin, c.speed, c.density, c.pressure_inf, c.circulation_value, c.outer_radius,
+                   c.tolerance, c.circulation(), c.spin_ratio()})
+    if (!std::isfinite(v)) finding("a number of an accepted case is not finite", c.source_text);
+  if (!(c.radius > 0 && c.speed >= 0 && c.density > 0 && c.outer_radius > 1))
+    finding("a range check let a value through", c.source_text);
+  if (c.n_theta < 8 || c.n_theta % 2 != 0 || c.n_r < 0 || c.output_file.empty())
+    finding("a grid or output check let a value through", c.source_text);
+  // The resolved case is stored in every result and echoed: it must be a valid case that resolves to itself.
+  Case again;
+  try {
+    again = parse_case(c.source_text, "resolved.toml");
+  } catch (const CaseError& e) {
+    finding("the resolved TOML of an accepted case does not parse", std::string(e.what()) + "\n" + c.source_text);
+  }
+  if (again.source_text != c.source_text)
+    finding("the resolved TOML does not resolve to itself", c.source_text + "\n---\n" + again.source_text);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+
+  // 1. The whole input as a case file.
+  try {
+    check_accepted(parse_case(text, "fuzz.toml"));
+  } catch (const CaseError&) {
+  }
+
+  // 2. Each line as a --set override on an empty case (and on a case with sections present).
+  std::vector<std::string> sets;
+  size_t start = 0;
+  while (start <= text.size()) {
+    const size_t nl = text.find('\n', start);
+    const size_t end = nl == std::string::npos ? text.size() : nl;
+    sets.push_back(text.substr(start, end - start));
+    if (nl == std::string::npos) break;
+    start = nl + 1;
+  }
+  for (const char* base : {"", "[grid]\n[output]\n"}) {
+    try {
+      check_accepted(parse_case(base, "fuzz.toml", sets));
+    } catch (const CaseError&) {
+    }
+  }
+  return 0;
+}

@@ -1,0 +1,30 @@
+#pragma once
+// Memory guard: what a solve will need, and what the machine has, before anything large is allocated.
+#include <cstddef>
+#include <string>
+#include "solver/stencil.hpp"
+
+namespace magnus {
+
+/// Bytes the solver needs for the operator: FFT: the LU factors (2 doubles per mode and ring) and the
+/// spectrum (1 complex); CHOLMOD: the matrix, its assembly triplets and the factor's fill-in,
+/// estimated as 4·N·log₂N (nested dissection on a 2D grid; measured 3.1) plus the dense outer ring n²/2.
+size_t solver_bytes(const DiscreteOperator& op, Method method);
+
+/// Bytes of the ψ-sized arrays a run holds besides the solver: ψ_U, ψ_Γ, ψ, the exact ψ for the error
+/// norms and `fields` selected fields (n_r·n_θ doubles each).
+size_t field_bytes(const DiscreteOperator& op, int fields);
+
+/// Memory this process may use: MemAvailable from /proc/meminfo, capped by the cgroup limit.
+size_t available_bytes();
+
+/// "2G", "512M", "1.5GiB", "800000000" → bytes. Throws std::invalid_argument on anything else.
+size_t parse_bytes(const std::string& text);
+
+/// "1.23 GiB".
+std::string format_bytes(size_t bytes);
+
+/// Throws std::runtime_error with the estimate if `needed` exceeds `limit` (0: available_bytes()).
+void check_memory(size_t needed, size_t limit, const std::string& what);
+
+}  // namespace magnus

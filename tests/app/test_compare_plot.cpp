@@ -1,0 +1,238 @@
+// magnus compare and magnus plot, run as a user runs them: compare reads back what run wrote, plot
+// draws every shipped case from its result file alone.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "app/compare.hpp"
+#include "app/plot_command.hpp"
+#include "postproc/hdf5_io.hpp"
+#include "tests/support.hpp"
+
+using namespace magnus;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Outcome {
+  int status;
+  std::string out, err;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char ch : s) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return q + "'";
+}
+
+Outcome magnus_cmd(const std::vector<std::string>& args, const std::string& dir) {
+  std::string cmd = quote(MAGNUS_EXE);
+  for (const auto& a : args) cmd += " " + quote(a);
+  cmd += " >" + quote(dir + "/stdout.txt") + " 2>" + quote(dir + "/stderr.txt");
+  const int raw = std::system(cmd.c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128, slurp(dir + "/stdout.txt"), slurp(dir + "/stderr.txt")};
+}
+
+size_t lines(const std::string& s) { return size_t(std::count(s.begin(), s.end(), '\n')); }
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::string cur;
+  bool quoted = false;
+  for (char ch : s) {
+    if (ch == '"') quoted = !quoted;
+    else if (ch == sep && !quoted) {
+      out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += ch;
+    }
+  }
+  out.push_back(cur);
+  return out;
+}
+
+std::pair<unsigned long, unsigned long> png_size(const std::string& path) {
+  const std::string b = slurp(path);
+  if (b.size() < 100 || b.compare(1, 3, "PNG") != 0 || b.compare(12, 4, "IHDR") != 0) return {0, 0};
+  auto be32 = [&](size_t at) {
+    const auto* u = reinterpret_cast<const unsigned char*>(b.data()) + at;
+    return (unsigned long)u[0] << 24 | (unsigned long)u[1] << 16 | (unsigned long)u[2] << 8 | u[3];
+  };
+  if (b.compare(b.size() - 8, 4, "IEND") != 0) return {0, 0};
+  return {be32(16), be32(20)};
+}
+
+}  // namespace
+
+TEST_CASE("magnus compare reads back exactly what magnus run wrote", "[app][compare]") {
+  const std::string dir = test::temp_dir("compare");
+  std::ofstream(dir + "/a.toml") << "title = \"A\"\n[cylinder]\nspin_ratio = 1.0\n[grid]\nn_theta = 32\n";
+  std::ofstream(dir + "/b.toml") << "title = \"B\"\n[cylinder]\nspin_ratio = 1.0\n[grid]\nn_theta = 64\n";
+  std::ofstream(dir + "/c.toml") << "title = \"C, no wind\"\n[flow]\nspeed = 0.0\n[grid]\nn_theta = 32\n";
+  for (const char* n : {"a", "b", "c"})
+    REQUIRE(magnus_cmd({"run", dir + "/" + n + ".toml", "-o", dir + "/" + n + ".h5", "-q"}, dir).status == 0);
+  const std::vector<std::string> files = {dir + "/a.h5", dir + "/b.h5", dir + "/c.h5"};
+
+  const Comparison cmp = compare_results(files);
+  // Only the parameters that differ: the grid (and the wind and spin for c), never the radius.
+  auto differs = [&](const char* name) {
+    return std::find(cmp.differing.begin(), cmp.differing.end(), name) != cmp.differing.end();
+  };
+  CHECK(differs("n_theta"));
+  CHECK(differs("n_r"));
+  CHECK(differs("speed"));
+  CHECK(differs("title"));
+  CHECK_FALSE(differs("radius"));
+  CHECK_FALSE(differs("density"));
+  CHECK_FALSE(differs("stencil"));
+  CHECK(cmp.table.find("parameters that differ") != std::string::npos);
+  CHECK(cmp.table.find("\n  radius") == std::string::npos);
+  CHECK(cmp.table.find("\n  n_theta") != std::string::npos);
+
+  // The CSV holds every value at full precision: equal to the attributes, bit for bit.
+  std::istringstream csv(cmp.csv);
+  std::string line;
+  std::getline(csv, line);
+  const std::vector<std::string> head = split(line, ',');
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(csv, line)) rows.push_back(split(line, ','));
+  REQUIRE(rows.size() == 3);
+  auto column = [&](const std::string& name) {
+    const auto it = std::find(head.begin(), head.end(), name);
+    REQUIRE(it != head.end());
+    return size_t(it - head.begin());
+  };
+  const std::vector<std::pair<std::string, std::string>> attrs = {
+      {"lift_N_m", "lift"}, {"drag_N_m", "drag"}, {"cl", "cl"}, {"cl_kutta_joukowski", "cl_kutta_joukowski"},
+      {"cl_seed_estimate", "cl_seed_estimate"}, {"cd", "cd"}, {"delta_p_top_bottom_Pa", "delta_p_top_bottom"},
+      {"delta_p_seed_estimate_Pa", "delta_p_seed_estimate"}};
+  for (size_t i = 0; i < files.size(); ++i) {
+    const ResultFile f(files[i]);
+    CHECK(rows[i][0] == files[i]);
+    for (const auto& [col, attr] : attrs) {
+      CAPTURE(files[i], col);
+      const std::string cell = rows[i][column(col)];
+      if (f.has_attr("/forces", attr)) {
+        REQUIRE_FALSE(cell.empty());
+        CHECK(std::strtod(cell.c_str(), nullptr) == f.attr_double("/forces", attr));
+      } else {
+        CHECK(cell.empty());  // undefined (U = 0)
+      }
+    }
+    CHECK(std::strtod(rows[i][column("cl_rel")].c_str(), nullptr) == f.attr_double("/errors", "cl_rel"));
+  }
+  CHECK(rows[2][column("cl")].empty());
+  CHECK(rows[0][column("kj_over_seed")].rfind("1.57079632679489", 0) == 0);
+
+  // Through the command line: the table on stdout, the CSV file, one line for a foreign file.
+  const Outcome o = magnus_cmd({"compare", files[0], files[1], "--csv", dir + "/cmp.csv"}, dir);
+  CAPTURE(o.err);
+  REQUIRE(o.status == 0);
+  for (const char* s : {"lift F_y (N/m)", "C_L Kutta–Joukowski", "C_L seed estimate", "C_D", "error C_L rel", "n_theta"})
+    CHECK(o.out.find(s) != std::string::npos);
+  CHECK(slurp(dir + "/cmp.csv") == compare_results({files[0], files[1]}).csv);
+  std::ofstream(dir + "/foreign.h5") << "not HDF5";
+  for (const std::string& bad : {dir + "/a.toml", dir + "/foreign.h5", dir + "/missing.h5"}) {
+    const Outcome b = magnus_cmd({"compare", files[0], bad}, dir);
+    CAPTURE(b.err);
+    CHECK(b.status != 0);
+    CHECK(lines(b.err) == 1);
+    CHECK(b.err.find(bad) != std::string::npos);
+  }
+  // A sweep file is HDF5 but not a flow result.
+  REQUIRE(magnus_cmd({"sweep", dir + "/a.toml", "--spin-ratio", "0:1:1", "-o", dir + "/sw.h5", "-q"}, dir).status == 0);
+  const Outcome sw = magnus_cmd({"compare", files[0], dir + "/sw.h5"}, dir);
+  CHECK(sw.status != 0);
+  CHECK(lines(sw.err) == 1);
+  CHECK(sw.err.find("magnus-sweep") != std::string::npos);
+}
+
+TEST_CASE("magnus plot writes complete PNGs of the stated size for every shipped case", "[app][plot]") {
+  std::vector<std::string> cases;
+  for (const auto& e : fs::directory_iterator(std::string(MAGNUS_SOURCE_DIR) + "/cases"))
+    if (e.path().extension() == ".toml") cases.push_back(e.path().string());
+  std::sort(cases.begin(), cases.end());
+  REQUIRE(cases.size() >= 6);
+  const std::string dir = test::temp_dir("plot-cases");
+  const std::string pics = dir + "/pictures";
+  for (const auto& path : cases) {
+    const std::string stem = fs::path(path).stem().string();
+    CAPTURE(stem);
+    const std::string h5 = dir + "/" + stem + ".h5";
+    REQUIRE(magnus_cmd({"run", path, "--set", "grid.n_theta=64", "-o", h5, "-q"}, dir).status == 0);
+    const Outcome o = magnus_cmd({"plot", h5, "-o", pics, "--size", "320x240"}, dir);
+    CAPTURE(o.err);
+    REQUIRE(o.status == 0);
+    const bool still = ResultFile(h5).attr_double("/parameters", "speed") == 0.0;
+    std::vector<std::string> expected = {"_streamlines.png"};
+    if (!still) expected.insert(expected.end(), {"_cp.png", "_surface_cp.png"});
+    for (const auto& suffix : expected) {
+      const std::string png = pics + "/" + stem + suffix;
+      CHECK(o.out.find(png) != std::string::npos);
+      CHECK(png_size(png) == std::pair<unsigned long, unsigned long>(320, 240));
+    }
+    // U = 0: Cp is undefined, the two Cp pictures are skipped with a note each.
+    CHECK(lines(o.err) == (still ? 2u : 0u));
+    CHECK(fs::exists(pics + "/" + stem + "_cp.png") == !still);
+  }
+  for (const auto& e : fs::directory_iterator(pics)) CHECK(e.path().filename().string().find(".tmp-") == std::string::npos);
+}
+
+TEST_CASE("magnus plot skips what the file lacks and fails in one line when nothing can be drawn", "[app][plot]") {
+  const std::string dir = test::temp_dir("plot-partial");
+  std::ofstream(dir + "/case.toml") << "[grid]\nn_theta = 32\n[output]\nfields = [\"psi\"]\n";
+  std::ofstream(dir + "/still.toml") << "[flow]\nspeed = 0.0\n[grid]\nn_theta = 32\n[output]\nfields = []\n";
+  REQUIRE(magnus_cmd({"run", dir + "/case.toml", "-o", dir + "/r.h5", "-q"}, dir).status == 0);
+  REQUIRE(magnus_cmd({"run", dir + "/still.toml", "-o", dir + "/s.h5", "-q"}, dir).status == 0);
+
+  // psi only: streamlines and surface Cp (always stored), the Cp field skipped with a note. Default
+  // directory: beside the result; default size 1000x800.
+  const Outcome o = magnus_cmd({"plot", dir + "/r.h5"}, dir);
+  CAPTURE(o.err);
+  REQUIRE(o.status == 0);
+  CHECK(lines(o.err) == 1);
+  CHECK(o.err.find("/fields/cp") != std::string::npos);
+  CHECK(png_size(dir + "/r_streamlines.png") == std::pair<unsigned long, unsigned long>(1000, 800));
+  CHECK(png_size(dir + "/r_surface_cp.png") == std::pair<unsigned long, unsigned long>(1000, 800));
+  CHECK_FALSE(fs::exists(dir + "/r_cp.png"));
+
+  // The library call reports the same.
+  const PlotOutcome p = plot_result_file(dir + "/r.h5", dir + "/lib", {200, 160});
+  CHECK(p.written.size() == 2);
+  CHECK(p.skipped.size() == 1);
+
+  // No fields and no wind: nothing to draw.
+  const Outcome none = magnus_cmd({"plot", dir + "/s.h5", "-o", dir + "/none"}, dir);
+  CHECK(none.status != 0);
+  CHECK(lines(none.err) == 1);
+  CHECK(none.err.find("nothing to plot") != std::string::npos);
+  CHECK((!fs::exists(dir + "/none") || fs::is_empty(dir + "/none")));
+
+  // Bad input: a foreign file, a bad size, an output "directory" that is a file.
+  std::ofstream(dir + "/plain") << "x";
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"plot", dir + "/case.toml"}, std::vector<std::string>{"plot", dir + "/r.h5", "--size", "100"},
+        std::vector<std::string>{"plot", dir + "/r.h5", "--size", "0x100"},
+        std::vector<std::string>{"plot", dir + "/r.h5", "-o", dir + "/plain"}}) {
+    const Outcome b = magnus_cmd(args, dir);
+    CAPTURE(args, b.err);
+    CHECK(b.status != 0);
+    CHECK(lines(b.err) == 1);
+  }
+  CHECK(parse_plot_size("900x700").width == 900);
+  CHECK(parse_plot_size("900x700").height == 700);
+  REQUIRE_THROWS_AS(parse_plot_size("900x"), std::invalid_argument);
+  REQUIRE_THROWS_AS(parse_plot_size("-9x700"), std::invalid_argument);
+}
