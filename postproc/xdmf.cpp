@@ -24,8 +24,8 @@ bool has_velocity(const FlowResult& r) { return !r.fields.u_x.empty() && !r.fiel
 void for_each_xdmf_array(const FlowResult& r, const std::function<void(const XdmfArray&)>& visit) {
   const PolarGrid& g = r.grid;
   const size_t nr = g.n_r, nt = g.n_theta;
-  XdmfArray x{"x", {nr, nt + 1}, std::vector<double>(nr * (nt + 1)), "m"};
-  XdmfArray y{"y", {nr, nt + 1}, std::vector<double>(nr * (nt + 1)), "m"};
+  XdmfArray x{"x", {1, nr, nt + 1}, std::vector<double>(nr * (nt + 1)), "m"};
+  XdmfArray y{"y", {1, nr, nt + 1}, std::vector<double>(nr * (nt + 1)), "m"};
   for (size_t i = 0; i < nr; ++i)
     for (size_t j = 0; j <= nt; ++j) {
       const double th = j == nt ? 2.0 * M_PI : g.theta[j];
@@ -36,10 +36,10 @@ void for_each_xdmf_array(const FlowResult& r, const std::function<void(const Xdm
   visit(y);
   for (const auto& name : field_names()) {
     const auto& f = r.fields.get(name);
-    if (!f.empty()) visit({name, {nr, nt + 1}, closed(f, nr, nt), field_units(name)});
+    if (!f.empty()) visit({name, {1, nr, nt + 1}, closed(f, nr, nt), field_units(name)});
   }
   if (has_velocity(r)) {
-    XdmfArray v{"velocity", {nr, nt + 1, 3}, std::vector<double>(nr * (nt + 1) * 3, 0.0), "m/s"};
+    XdmfArray v{"velocity", {1, nr, nt + 1, 3}, std::vector<double>(nr * (nt + 1) * 3, 0.0), "m/s"};
     for (size_t i = 0; i < nr; ++i)
       for (size_t j = 0; j <= nt; ++j) {
         const size_t src = i * nt + (j % nt), dst = 3 * (i * (nt + 1) + j);
@@ -57,11 +57,11 @@ std::string xdmf_text(const FlowResult& r, const std::string& h5_name) {
         "        <DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
         "{}:/xdmf/{}</DataItem>\n", dims, h5_name, name);
   };
-  const std::string d2 = fmt::format("{} {}", nr, nt1), d3 = fmt::format("{} {} 3", nr, nt1);
+  const std::string d2 = fmt::format("1 {} {}", nr, nt1), d3 = fmt::format("1 {} {} 3", nr, nt1);
   std::string s = "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
                   "<Xdmf Version=\"3.0\">\n  <Domain>\n";
   s += fmt::format("    <Grid Name=\"{}\" GridType=\"Uniform\">\n", "magnus");
-  s += fmt::format("      <Topology TopologyType=\"2DSMesh\" Dimensions=\"{}\"/>\n", d2);
+  s += fmt::format("      <Topology TopologyType=\"3DSMesh\" Dimensions=\"{}\"/>\n", d2);
   s += "      <Geometry GeometryType=\"X_Y\">\n" + item("x", d2) + item("y", d2) + "      </Geometry>\n";
   for (const auto& name : field_names())
     if (!r.fields.get(name).empty())

@@ -83,10 +83,10 @@ TEST_CASE("HDF5 round trip: every dataset and attribute of DESIGN §5, with unit
     REQUIRE(f.attr_double("/timing", a) >= 0.0);
   // Seam-closed copies for ParaView: column n_θ repeats column 0.
   const auto xc = f.dataset("/xdmf/psi", &shape);
-  REQUIRE(shape == std::vector<size_t>{nr, nt + 1});
+  REQUIRE(shape == std::vector<size_t>{1, nr, nt + 1});
   REQUIRE(xc[5 * (nt + 1) + nt] == r.fields.psi[5 * nt]);
   f.dataset("/xdmf/velocity", &shape);
-  REQUIRE(shape == std::vector<size_t>{nr, nt + 1, 3});
+  REQUIRE(shape == std::vector<size_t>{1, nr, nt + 1, 3});
 }
 
 TEST_CASE("only the fields asked for are written; U = 0 marks Cp undefined", "[postproc][hdf5]") {
@@ -109,7 +109,8 @@ TEST_CASE("only the fields asked for are written; U = 0 marks Cp undefined", "[p
   REQUIRE(f.has_attr("/forces", "lift"));
   std::ifstream xmf(dir + "/sel.xmf");
   const std::string text((std::istreambuf_iterator<char>(xmf)), std::istreambuf_iterator<char>());
-  REQUIRE(text.find("2DSMesh") != std::string::npos);
+  REQUIRE(text.find("3DSMesh") != std::string::npos);
+  REQUIRE(text.find("GeometryType=\"X_Y\"") != std::string::npos);
   REQUIRE(text.find("sel.h5:/xdmf/psi") != std::string::npos);
   REQUIRE(text.find("/xdmf/cp") == std::string::npos);
 }
