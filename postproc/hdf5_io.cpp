@@ -1,9 +1,13 @@
 #include "postproc/hdf5_io.hpp"
 
 #include <fmt/core.h>
+#include <dirent.h>
 #include <hdf5.h>
+#include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -32,10 +36,22 @@ struct Handle {
 
 void quiet_hdf5() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
 
+// HDF5 1.10.8 cannot close a file after a write failed (disk full, file size limit): H5Fclose fails and
+// leaves the file open, and the library's atexit clean-up then crashes closing it (SIGSEGV after our error
+// message). Every file we open is closed explicitly, so the clean-up is not needed: switch it off before
+// anything initialises the library.
+const bool hdf5_no_atexit = [] {
+  H5dont_atexit();
+  return true;
+}();
+
 [[noreturn]] void fail(const std::string& what) { throw std::runtime_error(what); }
 
+/// Fails with what, and the system's reason when the last HDF5 call set errno (": No space left on device").
 void check(herr_t status, const std::string& what) {
-  if (status < 0) fail(what);
+  if (status >= 0) return;
+  const int err = errno;
+  fail(err != 0 ? what + ": " + std::strerror(err) : what);
 }
 
 std::string dir_of(const std::string& path) {
@@ -50,6 +66,29 @@ std::string base_of(const std::string& path) {
 
 std::string temp_name(const std::string& path) {
   return dir_of(path) + "/." + base_of(path) + ".tmp-" + std::to_string(::getpid());
+}
+
+/// Removes temporary files of earlier writers of path (".NAME.tmp-PID" beside it) whose process is gone:
+/// a writer killed with SIGKILL cannot remove its own. A live PID (another writer) is left alone.
+void remove_stale_temps(const std::string& path) {
+  const std::string dir = dir_of(path), prefix = "." + base_of(path) + ".tmp-";
+  DIR* d = ::opendir(dir.c_str());
+  if (!d) return;
+  std::vector<std::string> stale;
+  while (const dirent* e = ::readdir(d)) {
+    const std::string name = e->d_name;
+    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string pid = name.substr(prefix.size());
+    if (pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+    const long p = std::stol(pid);
+    if (p > 0 && p != long(::getpid()) && ::kill(pid_t(p), 0) != 0 && errno == ESRCH) stale.push_back(name);
+  }
+  ::closedir(d);
+  for (const auto& name : stale) {
+    struct stat st;
+    const std::string full = dir + "/" + name;
+    if (::lstat(full.c_str(), &st) == 0 && S_ISREG(st.st_mode)) std::remove(full.c_str());
+  }
 }
 
 class Writer {
@@ -91,11 +130,23 @@ class Writer {
                const double* data, const std::string& units) {
     std::vector<hsize_t> dims(shape.begin(), shape.end());
     Handle space(H5Screate_simple(int(dims.size()), dims.data(), nullptr), H5Sclose);
-    Handle d(H5Dcreate2(parent, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT,
-                        H5P_DEFAULT), H5Dclose);
-    if (d < 0) fail("cannot create dataset " + name);
     size_t count = 1;
     for (size_t s : shape) count *= s;
+    // Every value is checksummed (Fletcher-32, checked by HDF5 on every read), so a damaged file is
+    // reported, not read as numbers. The filter needs chunks: whole rows, ~512 KB each (with the filter,
+    // writing is then as fast as the plain contiguous layout; much larger chunks are twice as slow).
+    Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+    if (count > 0) {
+      std::vector<hsize_t> chunk = dims;
+      const hsize_t row = count / dims[0];
+      chunk[0] = std::max<hsize_t>(1, std::min<hsize_t>(dims[0], (hsize_t(512) << 10) / (8 * row)));
+      check(H5Pset_chunk(dcpl, int(chunk.size()), chunk.data()) < 0 ? -1 : H5Pset_fletcher32(dcpl),
+            "cannot set up dataset " + name);
+    }
+    errno = 0;
+    Handle d(H5Dcreate2(parent, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose);
+    if (d < 0) check(-1, "cannot create dataset " + name);
+    errno = 0;
     if (count > 0) check(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
                          "cannot write dataset " + name);
     attr(d, "units", units);
@@ -233,17 +284,24 @@ void check_writable(const std::string& path) {
     fail(fmt::format("cannot write '{}': the existing file is not writable", path));
 }
 
+namespace {
+/// Writes text to tmp; on failure removes it and returns the reason ("" on success).
+std::string write_text_file(const std::string& tmp, const std::string& text) {
+  errno = 0;
+  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+  out << text;
+  out.close();
+  if (out) return "";
+  const int err = errno;
+  std::remove(tmp.c_str());
+  return err ? std::strerror(err) : "write failed";
+}
+}  // namespace
+
 void write_text_atomic(const std::string& path, const std::string& text) {
   const std::string tmp = temp_name(path);
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.flush();
-    if (!out) {
-      std::remove(tmp.c_str());
-      fail(fmt::format("cannot write '{}': {}", path, std::strerror(errno)));
-    }
-  }
+  const std::string error = write_text_file(tmp, text);
+  if (!error.empty()) fail(fmt::format("cannot write '{}': {}", path, error));
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     const int err = errno;
     std::remove(tmp.c_str());
@@ -254,20 +312,34 @@ void write_text_atomic(const std::string& path, const std::string& text) {
 void write_result(const FlowResult& r, const std::string& path) {
   quiet_hdf5();
   check_writable(path);
-  const std::string tmp = temp_name(path);
+  remove_stale_temps(path);
+  remove_stale_temps(xdmf_path(path));
+  const std::string tmp = temp_name(path), xmf = xdmf_path(path), xmf_tmp = temp_name(xmf);
   try {
     {
-      Handle file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
-      if (file < 0) fail(fmt::format("cannot create '{}'", tmp));
+      // The 1.10 file format: its metadata (superblock, object headers, chunk indexes) is checksummed.
+      Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+      check(H5Pset_libver_bounds(fapl, H5F_LIBVER_V110, H5F_LIBVER_LATEST), "cannot set the HDF5 format");
+      errno = 0;
+      Handle file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose);
+      if (file < 0) check(-1, fmt::format("cannot create '{}'", tmp));
       write_file(r, file);
-      if (H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) fail("cannot flush");
+      errno = 0;
+      check(H5Fflush(file, H5F_SCOPE_GLOBAL), "cannot flush");
+      // Close here, checked: the file is renamed only if every byte made it out.
+      errno = 0;
+      const hid_t id = file.id;
+      file.id = -1;
+      check(H5Fclose(id), "cannot close");
     }
-    const std::string xmf = xdmf_path(path);
-    const std::string xmf_text = xdmf_text(r, base_of(path));
+    // The sidecar too is complete before either file replaces an earlier one.
+    const std::string error = write_text_file(xmf_tmp, xdmf_text(r, base_of(path)));
+    if (!error.empty()) fail(fmt::format("its sidecar '{}': {}", xmf, error));
     if (std::rename(tmp.c_str(), path.c_str()) != 0) fail(std::strerror(errno));
-    write_text_atomic(xmf, xmf_text);
+    if (std::rename(xmf_tmp.c_str(), xmf.c_str()) != 0) fail(fmt::format("its sidecar '{}': {}", xmf, std::strerror(errno)));
   } catch (const std::exception& e) {
     std::remove(tmp.c_str());
+    std::remove(xmf_tmp.c_str());
     throw std::runtime_error(fmt::format("cannot write '{}': {}", path, e.what()));
   }
 }
@@ -277,23 +349,24 @@ void write_result(const FlowResult& r, const std::string& path) {
 
 ResultFile::ResultFile(const std::string& path) : path_(path) {
   quiet_hdf5();
-  if (::access(path.c_str(), R_OK) != 0)
-    fail(fmt::format("cannot read '{}': {}", path, std::strerror(errno)));
+  struct stat st;
+  if (::stat(path.c_str(), &st) != 0) fail(fmt::format("cannot read '{}': {}", path, std::strerror(errno)));
+  if (S_ISDIR(st.st_mode)) fail(fmt::format("'{}' is a directory, not a result file", path));
+  if (!S_ISREG(st.st_mode)) fail(fmt::format("'{}' is not a regular file", path));
+  if (::access(path.c_str(), R_OK) != 0) fail(fmt::format("cannot read '{}': {}", path, std::strerror(errno)));
+  if (st.st_size == 0) fail(fmt::format("'{}' is empty, not a result file", path));
   if (H5Fis_hdf5(path.c_str()) <= 0) fail(fmt::format("'{}' is not an HDF5 file (or it is truncated)", path));
   id_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (id_ < 0) fail(fmt::format("'{}' is a damaged HDF5 file: it cannot be opened", path));
+  if (id_ < 0) fail(fmt::format("'{}' is a damaged or truncated HDF5 file: it cannot be opened", path));
   std::string format;
   try {
+    if (!has_attr("/", "format")) fail(fmt::format("'{}' is not a magnus result: no 'format' attribute", path));
     format = attr_string("/", "format");
+    if (format != "magnus-flow") fail(fmt::format("'{}' is not a magnus result: format is '{}'", path, format));
   } catch (const std::exception&) {
     H5Fclose(id_);
     id_ = -1;
-    fail(fmt::format("'{}' is not a magnus result: no 'format' attribute", path));
-  }
-  if (format != "magnus-flow") {
-    H5Fclose(id_);
-    id_ = -1;
-    fail(fmt::format("'{}' is not a magnus result: format is '{}'", path, format));
+    throw;
   }
 }
 
@@ -313,56 +386,91 @@ bool ResultFile::has_attr(const std::string& object, const std::string& name) co
   return has(object) && H5Aexists_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT) > 0;
 }
 
+namespace {
+
+/// Opens object@name and checks that it holds exactly one value of type class cls (a foreign or damaged
+/// file may hold an array there: reading it into one value would overrun the buffer).
+hid_t open_single_attr(hid_t file, const std::string& path, const std::string& object, const std::string& name,
+                       std::initializer_list<H5T_class_t> classes, const char* what) {
+  const hid_t a = H5Aopen_by_name(file, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+  if (a < 0) fail(fmt::format("'{}': attribute {}@{} cannot be read (damaged file?)", path, object, name));
+  Handle space(H5Aget_space(a), H5Sclose);
+  Handle type(H5Aget_type(a), H5Tclose);
+  const H5T_class_t cls = type < 0 ? H5T_NO_CLASS : H5Tget_class(type);
+  if (space < 0 || H5Sget_simple_extent_npoints(space) != 1 ||
+      std::find(classes.begin(), classes.end(), cls) == classes.end()) {
+    H5Aclose(a);
+    fail(fmt::format("'{}': attribute {}@{} is not {}", path, object, name, what));
+  }
+  return a;
+}
+
+}  // namespace
+
 std::vector<double> ResultFile::dataset(const std::string& name, std::vector<size_t>* shape) const {
   if (!has(name)) fail(fmt::format("'{}' has no dataset {}", path_, name));
   Handle d(H5Dopen2(id_, name.c_str(), H5P_DEFAULT), H5Dclose);
   if (d < 0) fail(fmt::format("'{}': cannot open dataset {}", path_, name));
+  Handle type(H5Dget_type(d), H5Tclose);
+  const H5T_class_t cls = type < 0 ? H5T_NO_CLASS : H5Tget_class(type);
+  if (cls != H5T_FLOAT && cls != H5T_INTEGER) fail(fmt::format("'{}': dataset {} does not hold numbers", path_, name));
   Handle space(H5Dget_space(d), H5Sclose);
-  const int rank = H5Sget_simple_extent_ndims(space);
-  if (rank < 0 || rank > 3) fail(fmt::format("'{}': dataset {} has a bad shape", path_, name));
+  const int rank = space < 0 ? -1 : H5Sget_simple_extent_ndims(space);
+  if (rank < 0 || rank > 4) fail(fmt::format("'{}': dataset {} has a bad shape", path_, name));
   std::vector<hsize_t> dims(static_cast<size_t>(rank));
-  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+  if (rank > 0 && H5Sget_simple_extent_dims(space, dims.data(), nullptr) < 0)
+    fail(fmt::format("'{}': dataset {} has a bad shape", path_, name));
+  // Every value takes storage in the file (ours are not compressed): a shape claiming far more is damage,
+  // and must not become a huge allocation.
+  hsize_t file_size = 0;
+  H5Fget_filesize(id_, &file_size);
+  const size_t limit = std::max<size_t>(size_t(file_size), size_t(1) << 20);
   size_t count = 1;
-  for (auto v : dims) count *= v;
+  for (auto v : dims) {
+    if (v != 0 && count > limit / v) fail(fmt::format("'{}': dataset {} claims more values than the file holds (damaged file?)", path_, name));
+    count *= size_t(v);
+  }
   if (shape) shape->assign(dims.begin(), dims.end());
   std::vector<double> out(count);
   if (count > 0 && H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
-    fail(fmt::format("'{}': dataset {} cannot be read (damaged file?)", path_, name));
+    fail(fmt::format("'{}': dataset {} cannot be read: the file is damaged (checksum or structure)", path_, name));
   return out;
 }
 
 double ResultFile::attr_double(const std::string& object, const std::string& name) const {
   if (!has_attr(object, name)) fail(fmt::format("'{}': {} has no attribute '{}'", path_, object, name));
-  Handle a(H5Aopen_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  Handle a(open_single_attr(id_, path_, object, name, {H5T_FLOAT, H5T_INTEGER}, "a number"), H5Aclose);
   double v = 0.0;
-  if (a < 0 || H5Aread(a, H5T_NATIVE_DOUBLE, &v) < 0)
+  if (H5Aread(a, H5T_NATIVE_DOUBLE, &v) < 0)
     fail(fmt::format("'{}': attribute {}@{} is not a number", path_, object, name));
   return v;
 }
 
 long ResultFile::attr_int(const std::string& object, const std::string& name) const {
   if (!has_attr(object, name)) fail(fmt::format("'{}': {} has no attribute '{}'", path_, object, name));
-  Handle a(H5Aopen_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  Handle a(open_single_attr(id_, path_, object, name, {H5T_INTEGER}, "an integer"), H5Aclose);
   long v = 0;
-  if (a < 0 || H5Aread(a, H5T_NATIVE_LONG, &v) < 0)
+  if (H5Aread(a, H5T_NATIVE_LONG, &v) < 0)
     fail(fmt::format("'{}': attribute {}@{} is not an integer", path_, object, name));
   return v;
 }
 
 std::string ResultFile::attr_string(const std::string& object, const std::string& name) const {
   if (!has_attr(object, name)) fail(fmt::format("'{}': {} has no attribute '{}'", path_, object, name));
-  Handle a(H5Aopen_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  Handle a(open_single_attr(id_, path_, object, name, {H5T_STRING}, "a string"), H5Aclose);
   Handle type(H5Aget_type(a), H5Tclose);
-  if (a < 0 || H5Tget_class(type) != H5T_STRING)
-    fail(fmt::format("'{}': attribute {}@{} is not a string", path_, object, name));
   if (H5Tis_variable_str(type) > 0) {
+    Handle mem(H5Tcopy(H5T_C_S1), H5Tclose);
     char* p = nullptr;
-    if (H5Aread(a, type, &p) < 0 || !p) fail(fmt::format("'{}': cannot read {}@{}", path_, object, name));
+    if (H5Tset_size(mem, H5T_VARIABLE) < 0 || H5Tset_cset(mem, H5Tget_cset(type)) < 0 || H5Aread(a, mem, &p) < 0)
+      fail(fmt::format("'{}': cannot read {}@{}", path_, object, name));
+    if (!p) return "";
     std::string s(p);
     H5free_memory(p);
     return s;
   }
   const size_t n = H5Tget_size(type);
+  if (n == 0 || n > (size_t(64) << 20)) fail(fmt::format("'{}': attribute {}@{} has a bad size", path_, object, name));
   std::string s(n, '\0');
   if (H5Aread(a, type, s.data()) < 0) fail(fmt::format("'{}': cannot read {}@{}", path_, object, name));
   s.resize(std::strlen(s.c_str()));
