@@ -2,6 +2,7 @@
 // Shared helpers for the tests: a case on a chosen grid, solved and post-processed.
 #include <cmath>
 #include <string>
+#include <vector>
 #include "app/run.hpp"
 
 namespace magnus::test {
@@ -31,5 +32,20 @@ inline double observed_order(double e_coarse, double e_fine, double ratio = 2.0)
 
 /// A fresh temporary directory for one test.
 std::string temp_dir(const std::string& name);
+
+/// What one run of the magnus executable returned and printed.
+struct Outcome {
+  int status;
+  std::string out, err;
+};
+
+/// Run the magnus executable with args (each shell-quoted); stdout and stderr go through files in dir.
+Outcome magnus_cmd(const std::vector<std::string>& args, const std::string& dir);
+
+/// A file's bytes.
+std::string slurp(const std::string& path);
+
+/// Number of lines (newlines) in s.
+size_t lines(const std::string& s);
 
 }  // namespace magnus::test

@@ -14,37 +14,14 @@
 #include "tests/support.hpp"
 
 using namespace magnus;
+using test::lines;
+using test::magnus_cmd;
+using test::Outcome;
+using test::slurp;
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Outcome {
-  int status;
-  std::string out, err;
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char ch : s) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-  return q + "'";
-}
-
-Outcome magnus_cmd(const std::vector<std::string>& args, const std::string& dir) {
-  std::string cmd = quote(MAGNUS_EXE);
-  for (const auto& a : args) cmd += " " + quote(a);
-  cmd += " >" + quote(dir + "/stdout.txt") + " 2>" + quote(dir + "/stderr.txt");
-  const int raw = std::system(cmd.c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128, slurp(dir + "/stdout.txt"), slurp(dir + "/stderr.txt")};
-}
-
-size_t lines(const std::string& s) { return size_t(std::count(s.begin(), s.end(), '\n')); }
 
 /// |a − b| relative to max(|a|, |b|, floor): the floor keeps values near zero (α = 0) meaningful.
 double rel_diff(double a, double b, double floor) {
