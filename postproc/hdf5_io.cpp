@@ -91,12 +91,22 @@ void remove_stale_temps(const std::string& path) {
   }
 }
 
+/// Links and attributes stay in the object header (checksummed) however many there are: HDF5's "dense"
+/// storage for more than 8 puts them in a fractal heap without checksums, and HDF5 1.10 can crash on a
+/// damaged one (H5G__dense_iterate frees an uninitialised pointer).
+void keep_compact(hid_t ocpl) {
+  H5Pset_link_phase_change(ocpl, 1024, 1000);  // groups (and the root group through the file's fcpl)
+  H5Pset_attr_phase_change(ocpl, 1024, 1000);
+}
+
 class Writer {
  public:
   explicit Writer(hid_t file) : file_(file) {}
 
   hid_t group(const std::string& name) {
-    hid_t g = H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    Handle gcpl(H5Pcreate(H5P_GROUP_CREATE), H5Pclose);
+    keep_compact(gcpl);
+    hid_t g = H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, gcpl, H5P_DEFAULT);
     if (g < 0) fail("cannot create HDF5 group " + name);
     groups_.push_back(std::make_unique<Handle>(g, H5Gclose));
     return g;
@@ -113,13 +123,16 @@ class Writer {
     check(a < 0 ? -1 : H5Awrite(a, H5T_NATIVE_LONG, &v), std::string("cannot write attribute ") + name);
   }
   void attr(hid_t obj, const char* name, const std::string& v) {
+    // Fixed length, not variable: the text is then stored in the attribute itself, inside the checksummed
+    // object header (variable-length strings live in the global heap, which has no checksum).
+    const std::string text = v.c_str();  // up to the first NUL, as a C string is read back
     Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
-    H5Tset_size(type, H5T_VARIABLE);
+    H5Tset_size(type, text.size() + 1);
+    H5Tset_strpad(type, H5T_STR_NULLTERM);
     H5Tset_cset(type, H5T_CSET_UTF8);
     Handle space(H5Screate(H5S_SCALAR), H5Sclose);
     Handle a(H5Acreate2(obj, name, type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-    const char* p = v.c_str();
-    check(a < 0 ? -1 : H5Awrite(a, type, &p), std::string("cannot write attribute ") + name);
+    check(a < 0 ? -1 : H5Awrite(a, type, text.c_str()), std::string("cannot write attribute ") + name);
   }
   void attr(hid_t obj, const char* name, const char* v) { attr(obj, name, std::string(v)); }
   void attr(hid_t obj, const char* name, const std::optional<double>& v) {
@@ -279,7 +292,12 @@ std::string xdmf_path(const std::string& h5_path) {
 void check_writable(const std::string& path) {
   const std::string dir = dir_of(path);
   if (::access(dir.c_str(), F_OK) != 0) fail(fmt::format("cannot write '{}': directory '{}' does not exist", path, dir));
+  struct stat st;
+  if (::stat(dir.c_str(), &st) == 0 && !S_ISDIR(st.st_mode))
+    fail(fmt::format("cannot write '{}': '{}' is not a directory", path, dir));
   if (::access(dir.c_str(), W_OK) != 0) fail(fmt::format("cannot write '{}': directory '{}' is not writable", path, dir));
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    fail(fmt::format("cannot write '{}': it is a directory", path));
   if (::access(path.c_str(), F_OK) == 0 && ::access(path.c_str(), W_OK) != 0)
     fail(fmt::format("cannot write '{}': the existing file is not writable", path));
 }
@@ -320,8 +338,10 @@ void write_result(const FlowResult& r, const std::string& path) {
       // The 1.10 file format: its metadata (superblock, object headers, chunk indexes) is checksummed.
       Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
       check(H5Pset_libver_bounds(fapl, H5F_LIBVER_V110, H5F_LIBVER_LATEST), "cannot set the HDF5 format");
+      Handle fcpl(H5Pcreate(H5P_FILE_CREATE), H5Pclose);
+      keep_compact(fcpl);
       errno = 0;
-      Handle file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose);
+      Handle file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, fcpl, fapl), H5Fclose);
       if (file < 0) check(-1, fmt::format("cannot create '{}'", tmp));
       write_file(r, file);
       errno = 0;

@@ -14,7 +14,7 @@ seconds="${1:-60}"
 # clang, and the package that ships libclang_rt.fuzzer for it (libclang-rt-14-dev on Debian 12).
 need=()
 command -v clang++ >/dev/null || need+=(clang)
-for p in cmake pkg-config libtomlplusplus-dev libfmt-dev; do
+for p in build-essential cmake pkg-config libtomlplusplus-dev libfmt-dev; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || need+=("$p")
 done
 fuzzer_lib() { find /usr/lib/llvm-*/lib/clang -name 'libclang_rt.fuzzer-x86_64.a' 2>/dev/null | head -n1; }

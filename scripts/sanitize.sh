@@ -12,11 +12,12 @@ export MAGNUS_CMAKE_ARGS="-DMAGNUS_SANITIZE=ON ${MAGNUS_CMAKE_ARGS:-}"
 build="$MAGNUS_BUILD_DIR"
 
 # Every report goes to a log file as well as failing the process: a report from a child process whose
-# exit status a test does not check still fails the run.
+# exit status a test does not check still fails the run. fast_unwind_on_malloc=0: full stacks through the
+# Debian libraries (built without frame pointers), so the suppressions match library-internal functions.
 logs="$build/sanitizer-logs"
 rm -rf "$logs"
 mkdir -p "$logs"
-export ASAN_OPTIONS="halt_on_error=1:abort_on_error=0:detect_leaks=1:detect_stack_use_after_return=1:strict_string_checks=1:check_initialization_order=1:log_path=$logs/asan"
+export ASAN_OPTIONS="halt_on_error=1:abort_on_error=0:detect_leaks=1:fast_unwind_on_malloc=0:detect_stack_use_after_return=1:strict_string_checks=1:check_initialization_order=1:log_path=$logs/asan"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:log_path=$logs/ubsan"
 export LSAN_OPTIONS="suppressions=$here/scripts/lsan.supp:print_suppressions=0"
 
