@@ -14,7 +14,8 @@ struct GridChoice {
 };
 
 /// Choose n_θ and the stencil for c.tolerance > 0 (geometric: 9-point, order 6; uniform: 5-point,
-/// order 2) by doubling until the Richardson estimate |C_L(2n) − C_L(n)|/(2^p − 1) meets the tolerance,
+/// order 2) by doubling until the estimate |C_L(2n) − C_L(n)|/(2^p − 1) + 0.25·ε·n² (Richardson plus
+/// round-off) meets the tolerance,
 /// then shrinking to the n the order predicts if a check against the finer grid confirms it.
 /// Throws std::runtime_error naming grid.tolerance when it cannot be met (freestream floor, round-off).
 GridChoice choose_grid(const Case& c, int threads = 1);

@@ -4,6 +4,7 @@
 #include <fftw3.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <complex>
 #include <cstdlib>
@@ -118,27 +119,32 @@ class FftSolver final : public PsiSolver {
   /// pivot d'_i = T_k(i,i) − T_k(i−1,i)·upper_{i−1}, inv_pivot_ = 1/d'_i, upper_ = T_k(i,i+1)/d'_i.
   /// (The lower factor of a symmetric matrix is upper_ of the ring before.)
   void factor() {
-    inv_pivot_.assign(size_t(L_) * m_, 0.0);
-    upper_.assign(size_t(L_) * m_, 0.0);
+    // Uninitialised: the first touch (and its page faults) happens in the threads that fill them.
+    inv_pivot_.reset(new double[size_t(L_) * m_]);
+    upper_.reset(new double[size_t(L_) * m_]);
     std::vector<double> c2(m_), ext(m_, 0.0);
     for (int k = 0; k < m_; ++k) c2[k] = 2.0 * std::cos(k * op_.d_theta);
     if (op_.far_field == FarField::exact)
       for (int k = 0; k < m_; ++k) ext[k] = op_.exterior(k);
-    bool ok = true;
-    for (int i = 1; i <= L_; ++i) {
-      const RingStencil& s = op_.ring[i];
-      const RingStencil& sp = op_.ring[i - 1];
-      double* p = &inv_pivot_[at(i, 0)];
-      double* u = &upper_[at(i, 0)];
-      const double* up = i > 1 ? &upper_[at(i - 1, 0)] : nullptr;
-      for (int k = 0; k < m_; ++k) {
-        double d = s.a[1] + c2[k] * s.b[1] + (i == L_ ? ext[k] : 0.0);
-        if (up) d -= (sp.a[2] + c2[k] * sp.b[2]) * up[k];
-        p[k] = 1.0 / d;
-        u[k] = (s.a[2] + c2[k] * s.b[2]) * p[k];
-        ok = ok && d > 0.0 && std::isfinite(p[k]);
+    std::atomic<bool> ok{true};
+    parallel_over_modes(m_, threads_, [&](int kb, int ke) {
+      bool good = true;
+      for (int i = 1; i <= L_; ++i) {
+        const RingStencil& s = op_.ring[i];
+        const RingStencil& sp = op_.ring[i - 1];
+        double* p = &inv_pivot_[at(i, 0)];
+        double* u = &upper_[at(i, 0)];
+        const double* up = i > 1 ? &upper_[at(i - 1, 0)] : nullptr;
+        for (int k = kb; k < ke; ++k) {
+          double d = s.a[1] + c2[k] * s.b[1] + (i == L_ ? ext[k] : 0.0);
+          if (up) d -= (sp.a[2] + c2[k] * sp.b[2]) * up[k];
+          p[k] = 1.0 / d;
+          u[k] = (s.a[2] + c2[k] * s.b[2]) * p[k];
+          good = good && d > 0.0 && std::isfinite(p[k]);
+        }
       }
-    }
+      if (!good) ok = false;
+    });
     if (!ok) throw std::runtime_error("FFT path: a mode's tridiagonal system is not positive definite");
     if (op_.far_field == FarField::freestream) {
       const double w = op_.w[L_];
@@ -195,7 +201,7 @@ class FftSolver final : public PsiSolver {
 
   int threads_;
   int n_, m_, L_;
-  std::vector<double> inv_pivot_, upper_;
+  std::unique_ptr<double[]> inv_pivot_, upper_;  ///< [i][k], rings 1…L × modes 0…n/2
   double off_c_ = 0.0, lower_c_ = 0.0, inv_pivot_c_ = 0.0;
   FftwBuffer<cplx> spec_;
   FftwBuffer<double> ring_real_;
