@@ -159,6 +159,20 @@ Case point_template(const Case& c, SweepVariable variable, int threads, std::str
 
 }  // namespace
 
+namespace {
+/// Sweep the point cases and record the case as asked, with the grid and stencil that ran.
+SweepResult finish_sweep(const Case& c, const Case& t, const std::vector<Case>& cases, SweepVariable v, int threads,
+                         const std::string& choice) {
+  SweepResult s = sweep_cases(t, cases, v, threads);
+  s.base = c;  // with its TOML text
+  s.base.n_theta = t.n_theta;
+  s.base.n_r = t.n_r;
+  s.base.stencil = t.stencil;
+  s.grid_choice = choice;
+  return s;
+}
+}  // namespace
+
 SweepResult sweep_spin_ratio(const Case& c, const std::vector<double>& alphas, int threads) {
   if (!(c.speed > 0.0))
     throw std::invalid_argument("a spin-ratio sweep needs flow.speed > 0: with U = 0 the spin ratio α = aω/U is undefined");
@@ -175,13 +189,7 @@ SweepResult sweep_spin_ratio(const Case& c, const std::vector<double>& alphas, i
     p.spin_given_as_ratio = true;
     cases.push_back(std::move(p));
   }
-  SweepResult s = sweep_cases(t, cases, SweepVariable::spin_ratio, threads);
-  s.base = c;  // with its TOML text, and the grid and stencil that ran
-  s.base.n_theta = t.n_theta;
-  s.base.n_r = t.n_r;
-  s.base.stencil = t.stencil;
-  s.grid_choice = choice;
-  return s;
+  return finish_sweep(c, t, cases, SweepVariable::spin_ratio, threads, choice);
 }
 
 SweepResult sweep_circulation(const Case& c, const std::vector<double>& circulations, int threads) {
@@ -199,13 +207,7 @@ SweepResult sweep_circulation(const Case& c, const std::vector<double>& circulat
     p.circulation_value = g;
     cases.push_back(std::move(p));
   }
-  SweepResult s = sweep_cases(t, cases, SweepVariable::circulation, threads);
-  s.base = c;  // with its TOML text, and the grid and stencil that ran
-  s.base.n_theta = t.n_theta;
-  s.base.n_r = t.n_r;
-  s.base.stencil = t.stencil;
-  s.grid_choice = choice;
-  return s;
+  return finish_sweep(c, t, cases, SweepVariable::circulation, threads, choice);
 }
 
 // ---------------------------------------------------------------------------------------------

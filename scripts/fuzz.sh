@@ -12,30 +12,10 @@ seconds="${1:-60}"
 [[ "$seconds" =~ ^[0-9]+$ ]] || { echo "usage: scripts/fuzz.sh [SECONDS]" >&2; exit 2; }
 
 # clang, and the package that ships libclang_rt.fuzzer for it (libclang-rt-14-dev on Debian 12).
-need=()
-command -v clang++ >/dev/null || need+=(clang)
-for p in build-essential cmake pkg-config libtomlplusplus-dev libfmt-dev; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || need+=("$p")
-done
-fuzzer_lib() { find /usr/lib/llvm-*/lib/clang -name 'libclang_rt.fuzzer-x86_64.a' 2>/dev/null | head -n1; }
-if [ -z "$(fuzzer_lib)" ]; then
-  if command -v clang++ >/dev/null; then
-    major="$(clang++ -dumpversion | cut -d. -f1)"
-    need+=("libclang-rt-${major}-dev")
-  else
-    need+=(libclang-rt-14-dev)
-  fi
-fi
-if [ ${#need[@]} -gt 0 ]; then
-  echo "fuzz: installing ${need[*]}" >&2
-  sudo=""
-  if [ "$(id -u)" -ne 0 ]; then
-    command -v sudo >/dev/null || { echo "fuzz: need root or sudo to install: ${need[*]}" >&2; exit 1; }
-    sudo="sudo"
-  fi
-  $sudo apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${need[@]}" >&2
-fi
+source "$here/scripts/install-packages.sh"
+rt="libclang-rt-14-dev"
+command -v clang++ >/dev/null && rt="libclang-rt-$(clang++ -dumpversion | cut -d. -f1)-dev"
+install_packages fuzz clang "$rt" build-essential cmake pkg-config libtomlplusplus-dev libfmt-dev
 
 cmake -S "$here" -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_C_COMPILER=clang \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMAGNUS_FUZZ=ON >/dev/null

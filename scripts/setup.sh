@@ -8,20 +8,8 @@ build="${MAGNUS_BUILD_DIR:-$here/build}"
 packages=(build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev libopenblas0-pthread
           libhdf5-dev hdf5-tools catch2 libfftw3-dev libtomlplusplus-dev libcli11-dev libfmt-dev
           libplplot-dev plplot-driver-cairo)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  echo "setup: installing ${missing[*]}" >&2
-  sudo=""
-  if [ "$(id -u)" -ne 0 ]; then
-    command -v sudo >/dev/null || { echo "setup: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
-    sudo="sudo"
-  fi
-  $sudo apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
-fi
+source "$here/scripts/install-packages.sh"
+install_packages setup "${packages[@]}"
 
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE="${MAGNUS_BUILD_TYPE:-Release}" ${MAGNUS_CMAKE_ARGS:-} >/dev/null
 cmake --build "$build" -j "$(nproc)" >&2

@@ -11,10 +11,7 @@
 #include "tests/support.hpp"
 
 using namespace magnus;
-using test::lines;
-using test::magnus_cmd;
-using test::Outcome;
-using test::slurp;
+using namespace magnus::test;
 namespace fs = std::filesystem;
 
 namespace {
