@@ -380,7 +380,6 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
     if (c.speed == 0.0 && alpha != 0.0)
       r.fail("cylinder.spin_ratio", "needs flow.speed > 0 (alpha = a*omega/U); give cylinder.spin instead");
     c.spin = alpha * c.speed / c.radius;
-    c.spin_given_as_ratio = true;
   } else {
     c.spin = r.number("cylinder", "spin", c.spin, any, "finite (rad/s)");
   }

@@ -186,7 +186,6 @@ SweepResult sweep_spin_ratio(const Case& c, const std::vector<double>& alphas, i
   for (double alpha : alphas) {
     Case p = t;
     p.spin = alpha * c.speed / c.radius;
-    p.spin_given_as_ratio = true;
     cases.push_back(std::move(p));
   }
   return finish_sweep(c, t, cases, SweepVariable::spin_ratio, threads, choice);

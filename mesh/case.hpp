@@ -16,7 +16,6 @@ struct Case {
   std::string title = "Spinning cylinder";
   double radius = 0.1;          ///< a, m
   double spin = 100.0;          ///< ω, rad/s, CCW positive
-  bool spin_given_as_ratio = false;
   double speed = 10.0;          ///< U, m/s, towards +x
   double density = 1.225;       ///< ρ, kg/m^3
   double pressure_inf = 0.0;    ///< p∞, Pa

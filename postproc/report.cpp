@@ -54,7 +54,7 @@ std::string summary_text(const FlowResult& r, const std::string& output_path) {
   if (!r.info.grid_choice.empty()) line("", r.info.grid_choice);
   line("solver", fmt::format("{}, {} stencil, {} thread{}", r.info.method, to_string(c.stencil), r.info.threads,
                              r.info.threads == 1 ? "" : "s"));
-  line("timing", fmt::format("assemble {}, factor {}, solve {}, post-process {}; total {}", ms(r.timing.assemble_s),
+  line("timing", fmt::format("assemble {}, factor {}, solve {} (ψ_U and ψ_Γ), post-process {}; total {}", ms(r.timing.assemble_s),
                              ms(r.timing.factor_s), ms(r.timing.solve_s), ms(r.timing.postproc_s),
                              ms(r.timing.total_s)));
   s += "\n";
