@@ -468,10 +468,12 @@ std::string to_toml(const Case& c) {
   t += fmt::format("\n[circulation]\nmodel = {}\n", str(c.circulation_given ? "given" : "spin"));
   if (c.circulation_given) t += fmt::format("value = {}\n", num(c.circulation_value));
   t += fmt::format("\n[domain]\nouter_radius = {}\nfar_field = {}\n", num(c.outer_radius), str(to_string(c.far_field)));
-  t += fmt::format("\n[grid]\nn_theta = {}\nspacing = {}\n", c.n_theta, str(to_string(c.spacing)));
+  // With a tolerance the grid and stencil are chosen at run time (and stored in /parameters).
+  t += fmt::format("\n[grid]\nspacing = {}\n", str(to_string(c.spacing)));
   if (c.tolerance > 0.0) t += fmt::format("tolerance = {}\n", num(c.tolerance));
-  else t += fmt::format("n_r = {}\n", c.n_r);
-  t += fmt::format("\n[solver]\nmethod = {}\nstencil = {}\n", str(to_string(c.method)), str(to_string(c.stencil)));
+  else t += fmt::format("n_theta = {}\nn_r = {}\n", c.n_theta, c.n_r);
+  t += fmt::format("\n[solver]\nmethod = {}\n", str(to_string(c.method)));
+  if (c.tolerance == 0.0) t += fmt::format("stencil = {}\n", str(to_string(c.stencil)));
   t += fmt::format("\n[output]\nfile = {}\n", str(c.output_file));
   if (c.output_fields) {
     std::string list;

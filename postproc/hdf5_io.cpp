@@ -184,7 +184,8 @@ void write_file(const FlowResult& r, hid_t file) {
   hid_t p = w.group("/parameters");
   w.attr(p, "radius", c.radius);
   w.attr(p, "spin", c.spin);
-  w.attr(p, "spin_ratio", c.spin_ratio());
+  if (c.speed > 0.0) w.attr(p, "spin_ratio", c.spin_ratio());
+  else w.attr(p, "undefined", "spin_ratio (U = 0)");
   w.attr(p, "speed", c.speed);
   w.attr(p, "density", c.density);
   w.attr(p, "pressure_inf", c.pressure_inf);

@@ -37,11 +37,14 @@ RingStencil nine_point(double dxi, double d_theta) {
   return st;
 }
 
-/// Decaying root of off·μ² + diag·μ + off = 0 (|μ| < 1), stable form μ = 2/(D + √(D²−4)), D = −diag/off.
+/// Decaying root of off·μ² + diag·μ + off = 0 (|μ| < 1), D = −diag/off, in the stable form
+/// μ = 2/(D ± √(D²−4)): positive for D > 2; negative (alternating) for D < −2, which the 9-point stencil's
+/// high modes reach on cells with Δξ/Δθ > √2. |D| ≤ 2 only for mode 0 (μ = 1).
 double decaying_root(double diag, double off) {
   const double D = -diag / off;
-  if (D <= 2.0) return 1.0;
-  return 2.0 / (D + std::sqrt((D - 2.0) * (D + 2.0)));
+  if (D > 2.0) return 2.0 / (D + std::sqrt((D - 2.0) * (D + 2.0)));
+  if (D < -2.0) return 2.0 / (D - std::sqrt((D - 2.0) * (D + 2.0)));
+  return 1.0;
 }
 
 }  // namespace

@@ -46,6 +46,11 @@ TEST_CASE("grid.tolerance: impossible or conflicting requests fail with one line
                       Contains("grid.tolerance") && Contains("grid.n_theta"));
   REQUIRE_THROWS_WITH(parse_case("[grid]\ntolerance = 1e-8\n[solver]\nstencil = \"5-point\"\n", "t.toml"),
                       Contains("solver.stencil"));
+  // The resolved case of a tolerance run can be run again: the chosen grid is not written into it.
+  Case t = test::make_case(1.0, 64);
+  t.tolerance = 1e-8;
+  const Case back = parse_case(to_toml(t), "resolved.toml");
+  REQUIRE(back.tolerance == 1e-8);
   // On the command line a tolerance supersedes the file's grid.
   const Case d = parse_case("[grid]\nn_theta = 64\n", "t.toml", {"grid.tolerance=1e-8"});
   REQUIRE(d.tolerance == 1e-8);

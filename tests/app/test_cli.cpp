@@ -167,6 +167,11 @@ TEST_CASE("every shipped case runs and meets the expected figures beside it", "[
           for (const auto& d : *deg) found = found || near(pts[2 * k + 1] * 180 / M_PI, *d.value<double>());
           REQUIRE(found);
         }
+        for (const auto& d : *deg) {
+          bool found = false;
+          for (size_t k = 0; k < shape[0]; ++k) found = found || near(pts[2 * k + 1] * 180 / M_PI, *d.value<double>());
+          REQUIRE(found);
+        }
         if (auto rs = ex["stagnation_free_r_over_a"].value<double>()) {
           REQUIRE(shape[0] == 1);
           const double a = f.attr_double("/parameters", "radius");

@@ -149,6 +149,12 @@ TEST_CASE("pure rotation (U = 0): zero force, undefined coefficients, no divisio
   REQUIRE(r.surface.cp.empty());
   REQUIRE(std::fabs(r.forces.lift) < 1e-12);
   REQUIRE(std::fabs(r.forces.drag) < 1e-12);
+  // The same from the combined ψ (mean-subtracted, not the U-proportional split): round-off only,
+  // relative to the surface dynamic pressure ½ρ(Γ/2πa)² over the diameter.
+  const Forces direct = compute_forces(c, compute_surface(r.grid, c, r.fields.psi, derivative_order(c.stencil)));
+  const double u = c.circulation() / (2 * M_PI * c.radius);
+  REQUIRE(std::fabs(direct.lift) < 1e-12 * c.density * u * u * c.radius);
+  REQUIRE(std::fabs(direct.drag) < 1e-12 * c.density * u * u * c.radius);
   REQUIRE(r.forces.circulation_measured == Approx(c.circulation()).epsilon(1e-10));
   REQUIRE(r.errors.psi_max_rel < 1e-12);  // ln r is exact on any grid
   REQUIRE(r.stagnation.empty());
