@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -438,10 +439,14 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
 }
 
 Case load_case(const std::string& path, const std::vector<std::string>& overrides) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw CaseError(fmt::format("cannot read case file '{}': not a regular file", path));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw CaseError(fmt::format("cannot read case file '{}': {}", path, std::strerror(errno)));
   std::ostringstream ss;
   ss << in.rdbuf();
+  if (in.bad()) throw CaseError(fmt::format("cannot read case file '{}': read error", path));
   return parse_case(ss.str(), path, overrides);
 }
 

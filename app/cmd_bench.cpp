@@ -33,7 +33,8 @@ void add_bench_command(CLI::App& app) {
       ->check(CLI::IsMember({"cholmod", "fft"}));
   b->add_option("--stencil", o->stencils, "5-point and/or 9-point (default both)")->delimiter(',')
       ->check(CLI::IsMember({"5-point", "9-point"}));
-  b->add_option("--cholmod-max-unknowns", o->cholmod_max, "skip larger CHOLMOD rungs (default 300000)");
+  b->add_option("--cholmod-max-unknowns", o->cholmod_max, "skip larger CHOLMOD rungs (default 300000)")
+      ->check(CLI::Range(1L, 1L << 40));
   b->add_option("--threads", o->threads, "threads for the solver")->check(CLI::Range(1, 64));
   b->add_option("--csv", o->csv, "write the table as CSV");
   b->add_option("--plot", o->plot, "write a log-log PNG of C_L error against time (the Pareto front)");
@@ -55,6 +56,7 @@ void add_bench_command(CLI::App& app) {
     opt.repeats = o->repeats;
     opt.threads = o->threads;
     opt.cholmod_max_unknowns = o->cholmod_max;
+    check_distinct_paths({o->case_path}, {o->csv, o->plot});
     if (!o->csv.empty()) check_writable(o->csv);
     if (!o->plot.empty()) check_writable(o->plot);
     const bool tty = ::isatty(2);
@@ -63,6 +65,9 @@ void add_bench_command(CLI::App& app) {
     };
     const auto rows = run_bench(c, opt, progress);
     if (tty) std::fprintf(stderr, "\r\033[K");
+    if (rows.empty())
+      throw std::runtime_error("bench: no rung ran (the 9-point stencil needs geometric spacing, or every CHOLMOD "
+                               "rung is above --cholmod-max-unknowns)");
     std::printf("magnus bench — %s (α = %.6g, far field %s, %d thread%s, median of %d)\n", c.title.c_str(),
                 c.spin_ratio(), to_string(c.far_field), opt.threads, opt.threads == 1 ? "" : "s", opt.repeats);
     std::fputs(bench_table(rows).c_str(), stdout);

@@ -228,6 +228,7 @@ Comparison compare_results(const std::vector<std::string>& paths) {
 }
 
 void command_compare(const std::vector<std::string>& paths, const std::string& csv) {
+  check_distinct_paths(paths, {csv});
   if (!csv.empty()) check_writable(csv);
   const Comparison c = compare_results(paths);
   if (!csv.empty()) write_text_atomic(csv, c.csv);

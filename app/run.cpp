@@ -61,7 +61,10 @@ void command_run(const std::string& case_path, const std::string& output, const 
     c.output_file = output;
     c.source_text = to_toml(c);
   }
-  check_writable(c.output_file);  // fail before solving, not after
+  // Fail before solving, not after: the result, its sidecar, and neither overwriting the case.
+  check_distinct_paths({case_path}, {c.output_file, xdmf_path(c.output_file)});
+  check_writable(c.output_file);
+  check_writable(xdmf_path(c.output_file));
   FlowResult r = run_case(c, threads, max_bytes);
   write_result(r, c.output_file);
   if (!quiet) std::fputs(summary_text(r, c.output_file).c_str(), stdout);

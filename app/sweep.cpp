@@ -535,6 +535,7 @@ void command_sweep(const SweepOptions& o) {
   const PlotSize size = o.size.empty() ? PlotSize{} : parse_plot_size(o.size);
   Case c = load_case(o.case_path, o.sets);
   // Fail before solving, not after.
+  check_distinct_paths({o.case_path}, {o.csv, o.output, o.plot});
   for (const std::string* p : {&o.csv, &o.output, &o.plot})
     if (!p->empty()) check_writable(*p);
   const SweepResult s =

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
@@ -301,6 +302,25 @@ void check_writable(const std::string& path) {
     fail(fmt::format("cannot write '{}': it is a directory", path));
   if (::access(path.c_str(), F_OK) == 0 && ::access(path.c_str(), W_OK) != 0)
     fail(fmt::format("cannot write '{}': the existing file is not writable", path));
+}
+
+void check_distinct_paths(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs) {
+  namespace fs = std::filesystem;
+  auto key = [](const std::string& p) {
+    std::error_code ec;
+    const fs::path c = fs::weakly_canonical(fs::path(p), ec);
+    return ec ? fs::absolute(p).lexically_normal().string() : c.string();
+  };
+  for (size_t i = 0; i < outputs.size(); ++i) {
+    if (outputs[i].empty()) continue;
+    const std::string o = key(outputs[i]);
+    for (const auto& in : inputs)
+      if (!in.empty() && key(in) == o)
+        fail(fmt::format("cannot write '{}': it would overwrite the input '{}'", outputs[i], in));
+    for (size_t j = 0; j < i; ++j)
+      if (!outputs[j].empty() && key(outputs[j]) == o)
+        fail(fmt::format("cannot write '{}': another output of this command has the same name", outputs[i]));
+  }
 }
 
 namespace {

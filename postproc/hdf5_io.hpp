@@ -18,6 +18,9 @@ std::string xdmf_path(const std::string& h5_path);
 /// Check that path can be written (its directory exists and is writable); throws one line if not.
 void check_writable(const std::string& path);
 
+/// Refuse an output path that names an input or another output (one line naming both); "" is skipped.
+void check_distinct_paths(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs);
+
 /// Write text to path atomically (temporary name beside it, then rename).
 void write_text_atomic(const std::string& path, const std::string& text);
 

@@ -181,3 +181,41 @@ TEST_CASE("every shipped case runs and meets the expected figures beside it", "[
     }
   }
 }
+
+TEST_CASE("outputs never overwrite inputs, each other or a directory; a directory is not a case file", "[app][cli]") {
+  const std::string dir = test::temp_dir("cli-clobber");
+  std::ofstream(dir + "/case.toml") << "[grid]\nn_theta = 16\n";
+  std::ofstream(dir + "/keep.xmf") << "KEEP";
+  fs::create_directory(dir + "/r.xmf");
+  struct Bad {
+    std::vector<std::string> args;
+    const char* needle;
+  };
+  const std::vector<Bad> bad = {
+      {{"run", dir + "/case.toml", "-o", dir + "/keep.xmf"}, "same name"},         // result = its own sidecar
+      {{"run", dir + "/case.toml", "-o", dir + "/r.h5"}, "is a directory"},        // sidecar r.xmf is a directory
+      {{"run", dir + "/case.toml", "-o", dir + "/case.toml"}, "overwrite the input"},
+      {{"run", dir}, "not a regular file"},
+      {{"sweep", dir + "/case.toml", "--spin-ratio", "0:1:0.5", "--csv", dir + "/case.toml"}, "overwrite the input"},
+      {{"sweep", dir + "/case.toml", "--spin-ratio", "0:1:0.5", "--csv", dir + "/s.out", "-o", dir + "/s.out"},
+       "same name"},
+      {{"bench", dir + "/case.toml", "--ladder", "16", "--csv", dir + "/case.toml"}, "overwrite the input"},
+  };
+  for (const auto& b : bad) {
+    const Outcome o = magnus_cmd(b.args, dir);
+    CAPTURE(b.args, o.err);
+    REQUIRE(o.status != 0);
+    REQUIRE(lines(o.err) == 1);
+    REQUIRE(o.err.find(b.needle) != std::string::npos);
+  }
+  REQUIRE(slurp(dir + "/keep.xmf") == "KEEP");
+  REQUIRE(slurp(dir + "/case.toml") == "[grid]\nn_theta = 16\n");
+  REQUIRE(stray_files(dir, {"case.toml", "keep.xmf", "r.xmf"}).empty());
+  // compare --csv onto one of its inputs
+  REQUIRE(magnus_cmd({"run", dir + "/case.toml", "-o", dir + "/a.h5", "-q"}, dir).status == 0);
+  const std::string before = slurp(dir + "/a.h5");
+  const Outcome o = magnus_cmd({"compare", dir + "/a.h5", "--csv", dir + "/a.h5"}, dir);
+  REQUIRE(o.status != 0);
+  REQUIRE(o.err.find("overwrite the input") != std::string::npos);
+  REQUIRE(slurp(dir + "/a.h5") == before);
+}
