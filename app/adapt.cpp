@@ -7,6 +7,7 @@
 
 #include "postproc/forces.hpp"
 #include "solver/flow_solver.hpp"
+#include "solver/memory.hpp"
 
 namespace magnus {
 
@@ -16,6 +17,7 @@ namespace {
 double lift_coefficient(Case c, int n_theta, int threads) {
   c.n_theta = n_theta;
   c.n_r = 0;
+  check_case_memory(c, c.method == Method::cholmod ? Method::cholmod : Method::fft, 0, 0);
   const PolarGrid g = make_grid(c);
   const DiscreteOperator op = make_operator(g, c.stencil, c.far_field);
   const auto solver = make_solver(g, op, c.method, threads);

@@ -7,6 +7,7 @@
 
 #include "postproc/forces.hpp"
 #include "solver/flow_solver.hpp"
+#include "solver/memory.hpp"
 
 namespace magnus {
 
@@ -27,6 +28,7 @@ BenchRow run_rung(const Case& c, const BenchOptions& opt) {
   const int repeats = std::max(1, opt.repeats);
   for (int rep = 0; rep < repeats; ++rep) {
     const double t0 = now_s();
+    if (rep == 0) check_case_memory(c, c.method, 0, 0);
     const PolarGrid grid = make_grid(c);
     const DiscreteOperator op = make_operator(grid, c.stencil, c.far_field);
     const double t1 = now_s();
@@ -83,8 +85,8 @@ std::vector<BenchRow> run_bench(const Case& base, const BenchOptions& opt,
         c.n_theta = n;
         c.n_r = 0;
         c.output_fields = std::vector<std::string>{};
-        const PolarGrid g = make_grid(c);
-        const long unknowns = long(g.n_r) * g.n_theta;
+        const GridShape g = grid_shape(c);
+        const long unknowns = g.n_r * g.n_theta;
         if (m == Method::cholmod && unknowns > opt.cholmod_max_unknowns) continue;
         if (progress)
           progress(fmt::format("bench {}/{}: {} {} n_θ = {} ({} unknowns)", done, total, to_string(m),

@@ -24,17 +24,15 @@ FlowResult run_case(const Case& requested, int threads, size_t max_bytes) {
     c.stencil = choice.stencil;
   }
   const double t_choice = now_s() - t0;
+  const FieldSelection sel = select_fields(c.output_fields);
+  int fields = 0;
+  for (bool on : sel.on) fields += on;
+  check_case_memory(c, c.method == Method::cholmod ? Method::cholmod : Method::fft, fields, max_bytes);
   const PolarGrid grid = make_grid(c);                                      // make grid
   const double t_op = now_s();
   const DiscreteOperator op = make_operator(grid, c.stencil, c.far_field);  // stencils and closures
   const double op_s = now_s() - t_op;
-  const FieldSelection sel = select_fields(c.output_fields);
   const Method method = resolve_method(c.method, op);
-  int fields = 0;
-  for (bool on : sel.on) fields += on;
-  check_memory(solver_bytes(op, method) + field_bytes(op, fields), max_bytes,
-               fmt::format("the {} solve on {} × {} with {} field{}", to_string(method), grid.n_theta, grid.n_r,
-                           fields, fields == 1 ? "" : "s"));
   const auto solver = make_solver(grid, op, method, threads, max_bytes);     // assemble and factor
   const PsiBasis basis = solve_basis(*solver);                              // solve ψ_U, ψ_Γ
   const double t1 = now_s();

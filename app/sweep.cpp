@@ -21,6 +21,7 @@
 #include "postproc/hdf5_io.hpp"
 #include "postproc/plot.hpp"
 #include "solver/flow_solver.hpp"
+#include "solver/memory.hpp"
 
 namespace magnus {
 
@@ -105,6 +106,7 @@ SweepResult sweep_cases(const Case& base, const std::vector<Case>& cases, SweepV
   SweepResult s;
   s.base = base;
   s.variable = variable;
+  check_case_memory(base, base.method == Method::cholmod ? Method::cholmod : Method::fft, 0, 0);
   s.grid = make_grid(base);
   const DiscreteOperator op = make_operator(s.grid, base.stencil, base.far_field);
   CountingSolver solver(s.grid, make_solver(s.grid, op, base.method, std::max(1, threads)));

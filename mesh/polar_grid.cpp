@@ -22,7 +22,7 @@ const char* to_string(StencilKind s) { return s == StencilKind::five_point ? "5-
 int default_n_r(Spacing spacing, double outer_over_a, int n_theta) {
   const double d_theta = 2.0 * M_PI / n_theta;
   const double span = spacing == Spacing::geometric ? std::log(outer_over_a) : outer_over_a - 1.0;
-  return std::max(3, int(std::lround(span / d_theta)) + 1);
+  return int(std::min<long>(std::max(3L, std::lround(span / d_theta) + 1), 1L << 30));
 }
 
 PolarGrid make_grid(double a, double outer_over_a, int n_r, int n_theta, Spacing spacing) {
@@ -54,15 +54,29 @@ PolarGrid make_grid(double a, double outer_over_a, int n_r, int n_theta, Spacing
   return g;
 }
 
-PolarGrid make_grid(const Case& c) {
-  if (c.n_r == 0 && c.spacing == Spacing::geometric) {
+GridShape grid_shape(const Case& c) {
+  const double d_theta = 2.0 * M_PI / c.n_theta;
+  GridShape s;
+  s.n_theta = c.n_theta;
+  s.outer_over_a = c.outer_radius;
+  if (c.n_r > 0) {
+    s.n_r = c.n_r;
+  } else if (c.spacing == Spacing::geometric) {
     // Square cells exactly: whole cells of Δξ = Δθ, R rounded up to the next one.
-    const double d_theta = 2.0 * M_PI / c.n_theta;
-    const int cells = std::max(2, int(std::ceil(std::log(c.outer_radius) / d_theta - 1e-9)));
-    return make_grid(c.radius, std::exp(cells * d_theta), cells + 1, c.n_theta, c.spacing);
+    const long cells = std::max(2L, long(std::ceil(std::log(c.outer_radius) / d_theta - 1e-9)));
+    s.n_r = cells + 1;
+    s.outer_over_a = std::exp(double(cells) * d_theta);
+  } else {
+    s.n_r = std::max(3L, std::lround((c.outer_radius - 1.0) / d_theta) + 1);
   }
-  const int n_r = c.n_r > 0 ? c.n_r : default_n_r(c.spacing, c.outer_radius, c.n_theta);
-  return make_grid(c.radius, c.outer_radius, n_r, c.n_theta, c.spacing);
+  return s;
+}
+
+PolarGrid make_grid(const Case& c) {
+  const GridShape s = grid_shape(c);
+  if (s.n_r > (1L << 24))
+    throw std::invalid_argument("make_grid: " + std::to_string(s.n_r) + " rings is more than magnus builds (2^24)");
+  return make_grid(c.radius, s.outer_over_a, int(s.n_r), c.n_theta, c.spacing);
 }
 
 }  // namespace magnus

@@ -1,5 +1,7 @@
 #include "solver/memory.hpp"
 
+#include "mesh/polar_grid.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -9,17 +11,30 @@
 namespace magnus {
 
 size_t solver_bytes(const DiscreteOperator& op, Method method) {
-  const double n = op.n_theta, N = double(op.unknowns()), L = op.last_ring(), m = n / 2 + 1;
-  if (method == Method::fft) return size_t(8.0 * 2 * L * m + 16.0 * L * m + 64.0 * n);
-  const bool exact = op.far_field == FarField::exact;
-  const double nnz_a = (op.stencil == StencilKind::nine_point ? 5.0 : 3.0) * N + (exact ? n * n / 2 : 1.0);
+  return solver_bytes(op.n_r, op.n_theta, op.far_field, op.stencil, method);
+}
+
+size_t solver_bytes(double n_r, double n, FarField far_field, StencilKind stencil, Method method) {
+  const bool exact = far_field == FarField::exact;
+  const double L = exact ? n_r - 1 : n_r - 2, N = L * n + (exact ? 0 : 1), m = n / 2 + 1;
+  if (method == Method::fft) return size_t(std::min(8.0 * 2 * L * m + 16.0 * L * m + 64.0 * n, 1e19));
+  const double nnz_a = (stencil == StencilKind::nine_point ? 5.0 : 3.0) * N + (exact ? n * n / 2 : 1.0);
   const double triplets = 24.0 * nnz_a, matrix = 16.0 * nnz_a;
   const double fill = 4.0 * N * std::log2(std::max(N, 2.0)) + (exact ? n * n / 2 : 0.0);
-  return size_t(triplets + matrix + 10.0 * fill + 64.0 * N);
+  return size_t(std::min(triplets + matrix + 10.0 * fill + 64.0 * N, 1e19));
 }
 
 size_t field_bytes(const DiscreteOperator& op, int fields) {
   return size_t(8.0 * op.n_r * op.n_theta * (4 + fields));
+}
+
+void check_case_memory(const Case& c, Method method, int fields, size_t limit) {
+  const GridShape s = grid_shape(c);
+  const double nr = double(s.n_r), n = double(s.n_theta);
+  const double bytes = double(solver_bytes(nr, n, c.far_field, c.stencil, method)) + 8.0 * nr * n * (4 + fields);
+  check_memory(size_t(std::min(bytes, 1e19)), limit,
+               "the " + std::string(to_string(method)) + " solve on " + std::to_string(s.n_theta) + " × " +
+                   std::to_string(s.n_r) + " with " + std::to_string(fields) + (fields == 1 ? " field" : " fields"));
 }
 
 size_t available_bytes() {

@@ -10,6 +10,8 @@ namespace magnus {
 /// spectrum (1 complex); CHOLMOD: the matrix, its assembly triplets and the factor's fill-in,
 /// estimated as 4·N·log₂N (nested dissection on a 2D grid; measured 3.1) plus the dense outer ring n²/2.
 size_t solver_bytes(const DiscreteOperator& op, Method method);
+/// The same from the shape: rings, n_θ, the far field and the stencil.
+size_t solver_bytes(double n_r, double n_theta, FarField far_field, StencilKind stencil, Method method);
 
 /// Bytes of the ψ-sized arrays a run holds besides the solver: ψ_U, ψ_Γ, ψ, the exact ψ for the error
 /// norms and `fields` selected fields (n_r·n_θ doubles each).
@@ -26,5 +28,9 @@ std::string format_bytes(size_t bytes);
 
 /// Throws std::runtime_error with the estimate if `needed` exceeds `limit` (0: available_bytes()).
 void check_memory(size_t needed, size_t limit, const std::string& what);
+
+/// The memory guard for a case, before anything is built: solver_bytes + field_bytes from the grid's
+/// shape alone. Throws naming the estimate, the grid and the method.
+void check_case_memory(const Case& c, Method method, int fields, size_t limit);
 
 }  // namespace magnus

@@ -41,3 +41,17 @@ TEST_CASE("memory estimates bound the CHOLMOD factor the analysis finds", "[solv
     REQUIRE(solver_bytes(op, Method::fft) < estimate);
   }
 }
+
+TEST_CASE("memory guard: the grid's shape alone, before anything is built, on every path that solves", "[solver][memory]") {
+  Case c = test::make_case(1.0, 256);
+  c.spacing = Spacing::uniform;
+  c.outer_radius = 1e12;  // 4e13 rings: more than an int, refused from the shape
+  const GridShape s = grid_shape(c);
+  REQUIRE(s.n_r > (1L << 40));
+  REQUIRE_THROWS_WITH(run_case(c), Catch::Contains("needs about") && Catch::Contains("GiB"));
+  c = test::make_case(1.0, 65536);  // 65536 × 31249: about 90 GiB for the FFT path
+  REQUIRE_THROWS_WITH(check_case_memory(c, Method::fft, 0, 0), Catch::Contains("fft solve on 65536"));
+  c.tolerance = 1e-8;
+  c.n_theta = 256;
+  REQUIRE_NOTHROW(check_case_memory(c, Method::fft, 9, 0));
+}
