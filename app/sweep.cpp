@@ -358,92 +358,46 @@ std::string sweep_csv(const SweepResult& s) {
 
 namespace {
 
-struct H5Closer {
-  hid_t id;
-  herr_t (*close)(hid_t);
-  ~H5Closer() {
-    if (id >= 0) close(id);
-  }
-};
-
-void h5_check(bool ok, const std::string& what) {
-  if (!ok) throw std::runtime_error(what);
-}
-
-void h5_attr(hid_t obj, const char* name, double v) {
-  H5Closer space{H5Screate(H5S_SCALAR), H5Sclose};
-  H5Closer a{H5Acreate2(obj, name, H5T_NATIVE_DOUBLE, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
-  h5_check(a.id >= 0 && H5Awrite(a.id, H5T_NATIVE_DOUBLE, &v) >= 0, std::string("cannot write attribute ") + name);
-}
-void h5_attr(hid_t obj, const char* name, long v) {
-  H5Closer space{H5Screate(H5S_SCALAR), H5Sclose};
-  H5Closer a{H5Acreate2(obj, name, H5T_NATIVE_LONG, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
-  h5_check(a.id >= 0 && H5Awrite(a.id, H5T_NATIVE_LONG, &v) >= 0, std::string("cannot write attribute ") + name);
-}
-void h5_attr(hid_t obj, const char* name, const std::string& v) {
-  H5Closer type{H5Tcopy(H5T_C_S1), H5Tclose};
-  H5Tset_size(type.id, H5T_VARIABLE);
-  H5Tset_cset(type.id, H5T_CSET_UTF8);
-  H5Closer space{H5Screate(H5S_SCALAR), H5Sclose};
-  H5Closer a{H5Acreate2(obj, name, type.id, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
-  const char* p = v.c_str();
-  h5_check(a.id >= 0 && H5Awrite(a.id, type.id, &p) >= 0, std::string("cannot write attribute ") + name);
-}
-void h5_attr(hid_t obj, const char* name, const char* v) { h5_attr(obj, name, std::string(v)); }
-
-void h5_column(hid_t group, const char* name, const std::vector<double>& data, const char* units, const char* what) {
-  const hsize_t dims[1] = {hsize_t(data.size())};
-  H5Closer space{H5Screate_simple(1, dims, nullptr), H5Sclose};
-  H5Closer d{H5Dcreate2(group, name, H5T_NATIVE_DOUBLE, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose};
-  h5_check(d.id >= 0, std::string("cannot create dataset ") + name);
-  if (!data.empty())
-    h5_check(H5Dwrite(d.id, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) >= 0,
-             std::string("cannot write dataset ") + name);
-  h5_attr(d.id, "units", units);
-  h5_attr(d.id, "description", what);
-}
-
-void write_sweep_file(const SweepResult& s, hid_t file) {
+void write_sweep_file(const SweepResult& s, H5Writer& w) {
+  const H5Writer::id file = w.file();
   const Case& c = s.base;
   const PolarGrid& g = s.grid;
   const bool by_spin = s.variable == SweepVariable::spin_ratio;
-  h5_attr(file, "format", "magnus-sweep");
-  h5_attr(file, "format_version", 1L);
-  h5_attr(file, "software_version", MAGNUS_VERSION);
-  h5_attr(file, "title", c.title);
-  h5_attr(file, "case", c.source_text);
-  h5_attr(file, "variable", by_spin ? "spin_ratio" : "circulation");
-  h5_attr(file, "undefined", "NaN marks an undefined value (e.g. cl_over_kj_minus_1 at Γ = 0, a second "
+  w.attr(file, "format", "magnus-sweep");
+  w.attr(file, "format_version", 1L);
+  w.attr(file, "software_version", MAGNUS_VERSION);
+  w.attr(file, "title", c.title);
+  w.attr(file, "case", c.source_text);
+  w.attr(file, "variable", by_spin ? "spin_ratio" : "circulation");
+  w.attr(file, "undefined", "NaN marks an undefined value (e.g. cl_over_kj_minus_1 at Γ = 0, a second "
                              "stagnation point when there is one free point)");
 
   {
-    H5Closer p{H5Gcreate2(file, "/parameters", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
-    h5_check(p.id >= 0, "cannot create group /parameters");
-    h5_attr(p.id, "radius", c.radius);
-    h5_attr(p.id, "speed", c.speed);
-    h5_attr(p.id, "density", c.density);
-    h5_attr(p.id, "pressure_inf", c.pressure_inf);
-    h5_attr(p.id, "circulation_model", c.circulation_given ? "given" : "spin");
-    if (!by_spin) h5_attr(p.id, "spin", c.spin);
-    h5_attr(p.id, "outer_radius", g.outer_radius() / g.a);
-    h5_attr(p.id, "far_field", to_string(c.far_field));
-    h5_attr(p.id, "spacing", to_string(c.spacing));
-    h5_attr(p.id, "n_r", long(g.n_r));
-    h5_attr(p.id, "n_theta", long(g.n_theta));
-    h5_attr(p.id, "method", s.method);
-    h5_attr(p.id, "stencil", to_string(c.stencil));
-    h5_attr(p.id, "units", "radius: m, speed: m/s, density: kg/m^3, pressure_inf: Pa, spin: rad/s, outer_radius: R/a (1)");
+    const H5Writer::id p = w.group("/parameters");
+    w.attr(p, "radius", c.radius);
+    w.attr(p, "speed", c.speed);
+    w.attr(p, "density", c.density);
+    w.attr(p, "pressure_inf", c.pressure_inf);
+    w.attr(p, "circulation_model", c.circulation_given ? "given" : "spin");
+    if (!by_spin) w.attr(p, "spin", c.spin);
+    w.attr(p, "outer_radius", g.outer_radius() / g.a);
+    w.attr(p, "far_field", to_string(c.far_field));
+    w.attr(p, "spacing", to_string(c.spacing));
+    w.attr(p, "n_r", long(g.n_r));
+    w.attr(p, "n_theta", long(g.n_theta));
+    w.attr(p, "method", s.method);
+    w.attr(p, "stencil", to_string(c.stencil));
+    w.attr(p, "units", "radius: m, speed: m/s, density: kg/m^3, pressure_inf: Pa, spin: rad/s, outer_radius: R/a (1)");
   }
   {
-    H5Closer t{H5Gcreate2(file, "/timing", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
-    h5_check(t.id >= 0, "cannot create group /timing");
-    h5_attr(t.id, "linear_solves", long(s.linear_solves));
-    h5_attr(t.id, "assemble_s", s.assemble_s);
-    h5_attr(t.id, "factor_s", s.factor_s);
-    h5_attr(t.id, "solve_s", s.solve_s);
-    h5_attr(t.id, "evaluate_s", s.evaluate_s);
-    h5_attr(t.id, "total_s", s.total_s);
-    h5_attr(t.id, "units", "s (wall clock); linear_solves: 1");
+    const H5Writer::id t = w.group("/timing");
+    w.attr(t, "linear_solves", long(s.linear_solves));
+    w.attr(t, "assemble_s", s.assemble_s);
+    w.attr(t, "factor_s", s.factor_s);
+    w.attr(t, "solve_s", s.solve_s);
+    w.attr(t, "evaluate_s", s.evaluate_s);
+    w.attr(t, "total_s", s.total_s);
+    w.attr(t, "units", "s (wall clock); linear_solves: 1");
   }
   std::vector<SweepRow> rows;
   for (const auto& p : s.points) rows.push_back(sweep_row(s, p));
@@ -452,9 +406,9 @@ void write_sweep_file(const SweepResult& s, hid_t file) {
     for (const auto& w : rows) v.push_back(w.*m);
     return v;
   };
-  H5Closer sw{H5Gcreate2(file, "/sweep", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
-  h5_check(sw.id >= 0, "cannot create group /sweep");
-  const hid_t G = sw.id;
+  const H5Writer::id G = w.group("/sweep");
+  auto h5_column = [&w](H5Writer::id g, const char* name, const std::vector<double>& v, const char* units,
+                        const char* what) { w.dataset(g, name, {v.size()}, v.data(), units, what); };
   h5_column(G, "alpha", col(&SweepRow::alpha), "1",
             by_spin ? "spin ratio aω/U" : "equivalent spin ratio Γ/(2πaU)");
   h5_column(G, "circulation", col(&SweepRow::circulation), "m^2/s", "circulation Γ");
@@ -476,31 +430,10 @@ void write_sweep_file(const SweepResult& s, hid_t file) {
             "radius of the first stagnation point over a: 1 on the surface, > 1 for a free point");
 }
 
-std::string sweep_dir_of(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
-}
-
 }  // namespace
 
 void write_sweep_hdf5(const SweepResult& s, const std::string& path) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  check_writable(path);
-  const auto slash = path.find_last_of('/');
-  const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
-  const std::string tmp = sweep_dir_of(path) + "/." + base + ".tmp-" + std::to_string(::getpid());
-  try {
-    {
-      H5Closer file{H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose};
-      h5_check(file.id >= 0, fmt::format("cannot create '{}'", tmp));
-      write_sweep_file(s, file.id);
-      h5_check(H5Fflush(file.id, H5F_SCOPE_GLOBAL) >= 0, "cannot flush");
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error(std::strerror(errno));
-  } catch (const std::exception& e) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error(fmt::format("cannot write '{}': {}", path, e.what()));
-  }
+  write_hdf5_atomic(path, [&](H5Writer& w) { write_sweep_file(s, w); });
 }
 
 // ---------------------------------------------------------------------------------------------

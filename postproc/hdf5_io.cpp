@@ -100,30 +100,34 @@ void keep_compact(hid_t ocpl) {
   H5Pset_attr_phase_change(ocpl, 1024, 1000);
 }
 
-class Writer {
- public:
-  explicit Writer(hid_t file) : file_(file) {}
+}  // namespace
 
-  hid_t group(const std::string& name) {
+H5Writer::H5Writer(id file) : file_(file) {}
+
+H5Writer::~H5Writer() {
+  for (id g : groups_) H5Gclose(g);
+}
+
+H5Writer::id H5Writer::group(const std::string& name) {
     Handle gcpl(H5Pcreate(H5P_GROUP_CREATE), H5Pclose);
     keep_compact(gcpl);
     hid_t g = H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, gcpl, H5P_DEFAULT);
     if (g < 0) fail("cannot create HDF5 group " + name);
-    groups_.push_back(std::make_unique<Handle>(g, H5Gclose));
+    groups_.push_back(g);
     return g;
   }
 
-  void attr(hid_t obj, const char* name, double v) {
+  void H5Writer::attr(id obj, const char* name, double v) {
     Handle space(H5Screate(H5S_SCALAR), H5Sclose);
     Handle a(H5Acreate2(obj, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
     check(a < 0 ? -1 : H5Awrite(a, H5T_NATIVE_DOUBLE, &v), std::string("cannot write attribute ") + name);
   }
-  void attr(hid_t obj, const char* name, long v) {
+  void H5Writer::attr(id obj, const char* name, long v) {
     Handle space(H5Screate(H5S_SCALAR), H5Sclose);
     Handle a(H5Acreate2(obj, name, H5T_NATIVE_LONG, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
     check(a < 0 ? -1 : H5Awrite(a, H5T_NATIVE_LONG, &v), std::string("cannot write attribute ") + name);
   }
-  void attr(hid_t obj, const char* name, const std::string& v) {
+  void H5Writer::attr(id obj, const char* name, const std::string& v) {
     // Fixed length, not variable: the text is then stored in the attribute itself, inside the checksummed
     // object header (variable-length strings live in the global heap, which has no checksum).
     const std::string text = v.c_str();  // up to the first NUL, as a C string is read back
@@ -135,13 +139,13 @@ class Writer {
     Handle a(H5Acreate2(obj, name, type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
     check(a < 0 ? -1 : H5Awrite(a, type, text.c_str()), std::string("cannot write attribute ") + name);
   }
-  void attr(hid_t obj, const char* name, const char* v) { attr(obj, name, std::string(v)); }
-  void attr(hid_t obj, const char* name, const std::optional<double>& v) {
+  void H5Writer::attr(id obj, const char* name, const char* v) { attr(obj, name, std::string(v)); }
+  void H5Writer::attr(id obj, const char* name, const std::optional<double>& v) {
     if (v) attr(obj, name, *v);
   }
 
-  void dataset(hid_t parent, const std::string& name, const std::vector<size_t>& shape,
-               const double* data, const std::string& units) {
+  void H5Writer::dataset(id parent, const std::string& name, const std::vector<size_t>& shape,
+                         const double* data, const std::string& units, const std::string& description) {
     std::vector<hsize_t> dims(shape.begin(), shape.end());
     Handle space(H5Screate_simple(int(dims.size()), dims.data(), nullptr), H5Sclose);
     size_t count = 1;
@@ -164,15 +168,14 @@ class Writer {
     if (count > 0) check(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
                          "cannot write dataset " + name);
     attr(d, "units", units);
+    if (!description.empty()) attr(d, "description", description);
   }
 
- private:
-  hid_t file_;
-  std::vector<std::unique_ptr<Handle>> groups_;
-};
 
-void write_file(const FlowResult& r, hid_t file) {
-  Writer w(file);
+namespace {
+
+void write_file(const FlowResult& r, H5Writer& w) {
+  const hid_t file = w.file();
   const Case& c = r.c;
   const PolarGrid& g = r.grid;
   const size_t nr = g.n_r, nt = g.n_theta;
@@ -348,12 +351,14 @@ void write_text_atomic(const std::string& path, const std::string& text) {
   }
 }
 
-void write_result(const FlowResult& r, const std::string& path) {
+void write_hdf5_atomic(const std::string& path, const std::function<void(H5Writer&)>& fill,
+                       const std::vector<std::pair<std::string, std::string>>& sidecars) {
   quiet_hdf5();
   check_writable(path);
   remove_stale_temps(path);
-  remove_stale_temps(xdmf_path(path));
-  const std::string tmp = temp_name(path), xmf = xdmf_path(path), xmf_tmp = temp_name(xmf);
+  for (const auto& [name, text] : sidecars) remove_stale_temps(name);
+  const std::string tmp = temp_name(path);
+  std::vector<std::string> side_tmps;
   try {
     {
       // The 1.10 file format: its metadata (superblock, object headers, chunk indexes) is checksummed.
@@ -364,7 +369,10 @@ void write_result(const FlowResult& r, const std::string& path) {
       errno = 0;
       Handle file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, fcpl, fapl), H5Fclose);
       if (file < 0) check(-1, fmt::format("cannot create '{}'", tmp));
-      write_file(r, file);
+      {
+        H5Writer w(file);
+        fill(w);
+      }
       errno = 0;
       check(H5Fflush(file, H5F_SCOPE_GLOBAL), "cannot flush");
       // Close here, checked: the file is renamed only if every byte made it out.
@@ -373,16 +381,26 @@ void write_result(const FlowResult& r, const std::string& path) {
       file.id = -1;
       check(H5Fclose(id), "cannot close");
     }
-    // The sidecar too is complete before either file replaces an earlier one.
-    const std::string error = write_text_file(xmf_tmp, xdmf_text(r, base_of(path)));
-    if (!error.empty()) fail(fmt::format("its sidecar '{}': {}", xmf, error));
+    // The sidecars too are complete before any file replaces an earlier one.
+    for (const auto& [name, text] : sidecars) {
+      side_tmps.push_back(temp_name(name));
+      const std::string error = write_text_file(side_tmps.back(), text);
+      if (!error.empty()) fail(fmt::format("its sidecar '{}': {}", name, error));
+    }
     if (std::rename(tmp.c_str(), path.c_str()) != 0) fail(std::strerror(errno));
-    if (std::rename(xmf_tmp.c_str(), xmf.c_str()) != 0) fail(fmt::format("its sidecar '{}': {}", xmf, std::strerror(errno)));
+    for (size_t k = 0; k < sidecars.size(); ++k)
+      if (std::rename(side_tmps[k].c_str(), sidecars[k].first.c_str()) != 0)
+        fail(fmt::format("its sidecar '{}': {}", sidecars[k].first, std::strerror(errno)));
   } catch (const std::exception& e) {
     std::remove(tmp.c_str());
-    std::remove(xmf_tmp.c_str());
+    for (const auto& t : side_tmps) std::remove(t.c_str());
     throw std::runtime_error(fmt::format("cannot write '{}': {}", path, e.what()));
   }
+}
+
+void write_result(const FlowResult& r, const std::string& path) {
+  write_hdf5_atomic(path, [&](H5Writer& w) { write_file(r, w); },
+                    {{xdmf_path(path), xdmf_text(r, base_of(path))}});
 }
 
 // ---------------------------------------------------------------------------------------------
