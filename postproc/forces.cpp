@@ -66,6 +66,12 @@ std::vector<StagnationPoint> find_stagnation_points(
   return pts;
 }
 
+double lift_error(const Case& c, const Forces& f) {
+  const double err = std::fabs(f.lift - f.lift_kutta_joukowski);
+  if (f.lift_kutta_joukowski != 0.0) return err / std::fabs(f.lift_kutta_joukowski);
+  return c.speed > 0.0 ? err / (c.density * c.speed * c.speed * c.radius) : err;
+}
+
 Errors compute_errors(const PolarGrid& g, const Case& c, const std::vector<double>& psi,
                       const Surface& s, const Forces& f) {
   Errors e;
@@ -82,11 +88,7 @@ Errors compute_errors(const PolarGrid& g, const Case& c, const std::vector<doubl
     for (size_t j = 0; j < s.cp.size(); ++j) m = std::max(m, std::fabs(s.cp[j] - s.cp_exact[j]));
     e.cp_surface_max_abs = m;
   }
-  const double lift_err = std::fabs(f.lift - f.lift_kutta_joukowski);
-  if (f.lift_kutta_joukowski != 0.0)
-    e.cl_rel = lift_err / std::fabs(f.lift_kutta_joukowski);
-  else
-    e.cl_rel = c.speed > 0.0 ? lift_err / (c.density * c.speed * c.speed * c.radius) : lift_err;
+  e.cl_rel = lift_error(c, f);
   const double G = c.circulation();
   const double scale = G != 0.0 ? std::fabs(G) : c.speed > 0.0 ? 2.0 * M_PI * c.radius * c.speed : 1.0;
   e.circulation_rel = std::fabs(f.circulation_measured - G) / scale;

@@ -40,6 +40,9 @@ struct Errors {
   double cl_rel = 0.0;  ///< |F_y − F_y,KJ| / |F_y,KJ| (absolute in units of ½ρU²·2a when F_y,KJ = 0)
   double circulation_rel = 0.0;  ///< |Γ_measured − Γ| / |Γ| (/(2πaU) when Γ = 0)
 };
+/// |F_y − F_y,KJ| / |F_y,KJ|; when F_y,KJ = 0, the absolute C_L error (U > 0) or the lift itself (N/m).
+double lift_error(const Case& c, const Forces& f);
+
 Errors compute_errors(const PolarGrid& g, const Case& c, const std::vector<double>& psi,
                       const Surface& s, const Forces& f);
 

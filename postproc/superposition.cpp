@@ -35,8 +35,7 @@ SweepPoint evaluate(const FlowBasis& b, const Case& c) {
     return theta < M_PI ? combine(U, b.up_U, G, b.up_Gamma) : combine(U, b.down_U, G, b.down_Gamma);
   });
   p.stagnation_exact = exact_flow(c).stagnation_points();
-  const double kj = p.forces.lift_kutta_joukowski, err = std::fabs(p.forces.lift - kj);
-  p.cl_rel = kj != 0.0 ? err / std::fabs(kj) : U > 0.0 ? err / (c.density * U * U * c.radius) : err;
+  p.cl_rel = lift_error(c, p.forces);
   return p;
 }
 

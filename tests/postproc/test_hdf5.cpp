@@ -47,7 +47,12 @@ TEST_CASE("HDF5 round trip: every dataset and attribute of DESIGN §5, with unit
     f.dataset(ds, &shape);
     REQUIRE(shape == std::vector<size_t>{nr, nt});
   }
-  REQUIRE(f.dataset("/grid/x")[nt + 1] == Approx(r.grid.r[1] * std::cos(r.grid.theta[1])));
+  const auto gx = f.dataset("/grid/x"), gy = f.dataset("/grid/y");
+  for (size_t i = 0; i < nr; ++i)
+    for (size_t j = 0; j < nt; ++j) {
+      REQUIRE(gx[i * nt + j] == Approx(r.grid.r[i] * std::cos(r.grid.theta[j])).margin(1e-15 * r.grid.r[i]));
+      REQUIRE(gy[i * nt + j] == Approx(r.grid.r[i] * std::sin(r.grid.theta[j])).margin(1e-15 * r.grid.r[i]));
+    }
   require_equal(f.dataset("/surface/theta"), r.surface.theta);
   require_equal(f.dataset("/surface/u_theta"), r.surface.u_theta);
   require_equal(f.dataset("/surface/pressure"), r.surface.pressure);
@@ -57,9 +62,14 @@ TEST_CASE("HDF5 round trip: every dataset and attribute of DESIGN §5, with unit
     CAPTURE(name);
     REQUIRE(f.has_attr(name, "units"));
   }
-  for (const char* a : {"radius", "spin", "spin_ratio", "speed", "density", "pressure_inf", "circulation",
-                        "outer_radius"})
-    REQUIRE(f.has_attr("/parameters", a));
+  const std::pair<const char*, double> params[] = {
+      {"radius", c.radius},        {"spin", c.spin},     {"spin_ratio", c.spin_ratio()}, {"speed", c.speed},
+      {"density", c.density},      {"pressure_inf", c.pressure_inf},
+      {"outer_radius", r.grid.outer_radius() / r.grid.a}, {"outer_radius_requested", c.outer_radius}};
+  for (const auto& [name, value] : params) {
+    CAPTURE(name);
+    REQUIRE(f.attr_double("/parameters", name) == value);
+  }
   REQUIRE(f.attr_double("/parameters", "circulation") == c.circulation());
   REQUIRE(f.attr_int("/parameters", "n_r") == long(nr));
   REQUIRE(f.attr_int("/parameters", "n_theta") == long(nt));
