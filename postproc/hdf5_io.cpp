@@ -280,7 +280,7 @@ void write_file(const FlowResult& r, H5Writer& w) {
   w.attr(t, "units", "s (wall clock)");
 
   hid_t xg = w.group("/xdmf");
-  w.attr(xg, "note", "seam-closed copies (n_r, n_theta+1) for ParaView; see the .xmf sidecar");
+  w.attr(xg, "note", "seam-closed copies (1, n_r, n_theta+1) for ParaView; see the .xmf sidecar");
   for_each_xdmf_array(r, [&](const XdmfArray& a) { w.dataset(xg, a.name, a.shape, a.data.data(), a.units); });
 }
 
