@@ -71,18 +71,15 @@ void d_dxi(const PolarGrid& g, const RadialDerivative& D, const std::vector<doub
 }  // namespace
 
 Fields compute_fields(const PolarGrid& g, const Case& c, const std::vector<double>& psi,
-                      const FieldSelection& sel, int order) {
+                      const std::vector<double>& psi_exact, const FieldSelection& sel, int order) {
   Fields f;
   const int n = g.n_theta;
   const size_t N = size_t(g.nodes());
   if (sel.has("psi")) f.psi = psi;
-  if (sel.has("psi_exact") || sel.has("psi_error")) {
-    std::vector<double> ex = exact_flow(c).psi_field(g);
-    if (sel.has("psi_error")) {
-      f.psi_error.resize(N);
-      for (size_t q = 0; q < N; ++q) f.psi_error[q] = psi[q] - ex[q];
-    }
-    if (sel.has("psi_exact")) f.psi_exact = std::move(ex);
+  if (sel.has("psi_exact")) f.psi_exact = psi_exact;
+  if (sel.has("psi_error")) {
+    f.psi_error.resize(N);
+    for (size_t q = 0; q < N; ++q) f.psi_error[q] = psi[q] - psi_exact[q];
   }
   if (!sel.any_velocity()) return f;
   const RadialDerivative D = radial_derivative(g.xi, order, order > 2);

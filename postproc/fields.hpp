@@ -42,10 +42,9 @@ struct Surface {
 /// Order of the derivative formulas matching a stencil: 2 (5-point) or 6 (9-point).
 int derivative_order(StencilKind stencil);
 
-/// u_θ = −(1/r)·∂ψ/∂ξ on every ring of column j's values psi_col(i).
-/// All fields a selection asks for, from ψ (m²/s) and the case's ρ, U, p∞.
+/// All fields a selection asks for, from ψ and the exact ψ on the same grid (m²/s) and the case's ρ, U, p∞.
 Fields compute_fields(const PolarGrid& g, const Case& c, const std::vector<double>& psi,
-                      const FieldSelection& sel, int order);
+                      const std::vector<double>& psi_exact, const FieldSelection& sel, int order);
 
 /// Surface velocity u_θ(a, θ_j) = −(1/a)·∂ψ/∂ξ at the wall, m/s.
 std::vector<double> surface_u_theta(const PolarGrid& g, const std::vector<double>& psi, int order);

@@ -72,11 +72,9 @@ double lift_error(const Case& c, const Forces& f) {
   return c.speed > 0.0 ? err / (c.density * c.speed * c.speed * c.radius) : err;
 }
 
-Errors compute_errors(const PolarGrid& g, const Case& c, const std::vector<double>& psi,
+Errors compute_errors(const Case& c, const std::vector<double>& psi, const std::vector<double>& pe,
                       const Surface& s, const Forces& f) {
   Errors e;
-  const ExactFlow ex = exact_flow(c);
-  const std::vector<double> pe = ex.psi_field(g);
   double dmax = 0.0, emax = 0.0;
   for (size_t q = 0; q < pe.size(); ++q) {
     dmax = std::max(dmax, std::fabs(psi[q] - pe[q]));

@@ -33,7 +33,7 @@ std::vector<StagnationPoint> find_stagnation_points(
     const PolarGrid& g, const Case& c, const std::vector<double>& surface_u_theta,
     const std::function<std::vector<double>(double)>& ray);
 
-/// Errors against the exact solution (DESIGN §5 /errors).
+/// Errors against the exact solution (DESIGN §5 /errors); psi_exact is ExactFlow::psi_field on the same grid.
 struct Errors {
   double psi_max_rel = 0.0;                ///< max|ψ − ψ_ex| / max|ψ_ex|
   std::optional<double> cp_surface_max_abs;///< max|Cp − Cp_ex| on r = a (U > 0)
@@ -43,7 +43,7 @@ struct Errors {
 /// |F_y − F_y,KJ| / |F_y,KJ|; when F_y,KJ = 0, the absolute C_L error (U > 0) or the lift itself (N/m).
 double lift_error(const Case& c, const Forces& f);
 
-Errors compute_errors(const PolarGrid& g, const Case& c, const std::vector<double>& psi,
+Errors compute_errors(const Case& c, const std::vector<double>& psi, const std::vector<double>& psi_exact,
                       const Surface& s, const Forces& f);
 
 }  // namespace magnus

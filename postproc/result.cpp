@@ -11,13 +11,14 @@ FlowResult postprocess(const PolarGrid& g, const Case& c, const std::vector<doub
   FlowResult r;
   r.c = c;
   r.grid = g;
-  r.fields = compute_fields(g, c, psi, sel, order);
+  const std::vector<double> psi_exact = exact_flow(c).psi_field(g);  // once: fields and error norms
+  r.fields = compute_fields(g, c, psi, psi_exact, sel, order);
   r.surface = surface_from_basis(g, c, surface_u_theta(g, psi_U, order), surface_u_theta(g, psi_Gamma, order));
   r.forces = compute_forces(c, r.surface);
   r.stagnation = find_stagnation_points(g, c, r.surface.u_theta,
                                        [&](double theta) { return u_theta_on_ray(g, psi, theta, order); });
   r.stagnation_exact = exact_flow(c).stagnation_points();
-  r.errors = compute_errors(g, c, psi, r.surface, r.forces);
+  r.errors = compute_errors(c, psi, psi_exact, r.surface, r.forces);
   return r;
 }
 
