@@ -6,11 +6,11 @@
 #include <map>
 #include <memory>
 
-#include "app/bench.hpp"
-#include "app/case_file.hpp"
+#include "io/bench_table.hpp"
+#include "io/case_file.hpp"
 #include "app/commands.hpp"
-#include "postproc/hdf5_io.hpp"
-#include "postproc/plot.hpp"
+#include "io/hdf5_io.hpp"
+#include "plot/plot.hpp"
 
 namespace magnus {
 
@@ -69,7 +69,7 @@ void add_bench_command(CLI::App& app) {
       throw std::runtime_error("bench: no rung ran (the 9-point stencil needs geometric spacing, or every CHOLMOD "
                                "rung is above --cholmod-max-unknowns)");
     std::printf("magnus bench — %s (α = %.6g, far field %s, %d thread%s, median of %d)\n", c.title.c_str(),
-                c.spin_ratio(), to_string(c.far_field), opt.threads, opt.threads == 1 ? "" : "s", opt.repeats);
+                c.scene.spin_ratio(), to_string(c.grid.far_field), opt.threads, opt.threads == 1 ? "" : "s", opt.repeats);
     std::fputs(bench_table(rows).c_str(), stdout);
     if (!o->csv.empty()) write_text_atomic(o->csv, bench_csv(rows));
     if (!o->plot.empty()) {

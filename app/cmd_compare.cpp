@@ -2,7 +2,7 @@
 #include <memory>
 
 #include "app/commands.hpp"
-#include "app/compare.hpp"
+#include "io/compare.hpp"
 
 namespace magnus {
 

@@ -2,7 +2,7 @@
 #include <memory>
 
 #include "app/commands.hpp"
-#include "app/plot_command.hpp"
+#include "plot/figures.hpp"
 
 namespace magnus {
 

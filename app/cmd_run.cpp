@@ -1,13 +1,41 @@
 // magnus run CASE [-o FILE] [--set k=v]… [--threads N] [-q]
 #include <fmt/core.h>
 
+#include <cstdio>
 #include <memory>
 
 #include "app/commands.hpp"
-#include "app/run.hpp"
+#include "io/case_file.hpp"
+#include "io/hdf5_io.hpp"
+#include "io/report.hpp"
+#include "postproc/pipeline.hpp"
 #include "solver/memory.hpp"
 
 namespace magnus {
+
+namespace {
+
+void command_run(const std::string& case_path, const std::string& output, const std::vector<std::string>& sets,
+                int threads, bool quiet, size_t max_bytes) {
+  Case c = load_case(case_path, sets);
+  if (!output.empty()) {
+    c.output.file = output;
+    c.source_text = to_toml(c);
+  }
+  // Fail before solving, not after: the result, its sidecar, and neither overwriting the case.
+  check_distinct_paths({case_path}, {c.output.file, xdmf_path(c.output.file)});
+  check_writable(c.output.file);
+  check_writable(xdmf_path(c.output.file));
+  FlowResult r = run_case(c, threads, max_bytes);
+  write_result(r, c.output.file);
+  if (!quiet) std::fputs(summary_text(r, c.output.file).c_str(), stdout);
+}
+
+void command_inspect(const std::string& path) {
+  std::fputs(describe_result(path).c_str(), stdout);
+}
+
+}  // namespace
 
 void add_run_command(CLI::App& app) {
   struct Options {

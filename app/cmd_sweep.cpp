@@ -1,11 +1,93 @@
 // magnus sweep CASE (--spin-ratio A:B:STEP | --circulation A:B:STEP) [--set k=v]… [--csv FILE]
 //              [-o FILE.h5] [--plot FILE.png] [--size WxH] [--threads N] [-q]
+#include <fmt/core.h>
+
+#include <cmath>
+#include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "app/commands.hpp"
-#include "app/sweep.hpp"
+#include "io/case_file.hpp"
+#include "io/hdf5_io.hpp"
+#include "io/reference_file.hpp"
+#include "io/sweep_file.hpp"
+#include "plot/figures.hpp"
+#include "plot/plot.hpp"
 
 namespace magnus {
+
+namespace {
+
+/// The options of `magnus sweep`: exactly one of spin_ratio / circulation non-empty.
+struct SweepOptions {
+  std::string case_path, spin_ratio, circulation, csv, output, plot, size;
+  std::vector<std::string> sets;
+  int threads = 1;
+  bool quiet = false;
+};
+
+void command_sweep(const SweepOptions& o) {
+  const bool by_spin = !o.spin_ratio.empty();
+  if (by_spin == !o.circulation.empty())
+    throw std::invalid_argument("sweep: give exactly one of --spin-ratio A:B:STEP and --circulation A:B:STEP");
+  const SweepRange range =
+      parse_sweep_range(by_spin ? o.spin_ratio : o.circulation, by_spin ? "--spin-ratio" : "--circulation");
+  const PlotSize size = o.size.empty() ? PlotSize{} : parse_plot_size(o.size);
+  Case c = load_case(o.case_path, o.sets);
+  // Fail before solving, not after.
+  check_distinct_paths({o.case_path}, {o.csv, o.output, o.plot});
+  for (const std::string* p : {&o.csv, &o.output, &o.plot})
+    if (!p->empty()) check_writable(*p);
+  const SweepResult s =
+      by_spin ? sweep_spin_ratio(c, range.values, o.threads) : sweep_circulation(c, range.values, o.threads);
+
+  std::optional<ViscousReference> ref;
+  std::string ref_error;
+  if (by_spin) {
+    try {
+      ref = load_viscous_reference(viscous_reference_path());
+    } catch (const std::exception& e) {
+      ref_error = e.what();
+    }
+  }
+  if (!o.csv.empty()) write_text_atomic(o.csv, sweep_csv(s));
+  if (!o.output.empty()) write_sweep_hdf5(s, o.output);
+  if (!o.plot.empty()) {
+    std::vector<CurvePoint> numeric;
+    for (const auto& p : s.points) {
+      const SweepRow w = sweep_row(s, p);
+      numeric.push_back({w.alpha, w.cl});
+    }
+    std::vector<ReferenceSet> sets;
+    if (ref)
+      for (const auto& d : ref->datasets) {
+        ReferenceSet set{d.label, {}};
+        for (const auto& p : d.points) set.points.push_back({p.alpha, p.cl});
+        sets.push_back(std::move(set));
+      }
+    const std::string title = fmt::format("Lift against {} (potential flow, n_θ × n_r = {} × {})",
+                                          by_spin ? "spin ratio" : "circulation", s.grid.n_theta, s.grid.n_r);
+    plot_sweep(title, numeric, sets, o.plot, size,
+               by_spin ? std::string() : std::string("equivalent spin ratio Γ/(2πaU)"));
+  }
+  if (!ref_error.empty() && (!o.quiet || !o.plot.empty()))
+    std::fprintf(stderr, "magnus: note: viscous reference data not shown: %s\n", ref_error.c_str());
+  if (o.quiet) return;
+  std::string text = sweep_table(s);
+  if (ref) text += sweep_reference_text(s, *ref);
+  std::vector<std::string> written;
+  for (const std::string* p : {&o.csv, &o.output, &o.plot})
+    if (!p->empty()) written.push_back(*p);
+  if (!written.empty()) {
+    std::string list;
+    for (const auto& w : written) list += (list.empty() ? "" : ", ") + w;
+    text += fmt::format("\n{:<13}{}\n", "output", list);
+  }
+  std::fputs(text.c_str(), stdout);
+}
+
+}  // namespace
 
 void add_sweep_command(CLI::App& app) {
   auto o = std::make_shared<SweepOptions>();

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "app/case_file.hpp"
+#include "io/case_file.hpp"
 
 using namespace magnus;
 
@@ -26,12 +26,12 @@ namespace {
 
 /// What every accepted case must satisfy (DESIGN §3 ranges), and its resolved TOML must read back the same.
 void check_accepted(const Case& c) {
-  for (double v : {c.radius, c.spin, c.speed, c.density, c.pressure_inf, c.circulation_value, c.outer_radius,
-                   c.tolerance, c.circulation(), c.spin_ratio()})
+  for (double v : {c.scene.radius, c.scene.spin, c.scene.speed, c.scene.density, c.scene.pressure_inf, c.scene.circulation_value, c.grid.outer_radius,
+                   c.grid.tolerance, c.scene.Gamma(), c.scene.spin_ratio()})
     if (!std::isfinite(v)) finding("a number of an accepted case is not finite", c.source_text);
-  if (!(c.radius > 0 && c.speed >= 0 && c.density > 0 && c.outer_radius > 1))
+  if (!(c.scene.radius > 0 && c.scene.speed >= 0 && c.scene.density > 0 && c.grid.outer_radius > 1))
     finding("a range check let a value through", c.source_text);
-  if (c.n_theta < 8 || c.n_theta % 2 != 0 || c.n_r < 0 || c.output_file.empty())
+  if (c.grid.n_theta < 8 || c.grid.n_theta % 2 != 0 || c.grid.n_r < 0 || c.output.file.empty())
     finding("a grid or output check let a value through", c.source_text);
   // The resolved case is stored in every result and echoed: it must be a valid case that resolves to itself.
   Case again;

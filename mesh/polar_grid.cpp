@@ -5,20 +5,6 @@
 
 namespace magnus {
 
-double Case::circulation() const {
-  if (circulation_given) return circulation_value;
-  return 2.0 * M_PI * radius * radius * spin;
-}
-
-double Case::spin_ratio() const { return speed > 0.0 ? radius * spin / speed : 0.0; }
-
-const char* to_string(Spacing s) { return s == Spacing::geometric ? "geometric" : "uniform"; }
-const char* to_string(FarField f) { return f == FarField::exact ? "exact" : "freestream"; }
-const char* to_string(Method m) {
-  return m == Method::automatic ? "auto" : m == Method::cholmod ? "cholmod" : "fft";
-}
-const char* to_string(StencilKind s) { return s == StencilKind::five_point ? "5-point" : "9-point"; }
-
 int default_n_r(Spacing spacing, double outer_over_a, int n_theta) {
   const double d_theta = 2.0 * M_PI / n_theta;
   const double span = spacing == Spacing::geometric ? std::log(outer_over_a) : outer_over_a - 1.0;
@@ -54,7 +40,7 @@ PolarGrid make_grid(double a, double outer_over_a, int n_r, int n_theta, Spacing
   return g;
 }
 
-GridShape grid_shape(const Case& c) {
+GridShape grid_shape(const GridRequest& c) {
   const double d_theta = 2.0 * M_PI / c.n_theta;
   GridShape s;
   s.n_theta = c.n_theta;
@@ -72,11 +58,11 @@ GridShape grid_shape(const Case& c) {
   return s;
 }
 
-PolarGrid make_grid(const Case& c) {
+PolarGrid make_grid(const GridRequest& c, double a) {
   const GridShape s = grid_shape(c);
   if (s.n_r > (1L << 24))
     throw std::invalid_argument("make_grid: " + std::to_string(s.n_r) + " rings is more than magnus builds (2^24)");
-  return make_grid(c.radius, s.outer_over_a, int(s.n_r), c.n_theta, c.spacing);
+  return make_grid(a, s.outer_over_a, int(s.n_r), c.n_theta, c.spacing);
 }
 
 }  // namespace magnus

@@ -1,7 +1,7 @@
 #pragma once
 // The polar grid r_i (i = 0…n_r−1, r_0 = a, r_{n_r−1} = R) × θ_j = 2πj/n_θ (no seam node).
 #include <vector>
-#include "mesh/case.hpp"
+#include "physics/scene.hpp"
 
 namespace magnus {
 
@@ -29,16 +29,16 @@ int default_n_r(Spacing spacing, double outer_over_a, int n_theta);
 /// Geometric: r_i = a·e^{iΔξ}; uniform: r_i = a + iΔr. R = outer_over_a·a.
 PolarGrid make_grid(double a, double outer_over_a, int n_r, int n_theta, Spacing spacing);
 
-/// The (n_r, n_θ) of the grid a case asks for, without building it (64-bit: a uniform grid far out can
+/// The (n_r, n_θ) of the grid a request asks for, without building it (64-bit: a uniform grid far out can
 /// ask for more rings than an int holds; the memory guard refuses it before anything is allocated).
 struct GridShape {
   long n_r = 0, n_theta = 0;
   double outer_over_a = 0.0;  ///< R/a as built (geometric square cells round it up)
 };
-GridShape grid_shape(const Case& c);
+GridShape grid_shape(const GridRequest& c);
 
-/// The grid a case asks for. n_r = 0: geometric spacing gets exactly square cells (Δξ = Δθ, R rounded
+/// The grid a request asks for, for a body of radius a (m). n_r = 0: geometric spacing gets exactly square cells (Δξ = Δθ, R rounded
 /// up to a whole cell, so R ≥ the R asked for); uniform spacing gets default_n_r.
-PolarGrid make_grid(const Case& c);
+PolarGrid make_grid(const GridRequest& c, double a);
 
 }  // namespace magnus

@@ -3,23 +3,10 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "postproc/exact.hpp"
-#include "postproc/fd_weights.hpp"
+#include "physics/exact.hpp"
+#include "mesh/fd_weights.hpp"
 
 namespace magnus {
-
-const std::vector<std::string>& field_names() {
-  static const std::vector<std::string> names = {"psi", "u_r", "u_theta", "u_x", "u_y",
-                                                 "pressure", "cp", "psi_exact", "psi_error"};
-  return names;
-}
-
-const char* field_units(const std::string& name) {
-  if (name == "psi" || name == "psi_exact" || name == "psi_error") return "m^2/s";
-  if (name == "pressure") return "Pa";
-  if (name == "cp") return "1";
-  return "m/s";
-}
 
 namespace {
 size_t field_index(const std::string& name) {
@@ -70,7 +57,7 @@ void d_dxi(const PolarGrid& g, const RadialDerivative& D, const std::vector<doub
 
 }  // namespace
 
-Fields compute_fields(const PolarGrid& g, const Case& c, const std::vector<double>& psi,
+Fields compute_fields(const PolarGrid& g, const Scene& scene, const std::vector<double>& psi,
                       const std::vector<double>& psi_exact, const FieldSelection& sel, int order) {
   Fields f;
   const int n = g.n_theta;
@@ -104,7 +91,7 @@ Fields compute_fields(const PolarGrid& g, const Case& c, const std::vector<doubl
       uti[j] *= -inv_r;    // u_θ = −∂ψ/∂r = −(1/r) ∂ψ/∂ξ
     }
   }
-  const double U2 = c.speed * c.speed, half_rho = 0.5 * c.density;
+  const double U2 = scene.speed * scene.speed, half_rho = 0.5 * scene.density;
   if (sel.has("u_x") || sel.has("u_y")) {
     if (sel.has("u_x")) f.u_x.resize(N);
     if (sel.has("u_y")) f.u_y.resize(N);
@@ -117,9 +104,9 @@ Fields compute_fields(const PolarGrid& g, const Case& c, const std::vector<doubl
   if (sel.has("pressure")) {
     f.pressure.resize(N);
     for (size_t q = 0; q < N; ++q)
-      f.pressure[q] = c.pressure_inf + half_rho * (U2 - ur[q] * ur[q] - ut[q] * ut[q]);
+      f.pressure[q] = scene.pressure_inf + half_rho * (U2 - ur[q] * ur[q] - ut[q] * ut[q]);
   }
-  if (sel.has("cp") && c.speed > 0.0) {
+  if (sel.has("cp") && scene.speed > 0.0) {
     f.cp.resize(N);
     for (size_t q = 0; q < N; ++q) f.cp[q] = 1.0 - (ur[q] * ur[q] + ut[q] * ut[q]) / U2;
   }
@@ -143,7 +130,7 @@ double mean_of(const std::vector<double>& v) {
   return m / double(v.size());
 }
 
-Surface surface_from_split(const PolarGrid& g, const Case& c, double mean, std::vector<double> fluct) {
+Surface surface_from_split(const PolarGrid& g, const Scene& scene, double mean, std::vector<double> fluct) {
   const int n = g.n_theta;
   Surface s;
   s.theta = g.theta;
@@ -151,12 +138,12 @@ Surface surface_from_split(const PolarGrid& g, const Case& c, double mean, std::
   s.u_theta.resize(n);
   for (int j = 0; j < n; ++j) s.u_theta[j] = mean + fluct[j];
   s.u_fluct = std::move(fluct);
-  const double U2 = c.speed * c.speed;
+  const double U2 = scene.speed * scene.speed;
   s.pressure.resize(n);
   for (int j = 0; j < n; ++j)
-    s.pressure[j] = c.pressure_inf + 0.5 * c.density * (U2 - s.u_theta[j] * s.u_theta[j]);
-  if (c.speed > 0.0) {
-    const ExactFlow ex = exact_flow(c);
+    s.pressure[j] = scene.pressure_inf + 0.5 * scene.density * (U2 - s.u_theta[j] * s.u_theta[j]);
+  if (scene.speed > 0.0) {
+    const ExactFlow ex = exact_flow(scene);
     s.cp.resize(n);
     s.cp_exact.resize(n);
     for (int j = 0; j < n; ++j) {
@@ -168,22 +155,22 @@ Surface surface_from_split(const PolarGrid& g, const Case& c, double mean, std::
 }
 }  // namespace
 
-Surface surface_from_u_theta(const PolarGrid& g, const Case& c, std::vector<double> u_theta) {
+Surface surface_from_u_theta(const PolarGrid& g, const Scene& scene, std::vector<double> u_theta) {
   const double m = mean_of(u_theta);
   for (double& u : u_theta) u -= m;
-  return surface_from_split(g, c, m, std::move(u_theta));
+  return surface_from_split(g, scene, m, std::move(u_theta));
 }
 
-Surface surface_from_basis(const PolarGrid& g, const Case& c, const std::vector<double>& s_U,
+Surface surface_from_basis(const PolarGrid& g, const Scene& scene, const std::vector<double>& s_U,
                            const std::vector<double>& s_Gamma) {
-  const double U = c.speed, G = c.circulation(), mU = mean_of(s_U);
+  const double U = scene.speed, G = scene.Gamma(), mU = mean_of(s_U);
   std::vector<double> fluct(s_U.size());
   for (size_t j = 0; j < s_U.size(); ++j) fluct[j] = U * (s_U[j] - mU);
-  return surface_from_split(g, c, U * mU + G * mean_of(s_Gamma), std::move(fluct));
+  return surface_from_split(g, scene, U * mU + G * mean_of(s_Gamma), std::move(fluct));
 }
 
-Surface compute_surface(const PolarGrid& g, const Case& c, const std::vector<double>& psi, int order) {
-  return surface_from_u_theta(g, c, surface_u_theta(g, psi, order));
+Surface compute_surface(const PolarGrid& g, const Scene& scene, const std::vector<double>& psi, int order) {
+  return surface_from_u_theta(g, scene, surface_u_theta(g, psi, order));
 }
 
 double periodic_interpolate(const std::vector<double>& f, double theta) {

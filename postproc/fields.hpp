@@ -1,17 +1,12 @@
 #pragma once
-// Velocity, pressure and Cp from ψ: central differences inside, one-sided at r = a and r = R.
+// Velocity, pressure and Cp from ψ: central differences inside; at r = R one-sided, and at r = a one-sided
+// (5-point) or centred on the odd reflection ψ(−ξ) = −ψ(ξ) (9-point, see mesh/fd_weights).
 #include <optional>
 #include <string>
 #include <vector>
 #include "mesh/polar_grid.hpp"
 
 namespace magnus {
-
-/// Field names of DESIGN §5 /fields, in file order.
-const std::vector<std::string>& field_names();
-
-/// Units of a field of that name ("m^2/s", "m/s", "Pa", "1").
-const char* field_units(const std::string& name);
 
 /// Which (n_r, n_θ) fields to compute and write; everything by default.
 struct FieldSelection {
@@ -43,24 +38,24 @@ struct Surface {
 int derivative_order(StencilKind stencil);
 
 /// All fields a selection asks for, from ψ and the exact ψ on the same grid (m²/s) and the case's ρ, U, p∞.
-Fields compute_fields(const PolarGrid& g, const Case& c, const std::vector<double>& psi,
+Fields compute_fields(const PolarGrid& g, const Scene& scene, const std::vector<double>& psi,
                       const std::vector<double>& psi_exact, const FieldSelection& sel, int order);
 
 /// Surface velocity u_θ(a, θ_j) = −(1/a)·∂ψ/∂ξ at the wall, m/s.
 std::vector<double> surface_u_theta(const PolarGrid& g, const std::vector<double>& psi, int order);
 
 /// Surface pressure p = p∞ + ½ρ(U² − u_θ²) and Cp (u_r = 0 on the body) from u_θ.
-Surface surface_from_u_theta(const PolarGrid& g, const Case& c, std::vector<double> u_theta);
+Surface surface_from_u_theta(const PolarGrid& g, const Scene& scene, std::vector<double> u_theta);
 
 /// Surface from the wall velocities of the superposition basis: ū = U·mean(s_U) + Γ·mean(s_Γ),
 /// u' = U·(s_U − mean(s_U)). The Γ part of the discrete flow is axisymmetric (the operator commutes with
 /// rotations by Δθ and its boundary data is constant), so its θ-varying remainder is round-off and is
 /// dropped: u' carries no error of order ε·|ū| however large α is.
-Surface surface_from_basis(const PolarGrid& g, const Case& c, const std::vector<double>& s_U,
+Surface surface_from_basis(const PolarGrid& g, const Scene& scene, const std::vector<double>& s_U,
                            const std::vector<double>& s_Gamma);
 
 /// surface_from_u_theta(surface_u_theta(ψ)).
-Surface compute_surface(const PolarGrid& g, const Case& c, const std::vector<double>& psi, int order);
+Surface compute_surface(const PolarGrid& g, const Scene& scene, const std::vector<double>& psi, int order);
 
 /// u_θ(r_i, θ) along the ray θ (periodic cubic interpolation between columns), m/s.
 std::vector<double> u_theta_on_ray(const PolarGrid& g, const std::vector<double>& psi, double theta,

@@ -3,7 +3,7 @@
 #include <functional>
 #include <optional>
 #include <vector>
-#include "postproc/exact.hpp"
+#include "physics/exact.hpp"
 #include "postproc/fields.hpp"
 
 namespace magnus {
@@ -25,12 +25,12 @@ struct Forces {
 
 /// F = −∮ p n̂ a dθ by the periodic trapezoid, in the form ½ρ∮(2ū u' + u'²) n̂ a dθ with the surface's
 /// split u_θ = ū + u': the constant parts, p∞ and ½ρ(U² − ū²), integrate to zero exactly and are dropped.
-Forces compute_forces(const Case& c, const Surface& s);
+Forces compute_forces(const Scene& scene, const Surface& s);
 
 /// Stagnation points from the computed flow: sign changes of the surface u_θ, or else of u_θ along
 /// the y axis on the side of Γ (a free point, |Γ| > 4πaU); ray(θ) gives u_θ(r_i, θ), m/s.
 std::vector<StagnationPoint> find_stagnation_points(
-    const PolarGrid& g, const Case& c, const std::vector<double>& surface_u_theta,
+    const PolarGrid& g, const Scene& scene, const std::vector<double>& surface_u_theta,
     const std::function<std::vector<double>(double)>& ray);
 
 /// Errors against the exact solution (DESIGN §5 /errors); psi_exact is ExactFlow::psi_field on the same grid.
@@ -41,9 +41,14 @@ struct Errors {
   double circulation_rel = 0.0;  ///< |Γ_measured − Γ| / |Γ| (/(2πaU) when Γ = 0)
 };
 /// |F_y − F_y,KJ| / |F_y,KJ|; when F_y,KJ = 0, the absolute C_L error (U > 0) or the lift itself (N/m).
-double lift_error(const Case& c, const Forces& f);
+double lift_error(const Scene& scene, const Forces& f);
 
-Errors compute_errors(const Case& c, const std::vector<double>& psi, const std::vector<double>& psi_exact,
+Errors compute_errors(const Scene& scene, const std::vector<double>& psi, const std::vector<double>& psi_exact,
                       const Surface& s, const Forces& f);
+
+/// θ wrapped into [0, 2π), rad (a value within 1e-9 below 2π becomes 0).
+double wrap_angle(double theta);
+/// Stagnation points with θ in [0, 2π), sorted by θ: the one order every table and file uses.
+std::vector<StagnationPoint> sorted_stagnation_points(const std::vector<StagnationPoint>& in);
 
 }  // namespace magnus

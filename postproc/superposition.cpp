@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "solver/flow_solver.hpp"
+
 namespace magnus {
 
 FlowBasis flow_basis(const PolarGrid& g, const std::vector<double>& psi_U, const std::vector<double>& psi_Gamma,
@@ -17,25 +19,18 @@ FlowBasis flow_basis(const PolarGrid& g, const std::vector<double>& psi_U, const
   return b;
 }
 
-namespace {
-std::vector<double> combine(double U, const std::vector<double>& a, double G, const std::vector<double>& b) {
-  std::vector<double> out(a.size());
-  for (size_t k = 0; k < a.size(); ++k) out[k] = U * a[k] + G * b[k];
-  return out;
-}
-}  // namespace
 
-SweepPoint evaluate(const FlowBasis& b, const Case& c) {
-  const double U = c.speed, G = c.circulation();
+SweepPoint evaluate(const FlowBasis& b, const Scene& scene) {
+  const double U = scene.speed, Gamma = scene.Gamma();
   SweepPoint p;
-  p.c = c;
-  const Surface s = surface_from_basis(b.grid, c, b.surface_U, b.surface_Gamma);
-  p.forces = compute_forces(c, s);
-  p.stagnation = find_stagnation_points(b.grid, c, s.u_theta, [&](double theta) {
-    return theta < M_PI ? combine(U, b.up_U, G, b.up_Gamma) : combine(U, b.down_U, G, b.down_Gamma);
+  p.scene = scene;
+  const Surface s = surface_from_basis(b.grid, scene, b.surface_U, b.surface_Gamma);
+  p.forces = compute_forces(scene, s);
+  p.stagnation = find_stagnation_points(b.grid, scene, s.u_theta, [&](double theta) {
+    return theta < M_PI ? superpose(U, b.up_U, Gamma, b.up_Gamma) : superpose(U, b.down_U, Gamma, b.down_Gamma);
   });
-  p.stagnation_exact = exact_flow(c).stagnation_points();
-  p.cl_rel = lift_error(c, p.forces);
+  p.stagnation_exact = exact_flow(scene).stagnation_points();
+  p.cl_rel = lift_error(scene, p.forces);
   return p;
 }
 

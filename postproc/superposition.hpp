@@ -20,13 +20,13 @@ FlowBasis flow_basis(const PolarGrid& g, const std::vector<double>& psi_U, const
 
 /// One (U, Γ) point: forces, stagnation points and the lift error against Kutta–Joukowski.
 struct SweepPoint {
-  Case c;  ///< the case with this point's speed, spin and circulation
+  Scene scene;  ///< this point's scene: its speed, spin and circulation
   Forces forces;
   std::vector<StagnationPoint> stagnation, stagnation_exact;
   double cl_rel = 0.0;  ///< |F_y − F_y,KJ| / |F_y,KJ| (as Errors::cl_rel)
 };
 
 /// Evaluate a case (its U, ω, Γ) from the basis in O(n_θ + n_r).
-SweepPoint evaluate(const FlowBasis& b, const Case& c);
+SweepPoint evaluate(const FlowBasis& b, const Scene& scene);
 
 }  // namespace magnus

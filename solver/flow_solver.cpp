@@ -9,14 +9,13 @@ double now_s() {
   return std::chrono::duration<double>(clock::now().time_since_epoch()).count();
 }
 
-Method resolve_method(Method requested, const DiscreteOperator&) {
-  // θ is uniform and periodic on every grid magnus makes, so the FFT path always applies.
+Method resolve_method(Method requested) {
   return requested == Method::automatic ? Method::fft : requested;
 }
 
 std::unique_ptr<PsiSolver> make_solver(const PolarGrid& grid, const DiscreteOperator& op,
                                        Method method, int threads, size_t max_bytes) {
-  if (resolve_method(method, op) == Method::cholmod) return make_cholmod_solver(grid, op, max_bytes);
+  if (resolve_method(method) == Method::cholmod) return make_cholmod_solver(grid, op, max_bytes);
   return make_fft_solver(grid, op, threads);
 }
 
@@ -31,11 +30,14 @@ std::vector<double> PsiSolver::solve_boundary(const BoundaryData& bd) {
   return unpack_psi(op_, bd, solve_unknowns(assemble_rhs(op_, bd)));
 }
 
-std::vector<double> PsiBasis::combine(double U, double Gamma) const {
-  std::vector<double> psi(psi_U.size());
-  for (size_t k = 0; k < psi.size(); ++k) psi[k] = U * psi_U[k] + Gamma * psi_Gamma[k];
-  return psi;
+std::vector<double> superpose(double U, const std::vector<double>& f_U, double Gamma,
+                              const std::vector<double>& f_Gamma) {
+  std::vector<double> f(f_U.size());
+  for (size_t k = 0; k < f.size(); ++k) f[k] = U * f_U[k] + Gamma * f_Gamma[k];
+  return f;
 }
+
+std::vector<double> PsiBasis::combine(double U, double Gamma) const { return superpose(U, psi_U, Gamma, psi_Gamma); }
 
 PsiBasis solve_basis(PsiSolver& solver) {
   PsiBasis b;

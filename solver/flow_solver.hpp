@@ -33,8 +33,9 @@ class PsiSolver {
   DiscreteOperator op_;
 };
 
-/// The method `auto` resolves to for this operator (the fastest that applies).
-Method resolve_method(Method requested, const DiscreteOperator& op);
+/// The method `auto` resolves to (the fastest that applies: θ is uniform and periodic on every grid magnus
+/// makes, so the FFT path always does). The one place a method is chosen.
+Method resolve_method(Method requested);
 
 /// Factor the operator with the chosen method. threads ≥ 1; max_bytes > 0 refuses a CHOLMOD factor
 /// larger than that (checked after the symbolic analysis, before the numeric factorization).
@@ -45,6 +46,10 @@ std::unique_ptr<PsiSolver> make_cholmod_solver(const PolarGrid& grid, const Disc
                                                size_t max_bytes = 0);
 std::unique_ptr<PsiSolver> make_fft_solver(const PolarGrid& grid, const DiscreteOperator& op,
                                            int threads = 1);
+
+/// U·f_U + Γ·f_Γ elementwise: any field that is linear in ψ, from its parts per unit U and per unit Γ.
+std::vector<double> superpose(double U, const std::vector<double>& f_U, double Gamma,
+                              const std::vector<double>& f_Gamma);
 
 /// Superposition basis: ψ = U·ψ_U + Γ·ψ_Γ (two solves serve any number of (U, Γ) pairs).
 struct PsiBasis {

@@ -24,14 +24,10 @@ size_t solver_bytes(double n_r, double n, FarField far_field, StencilKind stenci
   return size_t(std::min(triplets + matrix + 10.0 * fill + 64.0 * N, 1e19));
 }
 
-size_t field_bytes(const DiscreteOperator& op, int fields) {
-  return size_t(8.0 * op.n_r * op.n_theta * (4 + fields));
-}
-
-void check_case_memory(const Case& c, Method method, int fields, size_t limit) {
-  const GridShape s = grid_shape(c);
+void check_grid_memory(const GridRequest& grid, StencilKind stencil, Method method, int fields, size_t limit) {
+  const GridShape s = grid_shape(grid);
   const double nr = double(s.n_r), n = double(s.n_theta);
-  const double bytes = double(solver_bytes(nr, n, c.far_field, c.stencil, method)) + 8.0 * nr * n * (4 + fields);
+  const double bytes = double(solver_bytes(nr, n, grid.far_field, stencil, method)) + 8.0 * nr * n * (4 + fields);
   check_memory(size_t(std::min(bytes, 1e19)), limit,
                "the " + std::string(to_string(method)) + " solve on " + std::to_string(s.n_theta) + " × " +
                    std::to_string(s.n_r) + " with " + std::to_string(fields) + (fields == 1 ? " field" : " fields"));

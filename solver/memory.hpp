@@ -13,10 +13,6 @@ size_t solver_bytes(const DiscreteOperator& op, Method method);
 /// The same from the shape: rings, n_θ, the far field and the stencil.
 size_t solver_bytes(double n_r, double n_theta, FarField far_field, StencilKind stencil, Method method);
 
-/// Bytes of the ψ-sized arrays a run holds besides the solver: ψ_U, ψ_Γ, ψ, the exact ψ for the error
-/// norms and `fields` selected fields (n_r·n_θ doubles each).
-size_t field_bytes(const DiscreteOperator& op, int fields);
-
 /// Memory this process may use: MemAvailable from /proc/meminfo, capped by the cgroup limit.
 size_t available_bytes();
 
@@ -29,8 +25,9 @@ std::string format_bytes(size_t bytes);
 /// Throws std::runtime_error with the estimate if `needed` exceeds `limit` (0: available_bytes()).
 void check_memory(size_t needed, size_t limit, const std::string& what);
 
-/// The memory guard for a case, before anything is built: solver_bytes + field_bytes from the grid's
-/// shape alone. Throws naming the estimate, the grid and the method.
-void check_case_memory(const Case& c, Method method, int fields, size_t limit);
+/// The memory guard for a grid request, before anything is built, from the grid's shape alone: the solver's
+/// bytes plus the ψ-sized arrays a run holds (ψ_U, ψ_Γ, ψ, the exact ψ and `fields` selected fields, n_r·n_θ
+/// doubles each). Throws naming the estimate, the grid and the method.
+void check_grid_memory(const GridRequest& grid, StencilKind stencil, Method method, int fields, size_t limit);
 
 }  // namespace magnus

@@ -1,4 +1,4 @@
-#include "tests/support.hpp"
+#include "support.hpp"
 
 #include <sys/wait.h>
 

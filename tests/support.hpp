@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 #include <vector>
-#include "app/run.hpp"
+#include "postproc/pipeline.hpp"
 
 namespace magnus::test {
 
@@ -12,16 +12,16 @@ inline Case make_case(double alpha, int n_theta, Spacing spacing = Spacing::geom
                       FarField far_field = FarField::exact, StencilKind stencil = StencilKind::five_point,
                       Method method = Method::fft, double outer_radius = 20.0) {
   Case c;
-  c.radius = 0.1;
-  c.speed = 10.0;
-  c.spin = alpha * c.speed / c.radius;
-  c.n_theta = n_theta;
-  c.spacing = spacing;
-  c.far_field = far_field;
-  c.stencil = stencil;
-  c.method = method;
-  c.outer_radius = outer_radius;
-  c.output_fields = {"psi"};
+  c.scene.radius = 0.1;
+  c.scene.speed = 10.0;
+  c.scene.spin = alpha * c.scene.speed / c.scene.radius;
+  c.grid.n_theta = n_theta;
+  c.grid.spacing = spacing;
+  c.grid.far_field = far_field;
+  c.solver.stencil = stencil;
+  c.solver.method = method;
+  c.grid.outer_radius = outer_radius;
+  c.output.fields = {"psi"};
   return c;
 }
 

@@ -7,8 +7,8 @@
 #include <sstream>
 #include <toml++/toml.h>
 
-#include "postproc/hdf5_io.hpp"
-#include "tests/support.hpp"
+#include "io/hdf5_io.hpp"
+#include "support.hpp"
 
 using namespace magnus;
 using namespace magnus::test;

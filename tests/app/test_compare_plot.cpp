@@ -8,10 +8,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/compare.hpp"
-#include "app/plot_command.hpp"
-#include "postproc/hdf5_io.hpp"
-#include "tests/support.hpp"
+#include "io/compare.hpp"
+#include "plot/figures.hpp"
+#include "io/hdf5_io.hpp"
+#include "support.hpp"
 
 using namespace magnus;
 using namespace magnus::test;

@@ -19,8 +19,8 @@
 #include <sstream>
 #include <thread>
 
-#include "postproc/report.hpp"
-#include "tests/support.hpp"
+#include "io/report.hpp"
+#include "support.hpp"
 
 using namespace magnus;
 namespace fs = std::filesystem;

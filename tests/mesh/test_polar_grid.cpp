@@ -45,12 +45,12 @@ TEST_CASE("default n_r makes log-polar cells square", "[mesh]") {
 
 TEST_CASE("grid from a case uses the case's parameters", "[mesh]") {
   Case c;
-  c.radius = 0.5;
-  c.outer_radius = 10.0;
-  c.n_theta = 32;
-  c.n_r = 7;
-  c.spacing = Spacing::uniform;
-  const PolarGrid g = make_grid(c);
+  c.scene.radius = 0.5;
+  c.grid.outer_radius = 10.0;
+  c.grid.n_theta = 32;
+  c.grid.n_r = 7;
+  c.grid.spacing = Spacing::uniform;
+  const PolarGrid g = make_grid(c.grid, c.scene.radius);
   REQUIRE(g.n_r == 7);
   REQUIRE(g.n_theta == 32);
   REQUIRE(g.r.back() == Approx(5.0));
@@ -60,12 +60,12 @@ TEST_CASE("grid from a case uses the case's parameters", "[mesh]") {
 
 TEST_CASE("a geometric case grid has exactly square cells and covers the R asked for", "[mesh]") {
   Case c;
-  c.outer_radius = GENERATE(1.5, 20.0, 1e4);
-  c.n_theta = GENERATE(8, 100, 256);
-  const PolarGrid g = make_grid(c);
-  REQUIRE(g.outer_radius() / g.a >= c.outer_radius * (1 - 1e-12));
+  c.grid.outer_radius = GENERATE(1.5, 20.0, 1e4);
+  c.grid.n_theta = GENERATE(8, 100, 256);
+  const PolarGrid g = make_grid(c.grid, c.scene.radius);
+  REQUIRE(g.outer_radius() / g.a >= c.grid.outer_radius * (1 - 1e-12));
   // At most one cell more than asked, and never fewer than two cells.
-  const double largest = std::max(c.outer_radius * std::exp(g.d_theta), std::exp(2 * g.d_theta));
+  const double largest = std::max(c.grid.outer_radius * std::exp(g.d_theta), std::exp(2 * g.d_theta));
   REQUIRE(g.outer_radius() / g.a < largest * (1 + 1e-12));
   for (int i = 0; i + 1 < g.n_r; ++i) REQUIRE(g.d_xi(i) == Approx(g.d_theta).epsilon(1e-12));
 }

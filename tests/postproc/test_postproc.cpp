@@ -1,10 +1,10 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "postproc/exact.hpp"
-#include "postproc/fd_weights.hpp"
+#include "physics/exact.hpp"
+#include "mesh/fd_weights.hpp"
 #include "postproc/forces.hpp"
-#include "tests/support.hpp"
+#include "support.hpp"
 
 using namespace magnus;
 using magnus::test::make_case;
@@ -27,33 +27,33 @@ TEST_CASE("finite-difference weights differentiate polynomials of their order ex
 TEST_CASE("forces from the exact surface velocity reproduce Kutta–Joukowski (spectral trapezoid)", "[postproc]") {
   const double alpha = GENERATE(-1.5, 0.0, 0.5, 1.0, 3.0);
   Case c = make_case(alpha, 32);
-  const ExactFlow ex = exact_flow(c);
-  const PolarGrid g = make_grid(c.radius, 20.0, 10, 32, Spacing::geometric);
+  const ExactFlow ex = exact_flow(c.scene);
+  const PolarGrid g = make_grid(c.scene.radius, 20.0, 10, 32, Spacing::geometric);
   std::vector<double> u;
-  for (double th : g.theta) u.push_back(ex.u_theta(c.radius, th));
-  const Forces f = compute_forces(c, surface_from_u_theta(g, c, u));
-  const double q = 0.5 * c.density * c.speed * c.speed * 2 * c.radius;
-  REQUIRE(f.lift == Approx(-c.density * c.speed * c.circulation()).margin(1e-13 * q));
+  for (double th : g.theta) u.push_back(ex.u_theta(c.scene.radius, th));
+  const Forces f = compute_forces(c.scene, surface_from_u_theta(g, c.scene, u));
+  const double q = 0.5 * c.scene.density * c.scene.speed * c.scene.speed * 2 * c.scene.radius;
+  REQUIRE(f.lift == Approx(-c.scene.density * c.scene.speed * c.scene.Gamma()).margin(1e-13 * q));
   REQUIRE(std::fabs(f.drag) <= 1e-13 * q);
   REQUIRE(*f.cl == Approx(-2 * M_PI * alpha).margin(1e-13));
   REQUIRE(*f.cl_seed_estimate == Approx(-4 * alpha).margin(1e-15));
-  REQUIRE(f.circulation_measured == Approx(c.circulation()).margin(1e-14));
-  REQUIRE(f.delta_p_top_bottom == Approx(4 * c.density * c.speed * c.radius * c.spin).margin(1e-9));
-  REQUIRE(f.delta_p_seed_estimate == Approx(2 * c.density * c.speed * c.radius * c.spin).margin(1e-12));
+  REQUIRE(f.circulation_measured == Approx(c.scene.Gamma()).margin(1e-14));
+  REQUIRE(f.delta_p_top_bottom == Approx(4 * c.scene.density * c.scene.speed * c.scene.radius * c.scene.spin).margin(1e-9));
+  REQUIRE(f.delta_p_seed_estimate == Approx(2 * c.scene.density * c.scene.speed * c.scene.radius * c.scene.spin).margin(1e-12));
 }
 
 TEST_CASE("computed flow: drag zero, C_L = −2πα, circulation Γ, lift sign F = S ω × v_body", "[postproc]") {
   const double alpha = GENERATE(-2.5, -1.0, 0.5, 1.0, 3.0);
   const FlowResult r = run_case(make_case(alpha, 128));
   const Forces& f = r.forces;
-  const double q = 0.5 * r.c.density * r.c.speed * r.c.speed * 2 * r.c.radius;
+  const double q = 0.5 * r.c.scene.density * r.c.scene.speed * r.c.scene.speed * 2 * r.c.scene.radius;
   REQUIRE(std::fabs(f.drag) <= 1e-12 * q);
   REQUIRE(*f.cl == Approx(-2 * M_PI * alpha).epsilon(5e-4));
-  REQUIRE(f.circulation_measured == Approx(r.c.circulation()).epsilon(1e-10));
+  REQUIRE(f.circulation_measured == Approx(r.c.scene.Gamma()).epsilon(1e-10));
   // ω ẑ × v_body with v_body = −U x̂ is −ωU ŷ: lift points along −y for CCW spin.
-  const double magnus_direction_y = -r.c.spin * r.c.speed;
+  const double magnus_direction_y = -r.c.scene.spin * r.c.scene.speed;
   REQUIRE(f.lift * magnus_direction_y > 0.0);
-  REQUIRE(*f.magnus_S == Approx(2 * M_PI * r.c.density * r.c.radius * r.c.radius).epsilon(5e-4));
+  REQUIRE(*f.magnus_S == Approx(2 * M_PI * r.c.scene.density * r.c.scene.radius * r.c.scene.radius).epsilon(5e-4));
   // The seed estimate is low by π/2 in lift and by 2 in the top−bottom pressure difference.
   REQUIRE(*f.cl_kutta_joukowski / *f.cl_seed_estimate == Approx(M_PI / 2).epsilon(1e-14));
   REQUIRE(f.delta_p_top_bottom / f.delta_p_seed_estimate == Approx(2.0).epsilon(1e-3));
@@ -132,15 +132,15 @@ TEST_CASE("surface Cp against exact; stagnation points on the body and in the fl
     REQUIRE(r.stagnation.size() == 1);
     REQUIRE_FALSE(r.stagnation[0].on_surface);
     REQUIRE(r.stagnation[0].theta == Approx(M_PI / 2));
-    REQUIRE(r.stagnation[0].r / r.c.radius == Approx((4 + std::sqrt(12.0)) / 2).epsilon(2e-3));
-    REQUIRE(r.stagnation_exact[0].r / r.c.radius == Approx((4 + std::sqrt(12.0)) / 2).epsilon(1e-14));
+    REQUIRE(r.stagnation[0].r / r.c.scene.radius == Approx((4 + std::sqrt(12.0)) / 2).epsilon(2e-3));
+    REQUIRE(r.stagnation_exact[0].r / r.c.scene.radius == Approx((4 + std::sqrt(12.0)) / 2).epsilon(1e-14));
   }
 }
 
 TEST_CASE("pure rotation (U = 0): zero force, undefined coefficients, no division by zero", "[postproc]") {
   Case c = make_case(0.0, 64);
-  c.speed = 0.0;
-  c.spin = 100.0;
+  c.scene.speed = 0.0;
+  c.scene.spin = 100.0;
   const FlowResult r = run_case(c);
   REQUIRE_FALSE(r.forces.cl.has_value());
   REQUIRE_FALSE(r.forces.cd.has_value());
@@ -151,11 +151,11 @@ TEST_CASE("pure rotation (U = 0): zero force, undefined coefficients, no divisio
   REQUIRE(std::fabs(r.forces.drag) < 1e-12);
   // The same from the combined ψ (mean-subtracted, not the U-proportional split): round-off only,
   // relative to the surface dynamic pressure ½ρ(Γ/2πa)² over the diameter.
-  const Forces direct = compute_forces(c, compute_surface(r.grid, c, r.fields.psi, derivative_order(c.stencil)));
-  const double u = c.circulation() / (2 * M_PI * c.radius);
-  REQUIRE(std::fabs(direct.lift) < 1e-12 * c.density * u * u * c.radius);
-  REQUIRE(std::fabs(direct.drag) < 1e-12 * c.density * u * u * c.radius);
-  REQUIRE(r.forces.circulation_measured == Approx(c.circulation()).epsilon(1e-10));
+  const Forces direct = compute_forces(c.scene, compute_surface(r.grid, c.scene, r.fields.psi, derivative_order(c.solver.stencil)));
+  const double u = c.scene.Gamma() / (2 * M_PI * c.scene.radius);
+  REQUIRE(std::fabs(direct.lift) < 1e-12 * c.scene.density * u * u * c.scene.radius);
+  REQUIRE(std::fabs(direct.drag) < 1e-12 * c.scene.density * u * u * c.scene.radius);
+  REQUIRE(r.forces.circulation_measured == Approx(c.scene.Gamma()).epsilon(1e-10));
   REQUIRE(r.errors.psi_max_rel < 1e-12);  // ln r is exact on any grid
   REQUIRE(r.stagnation.empty());
 }

@@ -7,7 +7,7 @@
 
 #include "postproc/forces.hpp"
 #include "solver/flow_solver.hpp"
-#include "tests/support.hpp"
+#include "support.hpp"
 
 using namespace magnus;
 
@@ -15,14 +15,14 @@ namespace {
 
 /// Lift per span the naive way: one solve for (U, Γ), u_θ from it, p with p∞, F_y = −Σ p sinθ a Δθ.
 double naive_lift(const Case& c) {
-  const PolarGrid g = make_grid(c);
-  const DiscreteOperator op = make_operator(g, c.stencil, c.far_field);
-  const auto psi = make_solver(g, op, c.method)->solve(c.speed, c.circulation());
-  const std::vector<double> u = surface_u_theta(g, psi, derivative_order(c.stencil));
+  const PolarGrid g = make_grid(c.grid, c.scene.radius);
+  const DiscreteOperator op = make_operator(g, c.solver.stencil, c.grid.far_field);
+  const auto psi = make_solver(g, op, c.solver.method)->solve(c.scene.speed, c.scene.Gamma());
+  const std::vector<double> u = surface_u_theta(g, psi, derivative_order(c.solver.stencil));
   double fy = 0.0;
   for (int j = 0; j < g.n_theta; ++j) {
-    const double p = c.pressure_inf + 0.5 * c.density * (c.speed * c.speed - u[j] * u[j]);
-    fy -= p * std::sin(g.theta[j]) * c.radius * g.d_theta;
+    const double p = c.scene.pressure_inf + 0.5 * c.scene.density * (c.scene.speed * c.scene.speed - u[j] * u[j]);
+    fy -= p * std::sin(g.theta[j]) * c.scene.radius * g.d_theta;
   }
   return fy;
 }
@@ -45,9 +45,9 @@ TEST_CASE("round-off: the reported lift keeps its accuracy at large α and tiny 
   std::printf("\n%s: %-28s %14s %14s\n", to_string(stencil), "case", "naive C_L rel", "magnus C_L rel");
   for (const Hard& h : cases) {
     Case c = test::make_case(1.0, 64, Spacing::geometric, FarField::exact, stencil);
-    c.speed = h.speed;
-    c.spin = h.alpha > 0 ? h.alpha * h.speed / c.radius : 100.0;
-    c.pressure_inf = h.p_inf;
+    c.scene.speed = h.speed;
+    c.scene.spin = h.alpha > 0 ? h.alpha * h.speed / c.scene.radius : 100.0;
+    c.scene.pressure_inf = h.p_inf;
     const FlowResult r = run_case(c);
     const double kj = r.forces.lift_kutta_joukowski;
     const double naive = std::fabs(naive_lift(c) / kj - 1), stable = r.errors.cl_rel;
@@ -58,7 +58,7 @@ TEST_CASE("round-off: the reported lift keeps its accuracy at large α and tiny 
   }
   // The loss is real: at U = 1e-12 the naive lift has no correct digit.
   Case c = test::make_case(1.0, 64, Spacing::geometric, FarField::exact, stencil);
-  c.speed = 1e-12;
-  c.pressure_inf = 1e5;
-  REQUIRE(std::fabs(naive_lift(c) / (-c.density * c.speed * c.circulation()) - 1) > 0.1);
+  c.scene.speed = 1e-12;
+  c.scene.pressure_inf = 1e5;
+  REQUIRE(std::fabs(naive_lift(c) / (-c.scene.density * c.scene.speed * c.scene.Gamma()) - 1) > 0.1);
 }

@@ -2,7 +2,7 @@
 
 #include "solver/flow_solver.hpp"
 #include "solver/memory.hpp"
-#include "tests/support.hpp"
+#include "support.hpp"
 
 using namespace magnus;
 
@@ -22,10 +22,10 @@ TEST_CASE("memory guard: a run above the limit is refused before it allocates, n
   Case c = test::make_case(1.0, 512, Spacing::geometric, FarField::exact, StencilKind::five_point, Method::cholmod);
   REQUIRE_THROWS_WITH(run_case(c, 1, 1 << 20), Catch::Contains("cholmod") && Catch::Contains("needs about") &&
                                                    Catch::Contains("--max-memory 1.0 MiB"));
-  c.method = Method::fft;
+  c.solver.method = Method::fft;
   REQUIRE_THROWS_WITH(run_case(c, 1, 1 << 20), Catch::Contains("fft") && Catch::Contains("needs about"));
   // CHOLMOD's own check after the symbolic analysis: the exact fill, refused before the numeric factor.
-  const PolarGrid g = make_grid(c);
+  const PolarGrid g = make_grid(c.grid, c.scene.radius);
   const DiscreteOperator op = make_operator(g, StencilKind::five_point, FarField::exact);
   REQUIRE_THROWS_WITH(make_cholmod_solver(g, op, 1 << 20), Catch::Contains("cholmod factor"));
   REQUIRE_NOTHROW(make_cholmod_solver(g, op, 1ull << 32));
@@ -44,14 +44,14 @@ TEST_CASE("memory estimates bound the CHOLMOD factor the analysis finds", "[solv
 
 TEST_CASE("memory guard: the grid's shape alone, before anything is built, on every path that solves", "[solver][memory]") {
   Case c = test::make_case(1.0, 256);
-  c.spacing = Spacing::uniform;
-  c.outer_radius = 1e12;  // 4e13 rings: more than an int, refused from the shape
-  const GridShape s = grid_shape(c);
+  c.grid.spacing = Spacing::uniform;
+  c.grid.outer_radius = 1e12;  // 4e13 rings: more than an int, refused from the shape
+  const GridShape s = grid_shape(c.grid);
   REQUIRE(s.n_r > (1L << 40));
   REQUIRE_THROWS_WITH(run_case(c), Catch::Contains("needs about") && Catch::Contains("GiB"));
   c = test::make_case(1.0, 65536);  // 65536 × 31249: about 90 GiB for the FFT path
-  REQUIRE_THROWS_WITH(check_case_memory(c, Method::fft, 0, 0), Catch::Contains("fft solve on 65536"));
-  c.tolerance = 1e-8;
-  c.n_theta = 256;
-  REQUIRE_NOTHROW(check_case_memory(c, Method::fft, 9, 0));
+  REQUIRE_THROWS_WITH(check_grid_memory(c.grid, c.solver.stencil, Method::fft, 0, 0), Catch::Contains("fft solve on 65536"));
+  c.grid.tolerance = 1e-8;
+  c.grid.n_theta = 256;
+  REQUIRE_NOTHROW(check_grid_memory(c.grid, c.solver.stencil, Method::fft, 9, 0));
 }

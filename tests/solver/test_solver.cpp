@@ -3,10 +3,10 @@
 #include <cmath>
 #include <random>
 
-#include "postproc/exact.hpp"
+#include "physics/exact.hpp"
 #include "solver/cholmod_solver.hpp"
 #include "solver/flow_solver.hpp"
-#include "tests/support.hpp"
+#include "support.hpp"
 
 using namespace magnus;
 

@@ -11,7 +11,7 @@
 #include <fstream>
 #include <limits>
 
-#include "tests/support.hpp"
+#include "support.hpp"
 
 using namespace magnus;
 
@@ -36,12 +36,12 @@ double predicted_bound(const FlowResult& r) {
   }
   h = std::max(h, dxi_max);
   // A grid with fewer rings than the wall derivative needs (7 for the 9-point) gets the 5-point bound.
-  const bool nine = r.c.stencil == StencilKind::nine_point && g.n_r > derivative_order(r.c.stencil);
+  const bool nine = r.c.solver.stencil == StencilKind::nine_point && g.n_r > derivative_order(r.c.solver.stencil);
   const bool square = std::fabs(dxi_max / g.d_theta - 1) < 1e-9 && std::fabs(dxi_min / g.d_theta - 1) < 1e-9;
   const double p = nine ? (square ? 6 : 4) : 2, C = nine ? 0.01 : 0.25;
   const double R = g.outer_radius() / g.a, eps = std::numeric_limits<double>::epsilon();
   double bound = C * std::pow(h, p) * (1 + std::log(R)) + eps * double(g.n_theta) * g.n_theta;
-  if (r.c.far_field == FarField::freestream) bound += 2.0 / (R * R);
+  if (r.c.grid.far_field == FarField::freestream) bound += 2.0 / (R * R);
   return std::min(bound, 0.5);  // even the coarsest grid must get C_L to 50 %
 }
 
@@ -52,8 +52,8 @@ void require_finite(const std::vector<double>& v, const char* what) {
 
 /// Run one hard case; every field finite, the lift error within the bound.
 void check(const std::string& label, Case c) {
-  INFO(label << ", " << to_string(c.method) << ", " << to_string(c.stencil) << ", n_theta = " << c.n_theta);
-  c.output_fields.reset();  // every field: all must be finite
+  INFO(label << ", " << to_string(c.solver.method) << ", " << to_string(c.solver.stencil) << ", n_theta = " << c.grid.n_theta);
+  c.output.fields.reset();  // every field: all must be finite
   const FlowResult r = run_case(c);
   for (const auto& name : field_names()) require_finite(r.fields.get(name), name.c_str());
   require_finite(r.surface.u_theta, "surface u_theta");
@@ -62,18 +62,18 @@ void check(const std::string& label, Case c) {
   REQUIRE(std::isfinite(r.forces.lift));
   REQUIRE(std::isfinite(r.forces.drag));
   REQUIRE(std::isfinite(r.errors.psi_max_rel));
-  const double G = c.circulation();
-  if (c.speed > 0.0) {
+  const double G = c.scene.Gamma();
+  if (c.scene.speed > 0.0) {
     const double bound = predicted_bound(r);
-    CAPTURE(label, to_string(c.method), to_string(c.stencil), r.grid.n_theta, r.grid.n_r, r.errors.cl_rel, bound);
+    CAPTURE(label, to_string(c.solver.method), to_string(c.solver.stencil), r.grid.n_theta, r.grid.n_r, r.errors.cl_rel, bound);
     REQUIRE(r.errors.cl_rel <= bound);
     REQUIRE(std::isfinite(*r.forces.cl));
-    table().push_back({label, to_string(c.method), to_string(c.stencil), r.grid.n_theta, r.grid.n_r,
+    table().push_back({label, to_string(c.solver.method), to_string(c.solver.stencil), r.grid.n_theta, r.grid.n_r,
                        std::max(r.grid.d_theta, r.grid.d_xi(0)), r.errors.cl_rel, bound});
   } else {
     // Pure rotation: no force, to round-off of the surface dynamic pressure ½ρ(Γ/2πa)²·a.
-    const double u = G / (2 * M_PI * c.radius);
-    REQUIRE(std::fabs(r.forces.lift) <= 1e-12 * std::max(1e-300, c.density * u * u * c.radius));
+    const double u = G / (2 * M_PI * c.scene.radius);
+    REQUIRE(std::fabs(r.forces.lift) <= 1e-12 * std::max(1e-300, c.scene.density * u * u * c.scene.radius));
     REQUIRE_FALSE(r.forces.cl.has_value());
   }
   if (G != 0.0) REQUIRE(r.errors.circulation_rel <= 1e-6);
@@ -86,38 +86,38 @@ Case base(Method m, StencilKind s, int n = 64) {
 void alpha_sweep(Method m, StencilKind s, const std::vector<double>& alphas) {
   for (double a : alphas) {
     Case c = base(m, s);
-    c.spin = a * c.speed / c.radius;
+    c.scene.spin = a * c.scene.speed / c.scene.radius;
     check("alpha = " + std::to_string(a), c);
   }
 }
 
 void extremes(Method m, StencilKind s) {
   Case c = base(m, s);
-  c.speed = 0.0;
+  c.scene.speed = 0.0;
   check("U = 0", c);
   c = base(m, s);
-  c.speed = 1e-12;
+  c.scene.speed = 1e-12;
   check("U = 1e-12 (alpha = 1e13)", c);
   for (double a : {1e-6, 1e3}) {
     c = base(m, s);
-    c.radius = a;
-    c.spin = c.speed / a;
+    c.scene.radius = a;
+    c.scene.spin = c.scene.speed / a;
     check("radius = " + std::to_string(a), c);
   }
   c = base(m, s);
-  c.outer_radius = 1e8;
+  c.grid.outer_radius = 1e8;
   check("R/a = 1e8 (geometric)", c);
   if (s == StencilKind::five_point) {
     c = base(m, s);
-    c.outer_radius = 1e3;
-    c.spacing = Spacing::uniform;
+    c.grid.outer_radius = 1e3;
+    c.grid.spacing = Spacing::uniform;
     check("R/a = 1e3 (uniform)", c);
-    c.far_field = FarField::freestream;
+    c.grid.far_field = FarField::freestream;
     check("R/a = 1e3 (uniform, freestream)", c);
   }
   for (double A : {0.1, 0.3, 3.0, 10.0}) {
     c = base(m, s);
-    c.n_r = int(std::lround(std::log(20.0) / (A * 2 * M_PI / c.n_theta))) + 1;
+    c.grid.n_r = int(std::lround(std::log(20.0) / (A * 2 * M_PI / c.grid.n_theta))) + 1;
     check("aspect " + std::to_string(A), c);
   }
 }
@@ -146,10 +146,10 @@ TEST_CASE("stability, quick subset: large α, U → 0, tiny and huge bodies, far
   const auto s = GENERATE(StencilKind::five_point, StencilKind::nine_point);
   alpha_sweep(m, s, {0.0, -2.0, 1e4});
   Case c = base(m, s);
-  c.speed = 1e-12;
+  c.scene.speed = 1e-12;
   check("U = 1e-12", c);
   c = base(m, s);
-  c.outer_radius = 1e8;
+  c.grid.outer_radius = 1e8;
   check("R/a = 1e8", c);
 }
 

@@ -1,0 +1,32 @@
+#pragma once
+// Case files (DESIGN §3): TOML with in-code defaults, range checks, loud failure on conflicts.
+#include <stdexcept>
+#include <string>
+#include <vector>
+#include "physics/scene.hpp"
+
+namespace magnus {
+
+/// A case-file problem: one line naming the file and the key.
+struct CaseError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Parse a case from TOML text; `origin` names it in messages. `overrides` are "section.key=value"
+/// strings (the value as in TOML; a bare word is a string). Throws CaseError.
+Case parse_case(const std::string& toml_text, const std::string& origin,
+                const std::vector<std::string>& overrides = {});
+
+/// Read and parse a case file. Throws CaseError (missing file, bad TOML, bad keys or values).
+Case load_case(const std::string& path, const std::vector<std::string>& overrides = {});
+
+/// The resolved case as TOML: every key with its final value.
+std::string to_toml(const Case& c);
+
+/// Every valid "section.key".
+const std::vector<std::string>& case_keys();
+
+/// The nearest valid key to a misspelt one ("" if nothing is close).
+std::string nearest_key(const std::string& key);
+
+}  // namespace magnus

@@ -1,0 +1,24 @@
+#pragma once
+// Number and column formatting shared by every text table and CSV that magnus prints or writes.
+#include <string>
+
+namespace magnus {
+
+/// A table cell: fmt spec applied to v; "—" for a non-finite (undefined) value; no sign on a value that
+/// rounds to zero ("0.000", not "-0.000").
+std::string cell(double v, const char* spec);
+
+/// A duration: "12.3 ms" below one second, else "1.23 s".
+std::string ms(double seconds);
+
+/// Display width of UTF-8 text in columns (every character magnus prints is one column wide).
+size_t display_width(const std::string& s);
+
+/// s padded with spaces on the left (right-aligned) or right (left-aligned) to w columns.
+std::string pad_left(const std::string& s, size_t w);
+std::string pad_right(const std::string& s, size_t w);
+
+/// A CSV field, quoted when it holds a comma, a quote or a newline (RFC 4180).
+std::string csv_field(const std::string& s);
+
+}  // namespace magnus
