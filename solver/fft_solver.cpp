@@ -13,43 +13,19 @@
 #include <stdexcept>
 #include <thread>
 
+#include "solver/fft_modes.hpp"
 #include "solver/flow_solver.hpp"
 
 namespace magnus {
 
-namespace {
-
-using cplx = std::complex<double>;
-
 std::mutex& fftw_planner_mutex() {
-  static std::mutex m;  // FFTW's planner is not thread-safe
+  static std::mutex m;
   return m;
 }
 
-/// Run body(k_begin, k_end) over [0, m) split across `threads` threads.
-template <class F>
-void parallel_over_modes(int m, int threads, const F& body) {
-  if (threads <= 1 || m < 256) return body(0, m);
-  std::vector<std::thread> pool;
-  const int chunk = (m + threads - 1) / threads;
-  for (int t = 1; t < threads; ++t) {
-    const int b = std::min(m, t * chunk), e = std::min(m, (t + 1) * chunk);
-    if (b < e) pool.emplace_back([&body, b, e] { body(b, e); });
-  }
-  body(0, std::min(m, chunk));
-  for (auto& th : pool) th.join();
-}
+namespace {
 
-template <class T>
-struct FftwBuffer {
-  T* p = nullptr;
-  explicit FftwBuffer(size_t n) : p(static_cast<T*>(fftw_malloc(sizeof(T) * std::max<size_t>(n, 1)))) {
-    if (!p) throw std::bad_alloc();
-  }
-  ~FftwBuffer() { fftw_free(p); }
-  FftwBuffer(const FftwBuffer&) = delete;
-  FftwBuffer& operator=(const FftwBuffer&) = delete;
-};
+using cplx = std::complex<double>;
 
 class FftSolver final : public PsiSolver {
  public:
