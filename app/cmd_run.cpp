@@ -8,6 +8,7 @@
 #include "io/case_file.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/report.hpp"
+#include "io/inspect.hpp"
 #include "postproc/pipeline.hpp"
 #include "solver/memory.hpp"
 

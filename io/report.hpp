@@ -1,5 +1,5 @@
 #pragma once
-// Human-readable tables: the run summary and what a result file holds.
+// The run summary `magnus run` prints.
 #include <string>
 #include "postproc/result.hpp"
 
@@ -7,9 +7,6 @@ namespace magnus {
 
 /// The summary `magnus run` prints: grid, solver, timings, lift three ways, ΔP, S, stagnation, errors.
 std::string summary_text(const FlowResult& r, const std::string& output_path);
-
-/// What a result file holds (magnus inspect). Throws std::runtime_error with one line.
-std::string describe_result(const std::string& path);
 
 /// Number formatting used in tables: "undefined" for an empty optional.
 std::string fmt_opt(const std::optional<double>& v, const char* spec = "{:.6g}");

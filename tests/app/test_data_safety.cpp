@@ -20,6 +20,7 @@
 #include <thread>
 
 #include "io/report.hpp"
+#include "io/inspect.hpp"
 #include "support.hpp"
 
 using namespace magnus;

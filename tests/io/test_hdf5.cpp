@@ -4,6 +4,7 @@
 
 #include "io/hdf5_io.hpp"
 #include "io/report.hpp"
+#include "io/inspect.hpp"
 #include "support.hpp"
 
 using namespace magnus;
