@@ -71,7 +71,7 @@ void add_bench_command(CLI::App& app) {
     std::printf("magnus bench — %s (α = %.6g, far field %s, %d thread%s, median of %d)\n", c.title.c_str(),
                 c.scene.spin_ratio(), to_string(c.grid.far_field), opt.threads, opt.threads == 1 ? "" : "s", opt.repeats);
     std::fputs(bench_table(rows).c_str(), stdout);
-    if (!o->csv.empty()) write_text_atomic(o->csv, bench_csv(rows));
+    if (!o->csv.empty()) write_text_output(o->csv, bench_csv(rows));
     if (!o->plot.empty()) {
       std::map<std::string, Series> by;
       for (const auto& r : rows) {

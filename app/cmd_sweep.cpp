@@ -51,7 +51,7 @@ void command_sweep(const SweepOptions& o) {
       ref_error = e.what();
     }
   }
-  if (!o.csv.empty()) write_text_atomic(o.csv, sweep_csv(s));
+  if (!o.csv.empty()) write_text_output(o.csv, sweep_csv(s));
   if (!o.output.empty()) write_sweep_hdf5(s, o.output);
   if (!o.plot.empty()) {
     std::vector<CurvePoint> numeric;

@@ -217,7 +217,7 @@ void command_compare(const std::vector<std::string>& paths, const std::string& c
   check_distinct_paths(paths, {csv});
   if (!csv.empty()) check_writable(csv);
   const Comparison c = compare_results(paths);
-  if (!csv.empty()) write_text_atomic(csv, c.csv);
+  if (!csv.empty()) write_text_output(csv, c.csv);
   std::fputs(c.table.c_str(), stdout);
 }
 

@@ -14,8 +14,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <stdexcept>
 
+#include "io/atomic_file.hpp"
 #include "io/xdmf.hpp"
 
 namespace magnus {
@@ -53,43 +55,6 @@ void check(herr_t status, const std::string& what) {
   if (status >= 0) return;
   const int err = errno;
   fail(err != 0 ? what + ": " + std::strerror(err) : what);
-}
-
-std::string dir_of(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
-}
-
-std::string base_of(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-
-std::string temp_name(const std::string& path) {
-  return dir_of(path) + "/." + base_of(path) + ".tmp-" + std::to_string(::getpid());
-}
-
-/// Removes temporary files of earlier writers of path (".NAME.tmp-PID" beside it) whose process is gone:
-/// a writer killed with SIGKILL cannot remove its own. A live PID (another writer) is left alone.
-void remove_stale_temps(const std::string& path) {
-  const std::string dir = dir_of(path), prefix = "." + base_of(path) + ".tmp-";
-  DIR* d = ::opendir(dir.c_str());
-  if (!d) return;
-  std::vector<std::string> stale;
-  while (const dirent* e = ::readdir(d)) {
-    const std::string name = e->d_name;
-    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
-    const std::string pid = name.substr(prefix.size());
-    if (pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) continue;
-    const long p = std::stol(pid);
-    if (p > 0 && p != long(::getpid()) && ::kill(pid_t(p), 0) != 0 && errno == ESRCH) stale.push_back(name);
-  }
-  ::closedir(d);
-  for (const auto& name : stale) {
-    struct stat st;
-    const std::string full = dir + "/" + name;
-    if (::lstat(full.c_str(), &st) == 0 && S_ISREG(st.st_mode)) std::remove(full.c_str());
-  }
 }
 
 /// Links and attributes stay in the object header (checksummed) however many there are: HDF5's "dense"
@@ -294,72 +259,12 @@ std::string xdmf_path(const std::string& h5_path) {
   return stem + ".xmf";
 }
 
-void check_writable(const std::string& path) {
-  const std::string dir = dir_of(path);
-  if (::access(dir.c_str(), F_OK) != 0) fail(fmt::format("cannot write '{}': directory '{}' does not exist", path, dir));
-  struct stat st;
-  if (::stat(dir.c_str(), &st) == 0 && !S_ISDIR(st.st_mode))
-    fail(fmt::format("cannot write '{}': '{}' is not a directory", path, dir));
-  if (::access(dir.c_str(), W_OK) != 0) fail(fmt::format("cannot write '{}': directory '{}' is not writable", path, dir));
-  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
-    fail(fmt::format("cannot write '{}': it is a directory", path));
-  if (::access(path.c_str(), F_OK) == 0 && ::access(path.c_str(), W_OK) != 0)
-    fail(fmt::format("cannot write '{}': the existing file is not writable", path));
-}
-
-void check_distinct_paths(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs) {
-  namespace fs = std::filesystem;
-  auto key = [](const std::string& p) {
-    std::error_code ec;
-    const fs::path c = fs::weakly_canonical(fs::path(p), ec);
-    return ec ? fs::absolute(p).lexically_normal().string() : c.string();
-  };
-  for (size_t i = 0; i < outputs.size(); ++i) {
-    if (outputs[i].empty()) continue;
-    const std::string o = key(outputs[i]);
-    for (const auto& in : inputs)
-      if (!in.empty() && key(in) == o)
-        fail(fmt::format("cannot write '{}': it would overwrite the input '{}'", outputs[i], in));
-    for (size_t j = 0; j < i; ++j)
-      if (!outputs[j].empty() && key(outputs[j]) == o)
-        fail(fmt::format("cannot write '{}': another output of this command has the same name", outputs[i]));
-  }
-}
-
-namespace {
-/// Writes text to tmp; on failure removes it and returns the reason ("" on success).
-std::string write_text_file(const std::string& tmp, const std::string& text) {
-  errno = 0;
-  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-  out << text;
-  out.close();
-  if (out) return "";
-  const int err = errno;
-  std::remove(tmp.c_str());
-  return err ? std::strerror(err) : "write failed";
-}
-}  // namespace
-
-void write_text_atomic(const std::string& path, const std::string& text) {
-  const std::string tmp = temp_name(path);
-  const std::string error = write_text_file(tmp, text);
-  if (!error.empty()) fail(fmt::format("cannot write '{}': {}", path, error));
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
-    std::remove(tmp.c_str());
-    fail(fmt::format("cannot write '{}': {}", path, std::strerror(err)));
-  }
-}
-
 void write_hdf5_atomic(const std::string& path, const std::function<void(H5Writer&)>& fill,
                        const std::vector<std::pair<std::string, std::string>>& sidecars) {
   quiet_hdf5();
   check_writable(path);
-  remove_stale_temps(path);
-  for (const auto& [name, text] : sidecars) remove_stale_temps(name);
-  const std::string tmp = temp_name(path);
-  std::vector<std::string> side_tmps;
   try {
+    AtomicFile h5(path);
     {
       // The 1.10 file format: its metadata (superblock, object headers, chunk indexes) is checksummed.
       Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
@@ -367,8 +272,8 @@ void write_hdf5_atomic(const std::string& path, const std::function<void(H5Write
       Handle fcpl(H5Pcreate(H5P_FILE_CREATE), H5Pclose);
       keep_compact(fcpl);
       errno = 0;
-      Handle file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, fcpl, fapl), H5Fclose);
-      if (file < 0) check(-1, fmt::format("cannot create '{}'", tmp));
+      Handle file(H5Fcreate(h5.temp().c_str(), H5F_ACC_TRUNC, fcpl, fapl), H5Fclose);
+      if (file < 0) check(-1, fmt::format("cannot create '{}'", h5.temp()));
       {
         H5Writer w(file);
         fill(w);
@@ -382,19 +287,17 @@ void write_hdf5_atomic(const std::string& path, const std::function<void(H5Write
       check(H5Fclose(id), "cannot close");
     }
     // The sidecars too are complete before any file replaces an earlier one.
+    std::vector<std::unique_ptr<AtomicFile>> side;
     for (const auto& [name, text] : sidecars) {
-      side_tmps.push_back(temp_name(name));
-      const std::string error = write_text_file(side_tmps.back(), text);
-      if (!error.empty()) fail(fmt::format("its sidecar '{}': {}", name, error));
+      side.push_back(std::make_unique<AtomicFile>(name));
+      write_text(*side.back(), text);
     }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) fail(std::strerror(errno));
-    for (size_t k = 0; k < sidecars.size(); ++k)
-      if (std::rename(side_tmps[k].c_str(), sidecars[k].first.c_str()) != 0)
-        fail(fmt::format("its sidecar '{}': {}", sidecars[k].first, std::strerror(errno)));
+    h5.commit();
+    for (auto& f : side) f->commit();
   } catch (const std::exception& e) {
-    std::remove(tmp.c_str());
-    for (const auto& t : side_tmps) std::remove(t.c_str());
-    throw std::runtime_error(fmt::format("cannot write '{}': {}", path, e.what()));
+    const std::string what = e.what();
+    if (what.rfind("cannot write '", 0) == 0) throw;
+    throw std::runtime_error(fmt::format("cannot write '{}': {}", path, what));
   }
 }
 

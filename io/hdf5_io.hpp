@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 #include <vector>
+#include "io/atomic_file.hpp"
 #include "postproc/result.hpp"
 
 namespace magnus {
@@ -47,15 +48,6 @@ void write_result(const FlowResult& r, const std::string& path);
 
 /// The .xmf sidecar name for a result path (extension replaced by .xmf).
 std::string xdmf_path(const std::string& h5_path);
-
-/// Check that path can be written (its directory exists and is writable); throws one line if not.
-void check_writable(const std::string& path);
-
-/// Refuse an output path that names an input or another output (one line naming both); "" is skipped.
-void check_distinct_paths(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs);
-
-/// Write text to path atomically (temporary name beside it, then rename).
-void write_text_atomic(const std::string& path, const std::string& text);
 
 /// A read-only magnus-flow file. Throws std::runtime_error with one line on anything malformed.
 class ResultFile {

@@ -10,11 +10,6 @@ namespace magnus {
 /// "WxH" (e.g. 900x700), each 16 … 16384 pixels. Throws std::invalid_argument with one line.
 PlotSize parse_plot_size(const std::string& text);
 
-/// As much of a FlowResult as the plots need, read from a magnus-flow file: the case (title, a, U, ω,
-/// ρ, p∞, circulation model and Γ), the grid (r, θ), the fields that are present (psi, cp), the surface
-/// (θ, u_θ, pressure, cp, cp_exact) and the stagnation points. Throws std::runtime_error with one line.
-FlowResult load_result_for_plot(const std::string& path);
-
 /// The pictures written by `magnus plot`, in order: streamlines, Cp field, surface Cp.
 struct PlotOutcome {
   std::vector<std::string> written;  ///< PNG paths

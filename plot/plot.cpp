@@ -19,6 +19,7 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "io/atomic_file.hpp"
 #include "physics/exact.hpp"
 
 namespace magnus {
@@ -119,27 +120,16 @@ void render_png(const std::string& png, PlotSize size, Draw&& draw) {
 
   std::lock_guard<std::mutex> lock(plplot_mutex());
 
-  // The temporary name, in the target's directory so that rename() is atomic.
-  const size_t slash = png.find_last_of('/');
-  const std::string dir = slash == std::string::npos ? std::string() : png.substr(0, slash + 1);
-  const std::string base = slash == std::string::npos ? png : png.substr(slash + 1);
-  if (base.empty()) fail(png, "the name is a directory");
-  std::string tmp;
-  int fd = -1;
-  for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
-    tmp = dir + "." + base + ".tmp-" + std::to_string(::getpid()) + (attempt ? "-" + std::to_string(attempt) : "");
-    fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd < 0 && errno != EEXIST) fail(png, std::strerror(errno));
+  std::unique_ptr<AtomicFile> out;
+  try {
+    out = std::make_unique<AtomicFile>(png);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(std::string("plot: ") + e.what());
   }
-  if (fd < 0) fail(png, "no free temporary name");
+  const std::string& tmp = out->temp();
   // PLplot takes the FILE* over (and closes it) once plinit has run.
-  FILE* file = ::fdopen(fd, "wb");
-  if (!file) {
-    const int e = errno;
-    ::close(fd);
-    ::unlink(tmp.c_str());
-    fail(png, std::strerror(e));
-  }
+  FILE* file = std::fopen(tmp.c_str(), "wb");
+  if (!file) fail(png, std::strerror(errno));
   bool file_owned = true;
   try {
     // An unknown device would make plinit prompt on stdin: check first.
@@ -164,10 +154,9 @@ void render_png(const std::string& png, PlotSize size, Draw&& draw) {
     }  // ~plstream: end of page, the PNG is written and the file closed
     const std::string bad = check_png(tmp, size);
     if (!bad.empty()) fail(png, bad);
-    if (std::rename(tmp.c_str(), png.c_str()) != 0) fail(png, std::strerror(errno));
+    out->commit();
   } catch (const std::exception& e) {
     if (file_owned) std::fclose(file);
-    ::unlink(tmp.c_str());
     const std::string what = e.what();
     if (what.rfind("plot: ", 0) == 0) throw;
     fail(png, what);

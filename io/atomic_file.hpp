@@ -1,0 +1,54 @@
+#pragma once
+// Every output magnus writes goes through here: it appears only when complete (a temporary file beside
+// the target, renamed onto it), an existing file is replaced only then, a symlink is followed (its target
+// is replaced, the link stays), and nothing that is not a regular file (a directory, a FIFO, a device, a
+// socket) is ever replaced. "-" means standard output for text outputs.
+#include <string>
+#include <vector>
+
+namespace magnus {
+
+/// The file an output path names: symlinks followed to the final target (a dangling link gives the
+/// path it points to). Throws one line naming the path if it is a directory, a FIFO, a device or a socket.
+std::string output_target(const std::string& path);
+
+/// Before solving: the output's directory exists and is writable and the target (if any) is a regular
+/// writable file. "" and "-" pass. Throws one line naming the path.
+void check_writable(const std::string& path);
+
+/// Refuse an output that names an input or another output (after following links): one line naming both.
+/// "" and "-" are skipped.
+void check_distinct_paths(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs);
+
+/// A file being written under a temporary name beside its target (".NAME.tmp-PID", created exclusively),
+/// renamed onto the target by commit(); removed on destruction if never committed. Temporaries that
+/// killed writers of the same target left behind are removed first.
+class AtomicFile {
+ public:
+  explicit AtomicFile(const std::string& path);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+  /// The path as given (for messages).
+  const std::string& path() const { return path_; }
+  /// The temporary file to write (it exists, empty, when the constructor returns).
+  const std::string& temp() const { return temp_; }
+  /// Rename the temporary onto the target. Throws one line naming the path.
+  void commit();
+
+ private:
+  std::string path_, target_, temp_;
+  bool committed_ = false;
+};
+
+/// Write text to the temporary file of f (the file is then complete but not yet committed). Throws one line.
+void write_text(AtomicFile& f, const std::string& text);
+
+/// A text output (CSV, JSON, tables): "-" writes to standard output, anything else atomically.
+void write_text_output(const std::string& path, const std::string& text);
+
+/// The directory part of a path ("." when it has none) and the name part.
+std::string dir_of(const std::string& path);
+std::string base_of(const std::string& path);
+
+}  // namespace magnus
