@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 
+#include "mesh/polar_grid.hpp"
+#include "solver/cholmod_solver.hpp"
 #include "solver/flow_solver.hpp"
 #include "solver/memory.hpp"
 #include "support.hpp"
@@ -18,16 +20,22 @@ TEST_CASE("sizes parse and print", "[solver][memory]") {
   REQUIRE(available_bytes() > (64ull << 20));
 }
 
-TEST_CASE("memory guard: a run above the limit is refused before it allocates, naming the estimate", "[solver][memory]") {
+TEST_CASE("memory guard: a grid above an explicit limit is refused before anything is built", "[solver][memory]") {
   Case c = test::make_case(1.0, 512, Spacing::geometric, FarField::exact, StencilKind::five_point, Method::cholmod);
-  REQUIRE_THROWS_WITH(run_case(c, 1, 1 << 20), Catch::Contains("cholmod") && Catch::Contains("needs about") &&
-                                                   Catch::Contains("--max-memory 1.0 MiB"));
-  c.solver.method = Method::fft;
-  REQUIRE_THROWS_WITH(run_case(c, 1, 1 << 20), Catch::Contains("fft") && Catch::Contains("needs about"));
+  const size_t MiB = 1 << 20;
+  REQUIRE_THROWS_WITH(check_grid_memory(c.grid, c.solver.stencil, Method::cholmod, 0, MiB),
+                      Catch::Contains("cholmod") && Catch::Contains("needs about") &&
+                          Catch::Contains("--max-memory 1.0 MiB"));
+  REQUIRE_THROWS_WITH(check_grid_memory(c.grid, c.solver.stencil, Method::fft, 0, MiB),
+                      Catch::Contains("fft") && Catch::Contains("needs about"));
+  // The same grid passes a limit above its estimate: the refusal is the limit, not the grid.
+  const size_t fft_estimate = solver_bytes(double(grid_shape(c.grid).n_r), 512, c.grid.far_field,
+                                           c.solver.stencil, Method::fft);
+  REQUIRE_NOTHROW(check_grid_memory(c.grid, c.solver.stencil, Method::fft, 0, 2 * fft_estimate + (64 * MiB)));
   // CHOLMOD's own check after the symbolic analysis: the exact fill, refused before the numeric factor.
   const PolarGrid g = make_grid(c.grid, c.scene.radius);
   const DiscreteOperator op = make_operator(g, StencilKind::five_point, FarField::exact);
-  REQUIRE_THROWS_WITH(make_cholmod_solver(g, op, 1 << 20), Catch::Contains("cholmod factor"));
+  REQUIRE_THROWS_WITH(make_cholmod_solver(g, op, MiB), Catch::Contains("cholmod factor"));
   REQUIRE_NOTHROW(make_cholmod_solver(g, op, 1ull << 32));
 }
 
@@ -42,16 +50,18 @@ TEST_CASE("memory estimates bound the CHOLMOD factor the analysis finds", "[solv
   }
 }
 
-TEST_CASE("memory guard: the grid's shape alone, before anything is built, on every path that solves", "[solver][memory]") {
+TEST_CASE("memory guard: the grid's shape alone, against an explicit limit", "[solver][memory]") {
+  const size_t limit = 16ull << 30;  // 16 GiB, whatever the host has free
   Case c = test::make_case(1.0, 256);
   c.grid.spacing = Spacing::uniform;
   c.grid.outer_radius = 1e12;  // 4e13 rings: more than an int, refused from the shape
   const GridShape s = grid_shape(c.grid);
   REQUIRE(s.n_r > (1L << 40));
-  REQUIRE_THROWS_WITH(run_case(c), Catch::Contains("needs about") && Catch::Contains("GiB"));
+  REQUIRE_THROWS_WITH(check_grid_memory(c.grid, c.solver.stencil, Method::fft, 0, limit),
+                      Catch::Contains("needs about") && Catch::Contains("GiB"));
   c = test::make_case(1.0, 65536);  // 65536 × 31249: about 90 GiB for the FFT path
-  REQUIRE_THROWS_WITH(check_grid_memory(c.grid, c.solver.stencil, Method::fft, 0, 0), Catch::Contains("fft solve on 65536"));
-  c.grid.tolerance = 1e-8;
-  c.grid.n_theta = 256;
-  REQUIRE_NOTHROW(check_grid_memory(c.grid, c.solver.stencil, Method::fft, 9, 0));
+  REQUIRE_THROWS_WITH(check_grid_memory(c.grid, c.solver.stencil, Method::fft, 0, limit),
+                      Catch::Contains("fft solve on 65536"));
+  c.grid.n_theta = 256;  // 256 × 123 with 9 fields: a few MiB
+  REQUIRE_NOTHROW(check_grid_memory(c.grid, c.solver.stencil, Method::fft, 9, limit));
 }
