@@ -163,10 +163,10 @@ Surface surface_from_u_theta(const PolarGrid& g, const Scene& scene, std::vector
 
 Surface surface_from_basis(const PolarGrid& g, const Scene& scene, const std::vector<double>& s_U,
                            const std::vector<double>& s_Gamma) {
-  const double U = scene.speed, G = scene.Gamma(), mU = mean_of(s_U);
+  const double U = scene.speed, Gamma = scene.Gamma(), mU = mean_of(s_U);
   std::vector<double> fluct(s_U.size());
   for (size_t j = 0; j < s_U.size(); ++j) fluct[j] = U * (s_U[j] - mU);
-  return surface_from_split(g, scene, U * mU + G * mean_of(s_Gamma), std::move(fluct));
+  return surface_from_split(g, scene, U * mU + Gamma * mean_of(s_Gamma), std::move(fluct));
 }
 
 Surface compute_surface(const PolarGrid& g, const Scene& scene, const std::vector<double>& psi, int order) {

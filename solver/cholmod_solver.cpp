@@ -34,12 +34,12 @@ std::vector<double> exterior_circulant(const DiscreteOperator& op) {
 
 SpMat assemble_matrix(const DiscreteOperator& op, bool lower_only) {
   const int n = op.n_theta, L = op.last_ring();
-  const long N = op.unknowns();
+  const long n_unknowns = op.unknowns();
   const long c_index = long(L) * n;  // the freestream constant C, if any
   auto idx = [n](int i, int j) { return long(i - 1) * n + ((j % n) + n) % n; };
   std::vector<Triplet> t;
   const bool exact = op.far_field == FarField::exact;
-  t.reserve(size_t(N) * (lower_only ? 5 : 9) + (exact ? size_t(n) * n : 2 * size_t(n) + 1));
+  t.reserve(size_t(n_unknowns) * (lower_only ? 5 : 9) + (exact ? size_t(n) * n : 2 * size_t(n) + 1));
   // Each row is built from its own equation; symmetry is a property of the stencil, not imposed here.
   auto add = [&t, lower_only](long row, long col, double v) {
     if (v != 0.0 && (!lower_only || col <= row)) t.emplace_back(row, col, v);
@@ -70,7 +70,7 @@ SpMat assemble_matrix(const DiscreteOperator& op, bool lower_only) {
     for (int j = 0; j < n; ++j)
       for (int l = 0; l < n; ++l) add(idx(L, j), idx(L, l), c[size_t((j - l + n) % n)]);
   }
-  SpMat A(N, N);
+  SpMat A(n_unknowns, n_unknowns);
   A.setFromTriplets(t.begin(), t.end());
   return A;
 }

@@ -67,9 +67,9 @@ ModeSolver::ModeSolver(const PolarGrid& grid, const std::vector<double>& sigma, 
     if (!(d_xi_[i] > 0.0) || !std::isfinite(d_xi_[i]))
       throw std::invalid_argument("ModeSolver: grid.xi must increase strictly");
   }
-  const int N = n_r_ - 1;
+  const int i_outer = n_r_ - 1;
   h_.assign(size_t(L_) + 1, 0.0);
-  for (int i = 1; i <= L_; ++i) h_[i] = i < N ? 0.5 * (d_xi_[i - 1] + d_xi_[i]) : 0.5 * d_xi_[N - 1];
+  for (int i = 1; i <= L_; ++i) h_[i] = i < i_outer ? 0.5 * (d_xi_[i - 1] + d_xi_[i]) : 0.5 * d_xi_[i_outer - 1];
   factor(sigma);
 
   plans_ = std::make_unique<Plans>();
@@ -100,12 +100,12 @@ void ModeSolver::factor(const std::vector<double>& sigma) {
   upper_.resize(size_t(L_) * m_);
   std::vector<double> lambda(m_);
   for (int k = 0; k < m_; ++k) lambda[k] = (2.0 - 2.0 * std::cos(k * d_theta_)) / (d_theta_ * d_theta_);
-  const int N = n_r_ - 1;
+  const int i_outer = n_r_ - 1;
   std::atomic<bool> ok{true};
   parallel_over_modes(m_, threads_, [&](int kb, int ke) {
     bool good = true;
     for (int i = 1; i <= L_; ++i) {
-      const double wm = 1.0 / d_xi_[i - 1], wp = i < N ? 1.0 / d_xi_[i] : 0.0;
+      const double wm = 1.0 / d_xi_[i - 1], wp = i < i_outer ? 1.0 / d_xi_[i] : 0.0;
       const double off_up = i < L_ ? -wp : 0.0;  // T(i,i+1)
       for (int k = kb; k < ke; ++k) {
         double d = wm + wp + h_[i] * (lambda[k] + sigma[i]);
@@ -129,7 +129,7 @@ std::vector<double> ModeSolver::solve(const std::vector<double>& f, const std::v
   require_finite(f, "f");
   require_finite(g_wall, "g_wall");
   require_finite(g_outer, "g_outer");
-  const int N = n_r_ - 1;
+  const int i_outer = n_r_ - 1;
   // Right-hand side of rings 1…L in physical space (equation times −h_i), boundary values moved over.
   std::vector<double> u(size_t(n_r_) * n);
   double* rhs = u.data() + n;  // rings 1…L of u hold the right-hand side, then the solution
@@ -137,7 +137,7 @@ std::vector<double> ModeSolver::solve(const std::vector<double>& f, const std::v
     for (size_t j = 0; j < n; ++j) rhs[(i - 1) * n + j] = -h_[i] * f[i * n + j];
   for (size_t j = 0; j < n; ++j) rhs[j] += g_wall[j] / d_xi_[0];
   if (outer_ == OuterBoundary::dirichlet)
-    for (size_t j = 0; j < n; ++j) rhs[(L_ - 1) * n + j] += g_outer[j] / d_xi_[N - 1];
+    for (size_t j = 0; j < n; ++j) rhs[(L_ - 1) * n + j] += g_outer[j] / d_xi_[i_outer - 1];
   else
     for (size_t j = 0; j < n; ++j) rhs[(L_ - 1) * n + j] += g_outer[j];
 
@@ -156,7 +156,7 @@ std::vector<double> ModeSolver::solve(const std::vector<double>& f, const std::v
   const double scale = 1.0 / double(n);
   for (size_t q = 0; q < size_t(L_) * n; ++q) rhs[q] *= scale;
   std::copy(g_wall.begin(), g_wall.end(), u.begin());
-  if (outer_ == OuterBoundary::dirichlet) std::copy(g_outer.begin(), g_outer.end(), u.begin() + N * n);
+  if (outer_ == OuterBoundary::dirichlet) std::copy(g_outer.begin(), g_outer.end(), u.begin() + i_outer * n);
   return u;
 }
 

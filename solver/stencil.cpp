@@ -66,12 +66,12 @@ DiscreteOperator make_operator(const PolarGrid& grid, StencilKind stencil, FarFi
   op.stencil = stencil;
   op.far_field = far_field;
   op.r_outer = grid.outer_radius();
-  const int N = grid.n_r - 1;
-  const double dxi_ext = grid.d_xi(N - 1);  // the exterior continues with the last ξ spacing
+  const int i_outer = grid.n_r - 1;
+  const double dxi_ext = grid.d_xi(i_outer - 1);  // the exterior continues with the last ξ spacing
   op.r_ghost = op.r_outer * std::exp(dxi_ext);
   op.ring.resize(grid.n_r);
-  for (int i = 1; i <= N; ++i) {
-    const double dm = grid.d_xi(i - 1), dp = i < N ? grid.d_xi(i) : dxi_ext;
+  for (int i = 1; i <= i_outer; ++i) {
+    const double dm = grid.d_xi(i - 1), dp = i < i_outer ? grid.d_xi(i) : dxi_ext;
     op.ring[i] = stencil == StencilKind::nine_point ? nine_point(dp, grid.d_theta)
                                                    : five_point(dm, dp, grid.d_theta);
   }
@@ -79,10 +79,10 @@ DiscreteOperator make_operator(const PolarGrid& grid, StencilKind stencil, FarFi
   op.ring[0] = stencil == StencilKind::nine_point ? nine_point(grid.d_xi(0), grid.d_theta)
                                                  : five_point(grid.d_xi(0), grid.d_xi(0), grid.d_theta);
   op.w.resize(grid.n_r);
-  for (int i = 0; i <= N; ++i) op.w[i] = -(op.ring[i].a[2] + 2.0 * op.ring[i].b[2]);
+  for (int i = 0; i <= i_outer; ++i) op.w[i] = -(op.ring[i].a[2] + 2.0 * op.ring[i].b[2]);
   if (far_field == FarField::exact) {
     // The exterior is an infinite uniform-ξ grid with the same stencil: mode k decays like μ_k^m.
-    const RingStencil ext = op.ring[N];
+    const RingStencil ext = op.ring[i_outer];
     op.mu.resize(grid.n_theta / 2 + 1);
     for (int k = 0; k <= grid.n_theta / 2; ++k) {
       const double c = 2.0 * std::cos(k * grid.d_theta);
@@ -110,7 +110,7 @@ BoundaryData boundary_data(const DiscreteOperator& op, const PolarGrid& grid, do
     // Circulation row: w·(Σ_j ψ_{L,j} − n·C − Σ_j g_j) = Γ, written as n·w·C − w·Σψ_L = −Γ − w·Σg.
     bd.c_rhs = -Gamma - op.w[L] * g_sum;
   } else {
-    // Ghost ring N+1: mode 0 carries the circulation (ψ̄_{N+1} = ψ̄_N − Γ/(n·w)); mode 1 is the
+    // Ghost ring N+1 (N = i_outer): mode 0 carries the circulation (ψ̄_{N+1} = ψ̄_N − Γ/(n·w)); mode 1 is the
     // growing freestream g = U r sinθ plus a decaying remainder: ψ_{N+1} − g_{N+1} = μ_1 (ψ_N − g_N).
     const double t1 = op.symbol(L, +1, 1);
     const double growth = op.r_ghost - op.mu[1] * op.r_outer;
