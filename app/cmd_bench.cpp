@@ -10,7 +10,7 @@
 #include "io/case_file.hpp"
 #include "app/commands.hpp"
 #include "io/hdf5_io.hpp"
-#include "plot/plot.hpp"
+#include "plot/curves.hpp"
 
 namespace magnus {
 
@@ -73,16 +73,27 @@ void add_bench_command(CLI::App& app) {
     std::fputs(bench_table(rows).c_str(), stdout);
     if (!o->csv.empty()) write_text_output(o->csv, bench_csv(rows));
     if (!o->plot.empty()) {
-      std::map<std::string, Series> by;
+      // One joined point set per method and stencil; the legend goes beside the plot, off the data.
+      std::map<std::string, PointSet> by;
       for (const auto& r : rows) {
-        Series& s = by[r.method + " " + r.stencil];
+        PointSet& s = by[r.method + " " + r.stencil];
         s.label = r.method + ", " + r.stencil;
+        s.joined = true;
         if (r.cl_rel > 0) s.points.push_back({r.total_s * 1e3, r.cl_rel});
       }
-      std::vector<Series> series;
-      for (auto& [k, s] : by) series.push_back(s);
-      plot_loglog("C_L error against time: " + c.title, "time for one lift figure (ms)", "relative C_L error",
-                  series, o->plot);
+      const Colour colours[] = {Colour::blue, Colour::red, Colour::green, Colour::purple};
+      std::vector<PointSet> series;
+      for (auto& [k, s] : by) {
+        s.colour = colours[series.size() % 4];
+        s.marker = int(series.size());
+        series.push_back(s);
+      }
+      CurvePage page;
+      page.title = "C_L error against time: " + literal_text(c.title);
+      page.xlabel = "time for one lift figure (ms)";
+      page.ylabel = "relative C_L error";
+      page.log_x = page.log_y = true;
+      plot_curves(page, {}, series, o->plot);
     }
   });
 }

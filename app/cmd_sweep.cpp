@@ -13,7 +13,7 @@
 #include "io/reference_file.hpp"
 #include "io/sweep_file.hpp"
 #include "plot/figures.hpp"
-#include "plot/plot.hpp"
+#include "plot/curves.hpp"
 
 namespace magnus {
 
@@ -54,22 +54,20 @@ void command_sweep(const SweepOptions& o) {
   if (!o.csv.empty()) write_text_output(o.csv, sweep_csv(s));
   if (!o.output.empty()) write_sweep_hdf5(s, o.output);
   if (!o.plot.empty()) {
-    std::vector<CurvePoint> numeric;
+    // The curves come from physics/ (lift_figure): the plot only draws them.
+    LiftSweep l;
+    l.by_circulation = !by_spin;
+    l.base = s.base.scene;
+    l.title = s.base.title;
+    l.n_theta = s.grid.n_theta;
+    l.n_r = s.grid.n_r;
     for (const auto& p : s.points) {
       const SweepRow w = sweep_row(s, p);
-      numeric.push_back({w.alpha, w.cl});
+      l.x.push_back(by_spin ? w.alpha : w.circulation);
+      l.cl.push_back(w.cl);
     }
-    std::vector<ReferenceSet> sets;
-    if (ref)
-      for (const auto& d : ref->datasets) {
-        ReferenceSet set{d.label, {}};
-        for (const auto& p : d.points) set.points.push_back({p.alpha, p.cl});
-        sets.push_back(std::move(set));
-      }
-    const std::string title = fmt::format("Lift against {} (potential flow, n_θ × n_r = {} × {})",
-                                          by_spin ? "spin ratio" : "circulation", s.grid.n_theta, s.grid.n_r);
-    plot_sweep(title, numeric, sets, o.plot, size,
-               by_spin ? std::string() : std::string("equivalent spin ratio Γ/(2πaU)"));
+    const CurveFigure f = lift_figure(l, ref ? &*ref : nullptr);
+    plot_curves(f.page, f.lines, f.points, o.plot, size);
   }
   if (!ref_error.empty() && (!o.quiet || !o.plot.empty()))
     std::fprintf(stderr, "magnus: note: viscous reference data not shown: %s\n", ref_error.c_str());

@@ -2,13 +2,17 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
 
+#include "io/reference_file.hpp"
 #include "io/result_reader.hpp"
+#include "physics/exact.hpp"
+#include "plot/sweep_reader.hpp"
 
 namespace magnus {
 
@@ -29,15 +33,263 @@ PlotSize parse_plot_size(const std::string& text) {
 
 namespace {
 
-std::string stem_of(const std::string& path) {
-  const std::filesystem::path p(path);
-  return p.stem().string();
+std::string num(double v, int digits = 3) { return v == 0.0 ? "0" : fmt::format("{:.{}g}", v, digits); }
+
+/// "α = 1.5" (with the circulation when it is given, or "U = 0").
+std::string flow_label(const Case& c) {
+  if (c.scene.speed <= 0.0) return fmt::format("U = 0, Γ = {} m²/s", num(c.scene.Gamma()));
+  std::string s = fmt::format("α = {}", num(c.scene.spin_ratio(), 4));
+  if (c.scene.circulation_given) s += fmt::format(", Γ = {} m²/s", num(c.scene.Gamma()));
+  return s;
 }
+
+std::string case_title(const std::string& title) {
+  return literal_text(title.empty() ? std::string("Spinning cylinder") : title);
+}
+
+FieldView view_of(const FlowResult& r, const std::string& what) {
+  FieldView v;
+  v.title = case_title(r.c.title) + ": " + what + ", " + flow_label(r.c);
+  v.unit = r.grid.a;
+  v.half_width = view_half_width(r);
+  v.body_radius = 1.0;
+  return v;
+}
+
+PolarField polar(const PolarGrid& g, const std::vector<double>& values) { return {g.r, g.theta, values}; }
+
+CurvePoint in_units(const StagnationPoint& s, double a) {
+  return {s.r / a * std::cos(s.theta), s.r / a * std::sin(s.theta)};
+}
+
+bool inside(const CurvePoint& p, double w) { return std::fabs(p.x) <= w && std::fabs(p.y) <= w; }
 
 }  // namespace
 
-PlotOutcome plot_result_file(const std::string& path, const std::string& dir_in, PlotSize size) {
-  const FlowResult r = read_result(path);
+double view_half_width(const FlowResult& r) {
+  const double a = r.grid.a, R = r.grid.outer_radius() / a;
+  double w = std::min(R, 4.0);
+  for (const auto* set : {&r.stagnation, &r.stagnation_exact})
+    for (const auto& s : *set)
+      if (!s.on_surface) w = std::max(w, std::min(R, 1.2 * s.r / a));
+  return w;
+}
+
+StreamlinePicture streamline_picture(const FlowResult& r) {
+  const PolarGrid& g = r.grid;
+  if (r.fields.psi.size() != size_t(g.nodes()) || g.n_r < 2 || g.n_theta < 4)
+    throw std::runtime_error("plot: the result has no psi field");
+  StreamlinePicture p;
+  p.view = view_of(r, "streamlines");
+  p.psi = polar(g, r.fields.psi);
+  const double w = p.view.half_width;
+  for (const auto& s : r.stagnation) {
+    const CurvePoint q = in_units(s, g.a);
+    if (inside(q, w)) {
+      p.numeric_points.push_back(q);
+      if (!s.on_surface) {
+        p.has_saddle = true;
+        p.saddle = q;
+      }
+    } else {
+      p.notes.push_back(fmt::format("numeric stagnation point at r = {}a: outside the window", num(s.r / g.a)));
+    }
+  }
+  for (const auto& s : r.stagnation_exact) {
+    const CurvePoint q = in_units(s, g.a);
+    if (inside(q, w))
+      p.exact_points.push_back(q);
+    else
+      p.notes.push_back(fmt::format("exact stagnation point at r = {}a: outside the window", num(s.r / g.a)));
+  }
+  return p;
+}
+
+ContourFieldPicture cp_picture(const FlowResult& r) {
+  const PolarGrid& g = r.grid;
+  if (r.fields.cp.empty()) throw std::runtime_error("plot: the result has no cp field");
+  if (r.fields.cp.size() != size_t(g.nodes())) throw std::runtime_error("plot: the cp field does not match the grid");
+  ContourFieldPicture p;
+  p.view = view_of(r, "pressure coefficient");
+  p.field = polar(g, r.fields.cp);
+  p.bar_label = "Cp";
+  for (const auto& s : r.stagnation) {
+    const CurvePoint q = in_units(s, g.a);
+    if (inside(q, p.view.half_width)) p.points.push_back(q);
+  }
+  p.footnote = "dashed: Cp = 0 (|u| = U);  red dots: stagnation points (Cp = 1)";
+  return p;
+}
+
+CurveFigure surface_cp_figure(const FlowResult& r) {
+  const Surface& s = r.surface;
+  if (s.cp.empty() || r.c.scene.speed <= 0.0)
+    throw std::runtime_error("plot: the result has no surface Cp (undefined when U = 0)");
+  if (s.theta.size() != s.cp.size()) throw std::runtime_error("plot: surface theta and Cp differ in length");
+  CurveFigure f;
+  f.page.title = case_title(r.c.title) + ": surface pressure, " + flow_label(r.c);
+  f.page.xlabel = "θ (degrees, counter-clockwise from +x: 0° rear, 180° front)";
+  f.page.ylabel = "Cp = (p − p_∞) / (½ρU^2)";
+  f.page.fixed_x = true;
+  f.page.x_min = 0.0;
+  f.page.x_max = 360.0;
+  f.page.x_tick = 45.0;
+  f.page.x_subticks = 3;
+  // The exact surface Cp of this scene's circulation (spin or given): 1 − (u_θ(a, θ)/U)².
+  const ExactFlow ex = exact_flow(r.c.scene);
+  LineCurve exact{"exact, 1 − (u_θ/U)^2", {}, Colour::blue, LineStyle::solid, 2.0};
+  const int n_fine = 721;
+  for (int k = 0; k < n_fine; ++k) {
+    const double th = 2 * M_PI * k / (n_fine - 1);
+    exact.points.push_back({th * 180.0 / M_PI, ex.cp(ex.a, th)});
+  }
+  // At most ~90 markers: on a fine grid every node would merge into a band hiding the line.
+  const size_t n = s.cp.size(), stride = std::max<size_t>(1, (n + 89) / 90);
+  PointSet numeric;
+  numeric.label = stride == 1 ? fmt::format("numeric, n_θ = {}", n)
+                              : fmt::format("numeric, n_θ = {} (one node in {})", n, stride);
+  for (size_t j = 0; j < n; j += stride) numeric.points.push_back({s.theta[j] * 180.0 / M_PI, s.cp[j]});
+  numeric.points.push_back({360.0, s.cp[0]});  // θ = 0 again at 360°, like the line
+  f.lines.push_back(std::move(exact));
+  f.points.push_back(std::move(numeric));
+  return f;
+}
+
+CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference) {
+  CurveFigure f;
+  const bool by_gamma = s.by_circulation;
+  const double a = s.base.radius, U = s.base.speed;
+  std::string grid;
+  if (s.n_theta > 0) grid = fmt::format(", n_θ × n_r = {} × {}", s.n_theta, s.n_r);
+  f.page.title = fmt::format("{}: lift against {} (potential flow{})", case_title(s.title),
+                             by_gamma ? "circulation" : "spin ratio", grid);
+  f.page.xlabel = by_gamma ? "circulation Γ (m^2/s)" : "spin ratio α = aω/U";
+  f.page.ylabel = "lift coefficient C_L = F_y / (½ρU^2·2a)";
+  double xlo = 0.0, xhi = 0.0;
+  bool any = false;
+  for (double x : s.x)
+    if (std::isfinite(x)) {
+      xlo = any ? std::min(xlo, x) : x;
+      xhi = any ? std::max(xhi, x) : x;
+      any = true;
+    }
+  if (!any) throw std::runtime_error("plot: the sweep has no points");
+  if (!by_gamma) xlo = std::min(xlo, 0.0);
+
+  // The scene at one x: a spin ratio (spin model) or a given circulation with the base spin.
+  auto scene_at = [&](double x) {
+    Scene sc = s.base;
+    if (by_gamma) {
+      sc.circulation_given = true;
+      sc.circulation_value = x;
+    } else {
+      sc.circulation_given = false;
+      sc.spin = x * U / a;
+    }
+    return sc;
+  };
+  // Where the two stagnation points merge on the top (Prandtl's bound on potential-flow lift).
+  Scene merge = s.base;
+  merge.circulation_given = false;
+  merge.spin = 2.0 * U / a;
+  const double x_merge = by_gamma ? merge.Gamma() : merge.spin_ratio();
+  const double bound = std::fabs(exact_flow(merge).cl());
+
+  LineCurve kj{by_gamma ? "Kutta–Joukowski, C_L = −Γ/(Ua)" : "Kutta–Joukowski, C_L = −2πα", {}, Colour::blue,
+               LineStyle::solid, 2.0};
+  for (double x : {xlo, xhi}) kj.points.push_back({x, exact_flow(scene_at(x)).cl()});
+  f.lines.push_back(kj);
+  if (!by_gamma) {
+    LineCurve seed{"seed estimate, C_L = −4α", {}, Colour::green, LineStyle::dashed, 2.0};
+    for (double x : {xlo, xhi}) seed.points.push_back({x, seed_cl(scene_at(x))});
+    f.lines.push_back(seed);
+  } else if (s.base.spin != 0.0) {
+    const double c = seed_cl(s.base);
+    LineCurve seed{fmt::format("seed estimate −4aω/U = {} (spin ω = {} rad/s, fixed)", num(c), num(s.base.spin)),
+                   {{xlo, c}, {xhi, c}}, Colour::green, LineStyle::dashed, 2.0};
+    f.lines.push_back(seed);
+  }
+  // The bound on the side of the data, and where it is reached.
+  double ylo = 0.0, yhi = 0.0;
+  for (const auto& p : f.lines)
+    for (const auto& q : p.points) ylo = std::min(ylo, q.y), yhi = std::max(yhi, q.y);
+  for (double c : s.cl)
+    if (std::isfinite(c)) ylo = std::min(ylo, c), yhi = std::max(yhi, c);
+  LineCurve prandtl{by_gamma ? fmt::format("Prandtl's bound |C_L| = 4π (Γ = ±{} m^2/s)", num(x_merge))
+                             : std::string("Prandtl's bound |C_L| = 4π (α = ±2)"),
+                    {}, Colour::orange, LineStyle::dotted, 1.8};
+  bool labelled = false;
+  for (double sign : {-1.0, 1.0}) {
+    const bool side = sign < 0 ? ylo < 0.0 : yhi > 0.0;
+    if (!side) continue;
+    LineCurve h = prandtl;
+    if (labelled) h.label.clear();
+    labelled = true;
+    h.points = {{xlo, sign * bound}, {xhi, sign * bound}};
+    f.lines.push_back(h);
+    // KJ meets the bound at x = −sign·x_merge (C_L falls as Γ grows).
+    const double xm = -sign * x_merge;
+    if (xm >= xlo && xm <= xhi) {
+      LineCurve vline = prandtl;
+      vline.label.clear();
+      vline.points = {{xm, std::min(ylo, -bound)}, {xm, std::max(yhi, bound)}};
+      vline.points = {{xm, sign < 0 ? std::min(ylo, -bound) : 0.0}, {xm, sign < 0 ? 0.0 : std::max(yhi, bound)}};
+      f.lines.push_back(vline);
+    }
+  }
+  if (reference && !by_gamma) {
+    int k = 0;
+    const Colour colours[] = {Colour::teal, Colour::purple, Colour::brown, Colour::olive, Colour::magenta};
+    for (const auto& d : reference->datasets) {
+      PointSet ps;
+      ps.label = literal_text(d.label);
+      ps.colour = colours[k % 5];
+      ps.marker = 1 + k % 7;
+      for (const auto& p : d.points)
+        if (p.alpha >= xlo && p.alpha <= xhi) ps.points.push_back({p.alpha, p.cl});
+      ++k;
+      if (!ps.points.empty()) f.points.push_back(std::move(ps));
+    }
+  }
+  PointSet numeric{"numeric (potential flow)", {}, Colour::red, 0, false};
+  for (size_t k = 0; k < s.x.size() && k < s.cl.size(); ++k) numeric.points.push_back({s.x[k], s.cl[k]});
+  f.points.push_back(std::move(numeric));
+  return f;
+}
+
+LiftSweep read_lift_sweep(const std::string& path) {
+  const SweepFileData d = read_sweep_columns(path, {"alpha", "circulation", "cl"});
+  if (d.format != "magnus-sweep")
+    throw std::runtime_error(fmt::format("'{}' is not a magnus sweep: format is '{}'", path, d.format));
+  LiftSweep s;
+  s.by_circulation = d.variable == "circulation";
+  const char* xcol = s.by_circulation ? "circulation" : "alpha";
+  for (const char* col : {xcol, "cl"})
+    if (!d.columns.count(col)) throw std::runtime_error(fmt::format("'{}': no /sweep/{}", path, col));
+  s.x = d.columns.at(xcol);
+  s.cl = d.columns.at("cl");
+  if (s.x.size() != s.cl.size()) throw std::runtime_error(fmt::format("'{}': /sweep columns differ in length", path));
+  auto param = [&](const char* name, double dflt) {
+    const auto it = d.parameters.find(name);
+    return it == d.parameters.end() ? dflt : it->second;
+  };
+  s.base.radius = param("radius", 0.0);
+  s.base.speed = param("speed", 0.0);
+  if (!(s.base.radius > 0.0) || !(s.base.speed > 0.0))
+    throw std::runtime_error(fmt::format("'{}': /parameters radius and speed must be positive", path));
+  s.base.spin = param("spin", 0.0);
+  s.base.circulation_given = s.by_circulation;
+  s.title = d.title;
+  s.n_theta = int(param("n_theta", 0.0));
+  s.n_r = int(param("n_r", 0.0));
+  return s;
+}
+
+namespace {
+
+std::string stem_of(const std::string& path) { return std::filesystem::path(path).stem().string(); }
+
+std::string output_base(const std::string& path, const std::string& dir_in) {
   namespace fs = std::filesystem;
   std::string dir = dir_in;
   if (dir.empty()) {
@@ -51,27 +303,56 @@ PlotOutcome plot_result_file(const std::string& path, const std::string& dir_in,
       if (ec) throw std::runtime_error(fmt::format("-o '{}': cannot create the directory: {}", dir, ec.message()));
     }
   }
-  const std::string base = (fs::path(dir) / stem_of(path)).string();
+  return (fs::path(dir) / stem_of(path)).string();
+}
+
+}  // namespace
+
+PlotOutcome plot_result_file(const std::string& path, const std::string& dir, PlotSize size) {
   PlotOutcome out;
+  // A sweep file draws C_L(α) (or C_L(Γ)); anything else goes to the result reader and its messages.
+  bool sweep = false;
+  try {
+    sweep = read_sweep_columns(path, {}).format == "magnus-sweep";
+  } catch (const std::exception&) {
+    sweep = false;
+  }
+  if (sweep) {
+    const LiftSweep s = read_lift_sweep(path);
+    std::optional<ViscousReference> ref;
+    if (!s.by_circulation) try {
+        ref = load_viscous_reference(viscous_reference_path());
+      } catch (const std::exception& e) {
+        out.skipped.push_back(std::string("viscous reference data not shown: ") + e.what());
+      }
+    const CurveFigure f = lift_figure(s, ref ? &*ref : nullptr);
+    const std::string png = output_base(path, dir) + "_cl.png";
+    plot_curves(f.page, f.lines, f.points, png, size);
+    out.written.push_back(png);
+    return out;
+  }
+  const FlowResult r = read_result(path);
+  const std::string base = output_base(path, dir);
   const double U = r.c.scene.speed;
   if (r.fields.psi.empty()) {
     out.skipped.push_back(fmt::format("streamlines skipped: '{}' has no /fields/psi (see output.fields)", path));
   } else {
-    plot_streamlines(r, base + "_streamlines.png", size);
+    plot_streamlines(streamline_picture(r), base + "_streamlines.png", size);
     out.written.push_back(base + "_streamlines.png");
   }
   if (r.fields.cp.empty()) {
     out.skipped.push_back(U > 0.0 ? fmt::format("Cp field skipped: '{}' has no /fields/cp (see output.fields)", path)
                                   : std::string("Cp field skipped: Cp is undefined when U = 0"));
   } else {
-    plot_cp_field(r, base + "_cp.png", size);
+    plot_contour_field(cp_picture(r), base + "_cp.png", size);
     out.written.push_back(base + "_cp.png");
   }
   if (r.surface.cp.empty() || !(U > 0.0)) {
     out.skipped.push_back(U > 0.0 ? fmt::format("surface Cp skipped: '{}' has no /surface/cp", path)
                                   : std::string("surface Cp skipped: Cp is undefined when U = 0"));
   } else {
-    plot_surface_cp(r, base + "_surface_cp.png", size);
+    const CurveFigure f = surface_cp_figure(r);
+    plot_curves(f.page, f.lines, f.points, base + "_surface_cp.png", size);
     out.written.push_back(base + "_surface_cp.png");
   }
   if (out.written.empty()) {

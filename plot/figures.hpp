@@ -1,24 +1,73 @@
 #pragma once
-// `magnus plot FILE [-o DIR] [--size WxH]`: the pictures of a result file, rebuilt from the HDF5 alone.
+// `magnus plot FILE [-o DIR] [--size WxH]`: the pictures of a result file (streamlines, Cp field,
+// surface Cp) or of a sweep file (C_L against α or Γ), rebuilt from the HDF5 alone. This is where the
+// physics meets the plots: the exact curves, the models and the windows are built here from physics/
+// and handed to the plot functions, which only draw.
 #include <string>
 #include <vector>
 
-#include "plot/plot.hpp"
+#include "physics/reference_data.hpp"
+#include "physics/scene.hpp"
+#include "plot/curves.hpp"
+#include "plot/field_plots.hpp"
+#include "postproc/result.hpp"
 
 namespace magnus {
 
 /// "WxH" (e.g. 900x700), each 16 … 16384 pixels. Throws std::invalid_argument with one line.
 PlotSize parse_plot_size(const std::string& text);
 
-/// The pictures written by `magnus plot`, in order: streamlines, Cp field, surface Cp.
+/// A curve plot ready to draw: its page, lines and point sets.
+struct CurveFigure {
+  CurvePage page;
+  std::vector<LineCurve> lines;
+  std::vector<PointSet> points;
+};
+
+/// Half-width of a result's view window in units of a: min(R, 4a), widened to min(R, 1.2 r_s) to show
+/// a free stagnation point at r_s.
+double view_half_width(const FlowResult& r);
+
+/// Streamlines of a result in x/a, y/a: ψ, the numeric and exact stagnation points inside the window
+/// (a point outside it becomes a legend note), the separatrix through a free stagnation point.
+StreamlinePicture streamline_picture(const FlowResult& r);
+
+/// The Cp field of a result in x/a, y/a, colours over the field's range in the window. Throws
+/// std::runtime_error when the result has no Cp field.
+ContourFieldPicture cp_picture(const FlowResult& r);
+
+/// Surface Cp(θ), θ in degrees: the numeric nodes against the exact curve from ExactFlow (the given
+/// circulation or the spin's). Throws std::runtime_error when Cp is undefined (U = 0) or missing.
+CurveFigure surface_cp_figure(const FlowResult& r);
+
+/// The numbers of a lift sweep, as `magnus sweep` computes them or a sweep file stores them.
+struct LiftSweep {
+  bool by_circulation = false;  ///< x is Γ (m²/s) instead of the spin ratio α
+  std::vector<double> x;        ///< α, or Γ in m²/s
+  std::vector<double> cl;       ///< numeric C_L at each x
+  Scene base;                   ///< radius, speed, and (circulation sweep) the constant spin
+  std::string title;            ///< the case's title (shown literally)
+  int n_theta = 0, n_r = 0;     ///< the grid, for the title (0: not shown)
+};
+
+/// C_L against α (or Γ): numeric points, Kutta–Joukowski, the seed estimate (−4α; in a circulation sweep
+/// the constant −4aω/U of the fixed spin, omitted when ω = 0), Prandtl's bound |C_L| = 4π where the
+/// stagnation points merge, and the reference data (spin sweeps only; may be null).
+CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference);
+
+/// Reads a "magnus-sweep" file's /parameters and /sweep columns (alpha, circulation, cl) into a LiftSweep.
+/// Throws std::runtime_error with one line.
+LiftSweep read_lift_sweep(const std::string& path);
+
+/// The pictures written by `magnus plot`, in order.
 struct PlotOutcome {
   std::vector<std::string> written;  ///< PNG paths
   std::vector<std::string> skipped;  ///< one line each: which picture and why
 };
 
-/// Write dir/<stem>_streamlines.png, _cp.png and _surface_cp.png (stem: the file name without its
-/// extension; dir "" means the result's directory). A picture whose data the file lacks is skipped;
-/// throws if nothing can be drawn.
+/// A result file: dir/<stem>_streamlines.png, _cp.png and _surface_cp.png; a sweep file: dir/<stem>_cl.png
+/// (stem: the file name without its extension; dir "" means the file's directory). A picture whose data
+/// the file lacks is skipped; throws if nothing can be drawn.
 PlotOutcome plot_result_file(const std::string& path, const std::string& dir, PlotSize size);
 
 /// `magnus plot`: plot_result_file, the skipped pictures noted on stderr, the written ones on stdout.

@@ -1,12 +1,12 @@
 #pragma once
-// PNG figures with PLplot (pngcairo, headless): streamlines, the Cp field, surface Cp, lift
-// against spin ratio, and speed against error. Every file appears only when complete
-// (written beside the target under a temporary name, then renamed); any failure throws
-// std::runtime_error naming the file and leaves no file behind. Calls are serialised
-// (PLplot keeps global state), so the functions may be called from several threads.
+// What every picture shares: the image size, data points, colours and line styles, the text markup,
+// and where a picture was drawn (PlotFrame: the plot box in pixels and the window it shows), which
+// callers and tests use to find data on the image. Pictures are PNG files written by PLplot
+// (pngcairo); every file appears only when complete (temporary name beside it, then renamed); a
+// failure throws std::runtime_error naming the file and leaves no file behind. Calls are serialised
+// (PLplot keeps global state). No physics here: callers pass the curves and fields.
 #include <string>
 #include <vector>
-#include "postproc/result.hpp"
 
 namespace magnus {
 
@@ -15,39 +15,44 @@ struct PlotSize {
   int width = 1000, height = 800;
 };
 
-/// Streamlines: ψ contours (m²/s) on the polar grid closed over θ = 0, body filled, numeric (dots) and exact (rings) stagnation points, x, y in m, window |x|, |y| ≤ min(R, 4a).
-void plot_streamlines(const FlowResult& r, const std::string& png, PlotSize size = {});
-
-/// Cp field (dimensionless) as filled contours with a colour bar over x, y in m, same window as the streamlines; throws if r.fields.cp is empty.
-void plot_cp_field(const FlowResult& r, const std::string& png, PlotSize size = {});
-
-/// Surface Cp(θ), θ in degrees 0…360: numeric nodes (points) against the exact 1 − (α − 2 sinθ)² (line); throws when Cp is undefined (U = 0).
-void plot_surface_cp(const FlowResult& r, const std::string& png, PlotSize size = {});
-
-/// One (x, y) data point of a curve.
+/// One (x, y) data point, in the units of the plot's axes.
 struct CurvePoint {
   double x, y;
 };
-/// Reference data (e.g. viscous measurements) drawn as labelled points.
-struct ReferenceSet {
-  std::string label;
-  std::vector<CurvePoint> points;
+
+/// Colours of lines and markers (all dark enough to read on white).
+enum class Colour { blue, red, green, purple, orange, teal, brown, magenta, olive, black, grey };
+
+/// How a line is drawn.
+enum class LineStyle { solid, dashed, dotted };
+
+/// A rectangle in pixels, x to the right and y downwards from the image's top-left corner.
+struct PixelRect {
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  /// True when the rectangle has an area.
+  bool empty() const { return !(x1 > x0 && y1 > y0); }
 };
 
-/// C_L against spin ratio α = aω/U: numeric points, Kutta–Joukowski −2πα, seed estimate −4α, Prandtl's bound |C_L| = 4π (α = 2 marked), reference sets with a legend label each.
-/// xlabel replaces the x-axis label when not empty (e.g. the equivalent spin ratio Γ/(2πaU) of a circulation sweep).
-void plot_sweep(const std::string& title, const std::vector<CurvePoint>& numeric,
-                const std::vector<ReferenceSet>& references, const std::string& png, PlotSize size = {},
-                const std::string& xlabel = {});
-
-/// One labelled series of a log-log plot (e.g. one method and stencil).
-struct Series {
-  std::string label;
-  std::vector<CurvePoint> points;
+/// Where a picture was drawn: the plot box, the window (axis units) it shows, and the boxes of the
+/// legend and the colour bar (empty when there is none).
+struct PlotFrame {
+  PixelRect box;                       ///< the plot box (its frame lines)
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;  ///< axis range shown in the box (log10 on a log axis)
+  PixelRect legend;                    ///< the legend's box
+  PixelRect colour_bar;                ///< the colour bar's shaded strip
+  double bar_lo = 0, bar_hi = 0;       ///< the values at the bottom and top of the colour bar
+  std::vector<double> levels;          ///< contour levels drawn (field plots)
+  /// Pixel column of axis value x (inside the box when x0 ≤ x ≤ x1).
+  double px(double x) const { return box.x0 + (x - x0) / (x1 - x0) * (box.x1 - box.x0); }
+  /// Pixel row of axis value y.
+  double py(double y) const { return box.y1 - (y - y0) / (y1 - y0) * (box.y1 - box.y0); }
 };
 
-/// Log-log plot (e.g. error against time, the Pareto front): a line with markers per series; non-positive values are skipped, throws if nothing is left.
-void plot_loglog(const std::string& title, const std::string& xlabel, const std::string& ylabel,
-                 const std::vector<Series>& series, const std::string& png, PlotSize size = {});
+/// Text for labels and titles: "_x" or "_{…}" is a subscript, "^x" or "^{…}" a superscript, "\_" and
+/// "\^" are literal; translated to PLplot's escapes ("#d…#u", "#u…#d", "##" for '#').
+std::string plplot_text(const std::string& text);
+
+/// Escapes user text (a case title) so that plplot_text shows it literally.
+std::string literal_text(const std::string& text);
 
 }  // namespace magnus

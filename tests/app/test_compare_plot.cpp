@@ -11,6 +11,7 @@
 #include "io/compare.hpp"
 #include "plot/figures.hpp"
 #include "io/hdf5_io.hpp"
+#include "plot/png_image.hpp"
 #include "support.hpp"
 
 using namespace magnus;
@@ -209,4 +210,40 @@ TEST_CASE("magnus plot skips what the file lacks and fails in one line when noth
   CHECK(parse_plot_size("900x700").height == 700);
   REQUIRE_THROWS_AS(parse_plot_size("900x"), std::invalid_argument);
   REQUIRE_THROWS_AS(parse_plot_size("-9x700"), std::invalid_argument);
+}
+
+TEST_CASE("magnus plot draws a sweep file as C_L against α, or against Γ for a circulation sweep", "[app][plot]") {
+  const std::string dir = test::temp_dir("plot-sweep");
+  const std::string cases = std::string(MAGNUS_SOURCE_DIR) + "/cases/spin_ratio_1.toml";
+  REQUIRE(magnus_cmd({"sweep", cases, "--spin-ratio", "0:3:0.5", "--set", "grid.n_theta=32", "-o", dir + "/s.h5",
+                      "-q"}, dir).status == 0);
+  const Outcome o = magnus_cmd({"plot", dir + "/s.h5", "--size", "640x480"}, dir);
+  CAPTURE(o.err);
+  REQUIRE(o.status == 0);
+  CHECK(o.out.find(dir + "/s_cl.png") != std::string::npos);
+  CHECK(png_size(dir + "/s_cl.png") == std::pair<unsigned long, unsigned long>(640, 480));
+  // The numeric points are drawn where C_L = −2πα puts them.
+  const LiftSweep s = read_lift_sweep(dir + "/s.h5");
+  REQUIRE(s.x.size() == 7);
+  CHECK(s.cl[2] == Approx(-2 * M_PI).epsilon(0.01));
+  const CurveFigure f = lift_figure(s, nullptr);
+  const PlotFrame frame = plot_curves(f.page, f.lines, f.points, dir + "/again.png", {640, 480});
+  const Image img = read_png(dir + "/again.png");
+  auto red_near = [&](const Image& im, double x, double y) {
+    return im.near(frame.px(x), frame.py(y), 4, [&](int u, int v) { return im.red(u, v); });
+  };
+  CHECK(red_near(img, 1.0, -2 * M_PI));
+  CHECK(red_near(img, 3.0, -6 * M_PI));
+  CHECK_FALSE(red_near(img.blank(), 3.0, -6 * M_PI));
+
+  // A circulation sweep: x is Γ in m²/s.
+  REQUIRE(magnus_cmd({"sweep", cases, "--set", "circulation.model=given", "--set", "circulation.value=0",
+                      "--circulation", "-5:5:2.5", "--set", "grid.n_theta=32", "-o", dir + "/c.h5", "-q"},
+                     dir).status == 0);
+  const LiftSweep c = read_lift_sweep(dir + "/c.h5");
+  CHECK(c.by_circulation);
+  CHECK(c.x.front() == Approx(-5.0));
+  CHECK(lift_figure(c, nullptr).page.xlabel.find("Γ (m^2/s)") != std::string::npos);
+  CHECK(magnus_cmd({"plot", dir + "/c.h5"}, dir).status == 0);
+  CHECK(png_size(dir + "/c_cl.png").first == 1000);
 }

@@ -1,0 +1,275 @@
+#include "plot/field_plots.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/core.h>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+
+#include "plot/page.hpp"
+
+namespace magnus {
+namespace {
+
+using namespace page;
+
+/// A field on rings i0…i1 as (i1 − i0 + 1, n_θ + 1) arrays for plcont/plshades with pltr2, in axis
+/// units: column n_θ repeats column 0 (θ = 2π) so that contours close over the seam.
+struct PolarPatch {
+  PLINT nx = 0, ny = 0;
+  std::vector<PLFLT> xs, ys, zs;
+  std::vector<PLFLT*> xrow, yrow, zrow;
+  PLcGrid2 grid{};
+
+  PolarPatch(const PolarField& f, double unit, int i0, int i1) {
+    const int nr = int(f.r.size()), nt = int(f.theta.size());
+    i0 = std::clamp(i0, 0, nr - 2);
+    i1 = std::clamp(i1, i0 + 1, nr - 1);
+    nx = i1 - i0 + 1;
+    ny = nt + 1;
+    xs.resize(size_t(nx) * ny);
+    ys.resize(xs.size());
+    zs.resize(xs.size());
+    for (int i = 0; i < nx; ++i)
+      for (int j = 0; j <= nt; ++j) {
+        const int jj = j % nt;
+        const size_t q = size_t(i) * ny + j;
+        xs[q] = f.r[i0 + i] / unit * std::cos(f.theta[jj]);
+        ys[q] = f.r[i0 + i] / unit * std::sin(f.theta[jj]);
+        zs[q] = f.values[size_t(i0 + i) * nt + jj];
+      }
+    for (int i = 0; i < nx; ++i) {
+      xrow.push_back(&xs[size_t(i) * ny]);
+      yrow.push_back(&ys[size_t(i) * ny]);
+      zrow.push_back(&zs[size_t(i) * ny]);
+    }
+    grid.xg = xrow.data();
+    grid.yg = yrow.data();
+    grid.zg = nullptr;
+    grid.nx = nx;
+    grid.ny = ny;
+  }
+  PolarPatch(const PolarPatch&) = delete;
+  PolarPatch& operator=(const PolarPatch&) = delete;
+
+  const PLFLT* const* z() const { return zrow.data(); }
+  void* pltr_data() { return &grid; }
+
+  /// Range of the field over the nodes inside the square |x|, |y| ≤ w.
+  std::pair<double, double> range_in(double w) const {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (size_t q = 0; q < zs.size(); ++q)
+      if (std::fabs(xs[q]) <= w && std::fabs(ys[q]) <= w && std::isfinite(zs[q])) {
+        lo = std::min(lo, zs[q]);
+        hi = std::max(hi, zs[q]);
+      }
+    return {lo, hi};
+  }
+};
+
+/// Index of the last ring with r_i ≤ r (0 if none).
+int ring_at_or_below(const std::vector<double>& r, double x) {
+  int i = 0;
+  while (i + 1 < int(r.size()) && r[i + 1] <= x) ++i;
+  return i;
+}
+
+void contour(plstream& pls, PolarPatch& p, const std::vector<PLFLT>& levels, PLINT pen_, double width,
+             PLINT style = 1) {
+  if (levels.empty()) return;
+  pls.col0(pen_);
+  pls.width(width);
+  pls.lsty(style);
+  pls.cont(p.z(), p.nx, p.ny, 1, p.nx, 1, p.ny, levels.data(), PLINT(levels.size()), plcallback::tr2,
+           p.pltr_data());
+  pls.lsty(1);
+  pls.width(1.0);
+}
+
+/// cmap1: a perceptually ordered dark-purple → teal → yellow ramp (viridis-like).
+void sequential_cmap1(plstream& pls) {
+  const PLFLT pos[] = {0.0, 0.25, 0.5, 0.75, 1.0};
+  const PLFLT r[] = {0.267, 0.230, 0.128, 0.369, 0.993};
+  const PLFLT g[] = {0.005, 0.322, 0.567, 0.789, 0.906};
+  const PLFLT b[] = {0.329, 0.546, 0.551, 0.383, 0.144};
+  pls.scmap1n(256);
+  pls.scmap1l(true, 5, pos, r, g, b, nullptr);
+}
+
+/// The centred square box: top 4 lines for the title, bottom `bottom_lines` for tick labels and the x
+/// label (and `extra_bottom`, a page fraction, for a legend below), side margins at least `side`
+/// (page fraction) each. Sets the viewport and window.
+void square_box(plstream& pls, PlotSize size, double w, double bottom_lines, double extra_bottom, double side) {
+  const double ly = line_fraction_y(pls);
+  const double top = 1.0 - 4.0 * ly, bottom = bottom_lines * ly + extra_bottom;
+  const double W = size.width, H = size.height;
+  const double side_px = std::max(1.0, std::min((top - bottom) * H, W * (1.0 - 2.0 * side)));
+  const double cx = 0.5, cy = 0.5 * (top + bottom);
+  pls.vpor(cx - 0.5 * side_px / W, cx + 0.5 * side_px / W, cy - 0.5 * side_px / H, cy + 0.5 * side_px / H);
+  pls.wind(-w, w, -w, w);
+}
+
+void check_field(const PolarField& f, const char* what) {
+  if (f.r.size() < 2 || f.theta.size() < 4 || f.values.size() != f.r.size() * f.theta.size())
+    throw std::runtime_error(fmt::format("plot: the {} field does not match its grid", what));
+}
+
+}  // namespace
+
+PlotFrame plot_streamlines(const StreamlinePicture& pic, const std::string& png, PlotSize size) {
+  check_field(pic.psi, "psi");
+  const FieldView& v = pic.view;
+  const double w = v.half_width, unit = v.unit;
+  const PolarField f = refine_polar_field(pic.psi, w * std::sqrt(2.0) * unit);
+  const int i_view = int(f.r.size()) - 1;
+  PolarPatch all(f, unit, 0, i_view);
+
+  // Levels: multiples of a round step, so that ψ = 0 (the body, and the dividing streamline while the
+  // stagnation points are on the surface) is one of them.
+  const auto [lo, hi] = all.range_in(w);
+  const double step = nice_step((hi - lo) / 24.0);
+  std::vector<PLFLT> regular;
+  if (hi > lo)
+    for (long k = long(std::ceil(lo / step)); k <= long(std::floor(hi / step)); ++k)
+      if (k != 0) regular.push_back(k * step);
+
+  // A saddle at r_s: the separatrix ψ = ψ_s through it encloses the closed streamlines, 0 < ψ/ψ_s < 1 at
+  // r < r_s; the same values at r > r_s are open streamlines.
+  std::vector<PLFLT> dividing = {0.0}, closed, open_inner;
+  std::unique_ptr<PolarPatch> inner, outer;
+  if (pic.has_saddle) {
+    const double rs = std::hypot(pic.saddle.x, pic.saddle.y) * unit;
+    const double ps = polar_value(pic.psi, rs, std::atan2(pic.saddle.y, pic.saddle.x));
+    dividing.push_back(ps);
+    for (double q : {0.2, 0.4, 0.6, 0.8}) closed.push_back(q * ps);
+    const int i_s = ring_at_or_below(f.r, rs);
+    inner = std::make_unique<PolarPatch>(f, unit, 0, i_s);
+    outer = std::make_unique<PolarPatch>(f, unit, i_s, std::max(i_view, i_s + 1));
+    auto between = [&](double x) { return x * (x - ps) < 0.0; };  // strictly between 0 and ψ_s
+    for (double x : regular)
+      if (between(x)) open_inner.push_back(x);
+    regular.erase(std::remove_if(regular.begin(), regular.end(), between), regular.end());
+  }
+
+  std::vector<LegendEntry> legend;
+  legend.push_back(line_entry(plplot_text(fmt::format("ψ contours, Δψ = {} {}", num(step), pic.psi_unit)), kBlue,
+                              1, 1.2));
+  if (pic.has_saddle) {
+    legend.push_back(line_entry(plplot_text("separatrix ψ = ψ_s"), kBlack, 1, 2.4));
+    legend.push_back(line_entry("closed streamlines", kPurple, 1, 1.4));
+  } else {
+    legend.push_back(line_entry("dividing streamline ψ = 0", kBlack, 1, 2.4));
+  }
+  if (!pic.numeric_points.empty()) legend.push_back(symbol_entry("stagnation point, numeric", kRed, "●", 0.75));
+  if (!pic.exact_points.empty()) legend.push_back(symbol_entry("stagnation point, exact", kBlack, "○", 1.3));
+  for (const auto& n : pic.notes) legend.push_back(text_entry(plplot_text(n)));
+
+  PlotFrame frame;
+  render_png(png, size, [&](plstream& pls) {
+    const double lx = line_fraction_x(pls), ly = line_fraction_y(pls);
+    set_text(pls, 0.8);
+    auto [lw, lh] = legend_size(pls, legend, 1);
+    set_text(pls);
+    // Beside the box when the page leaves room right of the centred square, else below it.
+    const double box_px = (1.0 - 8.5 * ly) * size.height;
+    const double room = 0.5 * (1.0 - box_px / size.width) - 3.0 * lx;
+    const bool beside = lw <= room;
+    int columns = 1;
+    if (!beside) {
+      columns = 2 * lw + 4 * lx < 1.0 ? 2 : 1;
+      set_text(pls, 0.8);
+      std::tie(lw, lh) = legend_size(pls, legend, columns);
+      set_text(pls);
+    }
+    square_box(pls, size, w, 4.5, beside ? 0.0 : lh + 0.5 * ly, 7.0 * lx);
+    contour(pls, all, regular, kBlue, 1.2);
+    if (pic.has_saddle) {
+      contour(pls, *outer, open_inner, kBlue, 1.2);
+      contour(pls, *inner, closed, kPurple, 1.4);
+    }
+    contour(pls, all, dividing, kBlack, 2.4);
+    disc(pls, 0.0, 0.0, v.body_radius, kGrey, kBlack, 2.0);
+    const double dot = w / 60.0;
+    for (const auto& s : pic.exact_points) disc(pls, s.x, s.y, 2.0 * dot, -1, kBlack, 1.5);
+    for (const auto& s : pic.numeric_points) disc(pls, s.x, s.y, dot, kRed, kBlack, 1.0);
+    frame_axes(pls, "bcnst", "bcnstv", plplot_text(v.xlabel), plplot_text(v.ylabel), plplot_text(v.title));
+    frame = frame_of(pls, size);
+    frame.levels.assign(regular.begin(), regular.end());
+    frame.levels.insert(frame.levels.end(), open_inner.begin(), open_inner.end());
+    frame.levels.insert(frame.levels.end(), closed.begin(), closed.end());
+    frame.levels.insert(frame.levels.end(), dividing.begin(), dividing.end());
+    PLFLT vx0 = 0, vx1 = 0, vy0 = 0, vy1 = 0;
+    pls.gvpd(vx0, vx1, vy0, vy1);
+    set_text(pls, 0.8);
+    const auto r = beside ? draw_legend(pls, legend, vx1 + 2.0 * lx, vy1, 1)
+                          : draw_legend(pls, legend, 0.5 - 0.5 * lw, lh + 0.5 * ly, columns);
+    if (r.size() == 4) frame.legend = to_pixels(size, r[0], r[1], r[2], r[3]);
+  });
+  return frame;
+}
+
+PlotFrame plot_contour_field(const ContourFieldPicture& pic, const std::string& png, PlotSize size) {
+  check_field(pic.field, "contour");
+  const FieldView& v = pic.view;
+  const double w = v.half_width, unit = v.unit;
+  const PolarField f = refine_polar_field(pic.field, w * std::sqrt(2.0) * unit);
+  PolarPatch patch(f, unit, 0, int(f.r.size()) - 1);
+  auto [lo, hi] = patch.range_in(w);
+  if (!(hi > lo)) {
+    lo -= 0.5;
+    hi += 0.5;
+  }
+  const int n_shades = 40;
+  std::vector<PLFLT> edges(n_shades + 1);
+  for (int k = 0; k <= n_shades; ++k) edges[k] = lo + (hi - lo) * k / n_shades;
+  const double eps = 1e-9 * (hi - lo);  // so that the extreme nodes are filled too
+  std::vector<PLFLT> fill_edges = edges;
+  fill_edges.front() -= eps;
+  fill_edges.back() += eps;
+
+  PlotFrame frame;
+  render_png(png, size, [&](plstream& pls) {
+    const double lx = line_fraction_x(pls);
+    sequential_cmap1(pls);
+    // Right of the box: the bar (7% of the box) and its numbers (~6 characters).
+    square_box(pls, size, w, pic.footnote.empty() ? 4.5 : 6.0, 0.0, 8.0 * lx);
+    PLFLT vx0 = 0, vx1 = 0, vy0 = 0, vy1 = 0;
+    pls.gvpd(vx0, vx1, vy0, vy1);
+    pls.psty(0);
+    pls.shades(patch.z(), patch.nx, patch.ny, nullptr, -w, w, -w, w, fill_edges.data(), PLINT(fill_edges.size()),
+               1.0, 0, 0.0, plcallback::fill, false, plcallback::tr2, patch.pltr_data());
+    if (pic.zero_contour && lo < 0.0 && hi > 0.0) contour(pls, patch, {0.0}, kBlack, 1.0, 2);
+    disc(pls, 0.0, 0.0, v.body_radius, kGrey, kBlack, 2.0);
+    for (const auto& s : pic.points) disc(pls, s.x, s.y, w / 70.0, kRed, kBlack, 1.0);
+    frame_axes(pls, "bcnst", "bcnstv", plplot_text(v.xlabel), plplot_text(v.ylabel), plplot_text(v.title));
+    frame = frame_of(pls, size);
+    if (!pic.footnote.empty()) {
+      set_text(pls, 0.8);
+      pls.mtex("b", 5.8, 0.5, 0.5, plplot_text(pic.footnote).c_str());
+      set_text(pls);
+    }
+    // Colour bar right of the box, as tall as 80% of it, with its label on top.
+    set_text(pls, 0.85);
+    const double bx = 0.04, bw = 0.04, bh = 0.80;
+    const char* axis_opts[] = {"bcvtm"};
+    const std::string label = plplot_text(pic.bar_label);
+    const char* labels[] = {label.c_str()};
+    PLINT label_opts[] = {PL_COLORBAR_LABEL_TOP};
+    PLFLT ticks[] = {0.0};
+    PLINT sub_ticks[] = {0};
+    PLINT n_values[] = {PLINT(edges.size())};
+    const PLFLT* values[] = {edges.data()};
+    PLFLT cw = 0.0, ch = 0.0;
+    pls.colorbar(&cw, &ch, PL_COLORBAR_SHADE, PL_POSITION_RIGHT | PL_POSITION_OUTSIDE | PL_POSITION_VIEWPORT, bx,
+                 0.0, bw, bh, kWhite, kBlack, 1, 0, 0.0, 0, 0.0, 1, label_opts, labels, 1, axis_opts, ticks,
+                 sub_ticks, n_values, values);
+    const double dx = vx1 - vx0, dy = vy1 - vy0, ymid = 0.5 * (vy0 + vy1);
+    frame.colour_bar = to_pixels(size, vx1 + bx * dx, vx1 + (bx + bw) * dx, ymid - 0.5 * bh * dy, ymid + 0.5 * bh * dy);
+    frame.bar_lo = lo;
+    frame.bar_hi = hi;
+  });
+  return frame;
+}
+
+}  // namespace magnus

@@ -1,0 +1,55 @@
+#pragma once
+// Field plots on the polar grid: streamlines (ψ contours) and a filled-contour field with its colour
+// bar. The square window is centred on the page with equal scales on both axes; axes are in a length
+// unit chosen by the caller (e.g. the radius: x/a), so that no axis needs an exponent.
+#include <string>
+#include <vector>
+
+#include "plot/plot.hpp"
+#include "plot/polar_field.hpp"
+
+namespace magnus {
+
+/// The square view of a field plot; lengths in axis units (a field's r is divided by `unit`).
+struct FieldView {
+  std::string title;              ///< plplot_text markup
+  std::string xlabel = "x/a", ylabel = "y/a";
+  double unit = 1.0;              ///< one axis unit in the field's length unit (the radius: axes in x/a)
+  double half_width = 4.0;        ///< window |x|, |y| ≤ half_width (axis units)
+  double body_radius = 1.0;       ///< the body, a grey disc at the origin (axis units)
+};
+
+/// What a streamline picture shows.
+struct StreamlinePicture {
+  FieldView view;
+  PolarField psi;                          ///< the streamfunction (r in the field's length unit)
+  std::string psi_unit = "m²/s";           ///< unit of ψ, for the legend's Δψ
+  std::vector<CurvePoint> numeric_points;  ///< stagnation points from the solution (axis units)
+  std::vector<CurvePoint> exact_points;    ///< stagnation points of the exact flow (axis units)
+  bool has_saddle = false;                 ///< a free stagnation point: the separatrix through it is drawn
+  CurvePoint saddle{0.0, 0.0};             ///< that point (axis units)
+  std::vector<std::string> notes;          ///< extra legend lines, text only (plplot_text markup)
+};
+
+/// ψ contours at multiples of a round Δψ (ψ = 0, the body and the dividing streamline, among them),
+/// the separatrix and closed streamlines around a saddle, the body, and the stagnation points (numeric:
+/// red dots, exact: black rings); the legend beside the window or below it. Contours are drawn from
+/// refine_polar_field, not from the raw grid. Returns where it drew, with every level drawn.
+PlotFrame plot_streamlines(const StreamlinePicture& pic, const std::string& png, PlotSize size = {});
+
+/// What a filled-contour field picture shows.
+struct ContourFieldPicture {
+  FieldView view;
+  PolarField field;                    ///< the field (r in the field's length unit)
+  std::string bar_label = "Cp";        ///< colour bar label (plplot_text markup)
+  bool zero_contour = true;            ///< a dashed contour at 0
+  std::vector<CurvePoint> points;      ///< points marked with red dots (axis units)
+  std::string footnote;                ///< one line under the plot (plplot_text markup)
+};
+
+/// The field as filled contours whose colour range is the field's range inside the window (no
+/// clipping), with a labelled colour bar spanning it. Returns where it drew (bar_lo, bar_hi: the bar's
+/// range).
+PlotFrame plot_contour_field(const ContourFieldPicture& pic, const std::string& png, PlotSize size = {});
+
+}  // namespace magnus
