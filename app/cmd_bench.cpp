@@ -9,6 +9,7 @@
 #include "io/bench_table.hpp"
 #include "io/case_file.hpp"
 #include "app/commands.hpp"
+#include "app/threads.hpp"
 #include "io/hdf5_io.hpp"
 #include "plot/curves.hpp"
 
@@ -54,7 +55,7 @@ void add_bench_command(CLI::App& app) {
         opt.stencils.push_back(s == "9-point" ? StencilKind::nine_point : StencilKind::five_point);
     }
     opt.repeats = o->repeats;
-    opt.threads = o->threads;
+    opt.threads = usable_threads(o->threads);
     opt.cholmod_max_unknowns = o->cholmod_max;
     check_distinct_paths({o->case_path}, {o->csv, o->plot});
     if (!o->csv.empty()) check_writable(o->csv);

@@ -2,14 +2,18 @@
 #include <fmt/core.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 
 #include "app/commands.hpp"
+#include "app/threads.hpp"
 #include "io/case_file.hpp"
 #include "io/hdf5_io.hpp"
+#include "io/output_size.hpp"
 #include "io/report.hpp"
 #include "io/inspect.hpp"
 #include "postproc/pipeline.hpp"
+#include "postproc/plan.hpp"
 #include "solver/memory.hpp"
 
 namespace magnus {
@@ -27,7 +31,10 @@ void command_run(const std::string& case_path, const std::string& output, const 
   check_distinct_paths({case_path}, {c.output.file, xdmf_path(c.output.file)});
   check_writable(c.output.file);
   check_writable(xdmf_path(c.output.file));
-  FlowResult r = run_case(c, threads, max_bytes);
+  // The grid first (a tolerance search picks it), then the free space for its file, then the solve.
+  const RunPlan plan = plan_run(c, threads, max_bytes);
+  check_output_space(plan.c, c.output.file);
+  FlowResult r = run_planned(plan, threads, max_bytes);
   write_result(r, c.output.file);
   if (!quiet) std::fputs(summary_text(r, c.output.file).c_str(), stdout);
 }
@@ -44,7 +51,7 @@ void add_run_command(CLI::App& app) {
     std::vector<std::string> sets;
     int threads = 1;
     bool quiet = false;
-    double tolerance = 0.0;
+    std::string tolerance;
     std::string max_memory;
   };
   auto o = std::make_shared<Options>();
@@ -55,8 +62,8 @@ void add_run_command(CLI::App& app) {
   run->add_option("--threads", o->threads, "threads for the solver")->check(CLI::Range(1, 64));
   run->add_flag("-q,--quiet", o->quiet, "print nothing on success");
   run->add_option("--tolerance", o->tolerance,
-                  "target relative C_L error: choose the smallest grid and stencil (supersedes the file's grid)")
-      ->check(CLI::Range(1e-14, 0.1));
+                  "target relative C_L error, 1e-14 to 0.1: choose the smallest grid and stencil (supersedes the "
+                  "file's grid)");
   run->add_option("--max-memory", o->max_memory, "refuse a run that would need more memory (e.g. 2G, 512M)");
   run->callback([o] {
     size_t max_bytes = 0;
@@ -68,8 +75,14 @@ void add_run_command(CLI::App& app) {
       }
     }
     std::vector<std::string> sets = o->sets;
-    if (o->tolerance > 0.0) sets.push_back(fmt::format("grid.tolerance={}", o->tolerance));
-    command_run(o->case_path, o->output, sets, o->threads, o->quiet, max_bytes);
+    if (!o->tolerance.empty()) {
+      char* end = nullptr;
+      const double tol = std::strtod(o->tolerance.c_str(), &end);
+      if (end == o->tolerance.c_str() || *end != '\0' || !(tol >= 1e-14 && tol <= 0.1))
+        throw std::runtime_error(fmt::format("--tolerance {}: must be between {:g} and {:g}", o->tolerance, 1e-14, 0.1));
+      sets.push_back(fmt::format("grid.tolerance={}", tol));
+    }
+    command_run(o->case_path, o->output, sets, usable_threads(o->threads), o->quiet, max_bytes);
   });
 }
 

@@ -1,6 +1,7 @@
 // magnus: 2D potential flow past a spinning cylinder. The subcommands live in app/cmd_*.cpp.
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include "app/commands.hpp"
 
@@ -9,6 +10,17 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("magnus ") + MAGNUS_VERSION);
   app.require_subcommand(1);
   magnus::add_commands(app);
+  // An unknown first word is an unknown command (CLI11 would only say that a subcommand is required).
+  std::string list;
+  bool known = false;
+  for (const auto* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+    list += (list.empty() ? "" : ", ") + sub->get_name();
+    known = known || (argc >= 2 && sub->get_name() == argv[1]);
+  }
+  if (argc >= 2 && argv[1][0] != '-' && !known) {
+    std::fprintf(stderr, "magnus: unknown command '%s' (commands: %s; see magnus --help)\n", argv[1], list.c_str());
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

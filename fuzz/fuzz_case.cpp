@@ -2,7 +2,7 @@
 //
 // Each input is used twice:
 //   1. as a whole TOML case file: parse_case(text, "fuzz.toml");
-//   2. split on newlines into "section.key=value" overrides applied to an empty case.
+//   2. split on newlines into "section.key=value" overrides applied to a case with only the required scene.
 // CaseError is the parser's one documented failure and is caught. Anything else is a finding:
 // another exception (it escapes, std::terminate aborts), a crash, a hang, a sanitizer report,
 // or a broken invariant of an accepted case (checked below, reported by abort()).
@@ -55,7 +55,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   } catch (const CaseError&) {
   }
 
-  // 2. Each line as a --set override on an empty case (and on a case with sections present).
+  // 2. Each line as a --set override on a case with only the required scene (and with more sections present).
   std::vector<std::string> sets;
   size_t start = 0;
   while (start <= text.size()) {
@@ -65,7 +65,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (nl == std::string::npos) break;
     start = nl + 1;
   }
-  for (const char* base : {"", "[grid]\n[output]\n"}) {
+  const std::string scene = "[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = 10.0\n";
+  for (const std::string& base : {scene, scene + "[grid]\n[output]\n"}) {
     try {
       check_accepted(parse_case(base, "fuzz.toml", sets));
     } catch (const CaseError&) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -11,15 +12,21 @@
 #include <sstream>
 #include <toml++/toml.h>
 
+#include "io/toml_safe.hpp"
+
 
 namespace magnus {
+
+using toml_safe::decode_utf8;
+using toml_safe::parse_toml;
+using toml_safe::unshield;
 
 namespace {
 
 const std::map<std::string, std::vector<std::string>>& schema() {
   static const std::map<std::string, std::vector<std::string>> s = {
       {"", {"title"}},
-      {"cylinder", {"radius", "spin", "spin_ratio"}},
+      {"cylinder", {"radius", "spin", "spin_ratio", "rpm"}},
       {"flow", {"speed", "density", "pressure"}},
       {"circulation", {"model", "value"}},
       {"domain", {"outer_radius", "far_field"}},
@@ -61,6 +68,10 @@ class Reader {
     return s ? s->get(key) : nullptr;
   }
   bool has(const std::string& section, const std::string& key) const { return find(section, key); }
+  /// Fails with "KEY: required key is missing (what)" unless the key is present.
+  void require(const std::string& section, const std::string& key, const char* what) const {
+    if (!has(section, key)) fail(key_name(section, key), fmt::format("required key is missing ({})", what));
+  }
 
   double number(const std::string& section, const std::string& key, double fallback,
                 const std::function<bool(double)>& ok, const char* range) const {
@@ -149,152 +160,34 @@ void reject_unknown_keys(const toml::table& t, const std::string& origin) {
         const std::string key2(k2.str());
         const auto& keys = sec->second;
         if (std::find(keys.begin(), keys.end(), key2) == keys.end()) {
-          const std::string near = nearest_key(key + "." + key2);
-          throw CaseError(fmt::format("{}: unknown key {}.{}{}", origin, key, key2,
-                                      near.empty() ? "" : fmt::format(" (did you mean {}?)", near)));
+          throw CaseError(fmt::format("{}: unknown key {}.{}{}", origin, key, key2, unknown_key_hint(key + "." + key2)));
         }
         (void)v2;
       }
     } else if (key != "title") {
-      const std::string near = nearest_key(key);
-      throw CaseError(fmt::format("{}: unknown key {}{}", origin, key,
-                                  near.empty() ? "" : fmt::format(" (did you mean {}?)", near)));
+      throw CaseError(fmt::format("{}: unknown key {}{}", origin, key, unknown_key_hint(key)));
     }
   }
 }
 
-// toml++ 3.3 (Debian 12) reaches __builtin_unreachable() — undefined behaviour — when its whitespace test meets
-// some non-ASCII code points outside a string or comment ("title = Über", "[Ü]", "a = [ψ]", "\Ü" in a """
-// string: https://github.com/marzer/tomlplusplus/issues/190, fixed upstream after 3.4). The parser never sees
-// them: each is swapped for a private-use code point that toml++ treats the same way (a non-ASCII character
-// that is neither whitespace nor allowed in a bare key), and swapped back in what the parse returns.
-bool toml_ub_codepoint(char32_t c) {
-  // The ranges where toml++'s is_non_ascii_horizontal_whitespace() has no case (blocks 0, 11, 63 of 0x3FA).
-  return (c >= 0xA1 && c <= 0x499) || (c >= 0x2D1E && c <= 0x3117 && c != 0x3000) || (c >= 0xFAC6 && c <= 0xFEFE);
-}
-constexpr char32_t shield_offset = 0xF0000;  // plane 15, private use: 0xF00A1 ... 0xFFEFE
-
-/// Decodes one well-formed UTF-8 sequence at s[i] (length in *len); returns 0 with *len = 1 if malformed.
-char32_t decode_utf8(std::string_view s, size_t i, size_t* len) {
-  const auto b = [&](size_t k) { return static_cast<unsigned char>(s[i + k]); };
-  const auto cont = [&](size_t k) { return i + k < s.size() && (b(k) & 0xC0) == 0x80; };
-  *len = 1;
-  const unsigned c0 = b(0);
-  if (c0 >= 0xC2 && c0 <= 0xDF && cont(1)) {
-    *len = 2;
-    return char32_t(((c0 & 0x1F) << 6) | (b(1) & 0x3F));
-  }
-  if (c0 >= 0xE0 && c0 <= 0xEF && cont(1) && cont(2)) {
-    const char32_t c = char32_t(((c0 & 0x0F) << 12) | ((b(1) & 0x3F) << 6) | (b(2) & 0x3F));
-    if (c < 0x800 || (c >= 0xD800 && c <= 0xDFFF)) return 0;
-    *len = 3;
-    return c;
-  }
-  if (c0 >= 0xF0 && c0 <= 0xF4 && cont(1) && cont(2) && cont(3)) {
-    const char32_t c = char32_t(((c0 & 0x07) << 18) | ((b(1) & 0x3F) << 12) | ((b(2) & 0x3F) << 6) | (b(3) & 0x3F));
-    if (c < 0x10000 || c > 0x10FFFF) return 0;
-    *len = 4;
-    return c;
-  }
-  return 0;
-}
-
-void append_utf8(std::string& out, char32_t c) {
-  if (c < 0x80) {
-    out += char(c);
-  } else if (c < 0x800) {
-    out += char(0xC0 | (c >> 6));
-    out += char(0x80 | (c & 0x3F));
-  } else if (c < 0x10000) {
-    out += char(0xE0 | (c >> 12));
-    out += char(0x80 | ((c >> 6) & 0x3F));
-    out += char(0x80 | (c & 0x3F));
-  } else {
-    out += char(0xF0 | (c >> 18));
-    out += char(0x80 | ((c >> 12) & 0x3F));
-    out += char(0x80 | ((c >> 6) & 0x3F));
-    out += char(0x80 | (c & 0x3F));
-  }
-}
-
-/// Maps every code point c in s with from(c) to to(c); malformed bytes are left for toml++ to reject.
-template <class From, class To>
-std::string map_codepoints(std::string_view s, From from, To to, bool* changed = nullptr) {
-  std::string out;
-  out.reserve(s.size());
-  for (size_t i = 0; i < s.size();) {
-    size_t len;
-    const char32_t c = decode_utf8(s, i, &len);
-    if (len > 1 && from(c)) {
-      append_utf8(out, to(c));
-      if (changed) *changed = true;
-    } else {
-      out.append(s.substr(i, len));
-    }
-    i += len;
-  }
-  return out;
-}
-
-std::string unshield(std::string_view s) {
-  return map_codepoints(s, [](char32_t c) { return c > shield_offset && toml_ub_codepoint(c - shield_offset); },
-                        [](char32_t c) { return c - shield_offset; });
-}
-
-/// A copy of a parsed value with every string and key unshielded.
-void unshield_into(const toml::node& n, toml::array& out);
-toml::table unshield_table(const toml::table& t) {
-  toml::table out;
-  for (auto&& [k, v] : t) {
-    const std::string key = unshield(k.str());
-    if (const auto* sub = v.as_table()) out.insert(key, unshield_table(*sub));
-    else if (const auto* arr = v.as_array()) {
-      toml::array a;
-      for (const auto& e : *arr) unshield_into(e, a);
-      out.insert(key, std::move(a));
-    } else if (const auto* str = v.as_string()) out.insert(key, unshield(str->get()));
-    else v.visit([&](const auto& value) { out.insert(key, value); });
-  }
-  return out;
-}
-void unshield_into(const toml::node& n, toml::array& out) {
-  if (const auto* sub = n.as_table()) out.push_back(unshield_table(*sub));
-  else if (const auto* arr = n.as_array()) {
-    toml::array a;
-    for (const auto& e : *arr) unshield_into(e, a);
-    out.push_back(std::move(a));
-  } else if (const auto* str = n.as_string()) out.push_back(unshield(str->get()));
-  else n.visit([&](const auto& value) { out.push_back(value); });
-}
-
-/// toml::parse without toml++'s undefined behaviour (above). Throws toml::parse_error (description shielded:
-/// pass it through unshield()) or CaseError.
-toml::table parse_toml(const std::string& text, const std::string& origin) {
-  bool changed = false;
-  // Private-use code points of the swap range cannot be told apart from swapped ones: refuse them.
-  map_codepoints(text, [](char32_t c) { return c > shield_offset && toml_ub_codepoint(c - shield_offset); },
-                 [&](char32_t c) -> char32_t {
-                   throw CaseError(fmt::format("{}: unsupported character U+{:X} (private use)", origin, uint32_t(c)));
-                 });
-  const std::string safe = map_codepoints(text, toml_ub_codepoint, [](char32_t c) { return c + shield_offset; },
-                                          &changed);
-  toml::table t = toml::parse(safe, origin);
-  return changed ? unshield_table(t) : t;
+/// s without the spaces and tabs at either end.
+std::string trim(const std::string& s) {
+  const size_t b = s.find_first_not_of(" \t"), e = s.find_last_not_of(" \t");
+  return b == std::string::npos ? "" : s.substr(b, e - b + 1);
 }
 
 void apply_override(toml::table& t, const std::string& spec) {
   const auto eq = spec.find('=');
-  if (eq == std::string::npos || eq == 0)
-    throw CaseError(fmt::format("--set {}: expected section.key=value", spec));
-  const std::string path = spec.substr(0, eq), text = spec.substr(eq + 1);
+  const std::string path = eq == std::string::npos ? "" : trim(spec.substr(0, eq));
+  if (path.empty()) throw CaseError(fmt::format("--set {}: expected section.key=value", spec));
+  const std::string text = trim(spec.substr(eq + 1));  // spaces around '=' and the key are allowed
+  if (text.empty()) throw CaseError(fmt::format("--set {}: no value", spec));
   const auto dot = path.find('.');
   const std::string section = dot == std::string::npos ? "" : path.substr(0, dot);
   const std::string key = dot == std::string::npos ? path : path.substr(dot + 1);
   const auto& keys = case_keys();
   if (std::find(keys.begin(), keys.end(), path) == keys.end()) {
-    const std::string near = nearest_key(path);
-    throw CaseError(fmt::format("--set {}: unknown key {}{}", spec, path,
-                                near.empty() ? "" : fmt::format(" (did you mean {}?)", near)));
+    throw CaseError(fmt::format("--set {}: unknown key {}{}", spec, path, unknown_key_hint(path)));
   }
   toml::table* target = &t;
   if (!section.empty()) {
@@ -302,6 +195,9 @@ void apply_override(toml::table& t, const std::string& spec) {
     target = t.get_as<toml::table>(section);
     if (!target) throw CaseError(fmt::format("--set {}: {} is not a table in the case", spec, section));
   }
+  // An override of one of a mutually exclusive group replaces the others of its group (DESIGN §3).
+  if (section == "cylinder" && (key == "spin" || key == "spin_ratio" || key == "rpm"))
+    for (const char* k : {"spin", "spin_ratio", "rpm"}) target->erase(k);
   try {
     toml::table parsed = parse_toml("v = " + text, "--set " + spec);
     target->insert_or_assign(key, parsed["v"]);
@@ -327,22 +223,52 @@ const std::vector<std::string>& case_keys() {
 }
 
 std::string nearest_key(const std::string& key) {
+  // Synonyms of a valid key: the one suggestion that is not a near spelling.
+  static const std::map<std::string, std::string> aliases = {
+      {"flow.velocity", "flow.speed"}, {"flow.u", "flow.speed"}, {"flow.rho", "flow.density"},
+      {"cylinder.omega", "cylinder.spin"}, {"cylinder.alpha", "cylinder.spin_ratio"}, {"cylinder.a", "cylinder.radius"}};
+  if (const auto it = aliases.find(key); it != aliases.end()) return it->second;
+  // Keys of DESIGN §3/§9 that mean something else and this version does not read: never "corrected".
+  for (const char* other : {"cylinder.span", "flow.direction", "flow.viscosity", "flow.reynolds", "flow.course",
+                            "model.flow", "output.compression"})
+    if (key == other) return "";
   // The edit distance is at least the difference in length, and no valid key is longer than 20 characters:
-  // a key this long is never within max(2, size/3) of one (and a megabyte key would cost seconds).
+  // a key this long is never near one (and a megabyte key would cost seconds).
   if (key.size() > 64) return "";
+  // Near spellings only: within 2 edits and a third of the length, compared in the key's own section when it
+  // names a valid one ("flow.velocity" is 4 edits from "flow.density": no suggestion).
+  const size_t dot = key.find('.');
+  const std::string section = dot == std::string::npos ? "" : key.substr(0, dot);
+  const bool known_section = schema().count(section) > 0 && !section.empty();
   std::string best;
   size_t best_d = std::string::npos;
   for (const auto& k : case_keys()) {
-    // Compare with the full key and with its last part, so "n_thetaa" finds "grid.n_theta".
-    const std::string tail = k.substr(k.find('.') + 1);
-    const std::string ktail = key.substr(key.find('.') + 1);
-    const size_t d = std::min(edit_distance(key, k), edit_distance(ktail, tail) + (key.find('.') == std::string::npos ? 0 : edit_distance(key.substr(0, key.find('.')), k.substr(0, k.find('.')))));
-    if (d < best_d) {
-      best_d = d;
-      best = k;
+    const size_t kdot = k.find('.');
+    const std::string ksec = kdot == std::string::npos ? "" : k.substr(0, kdot), tail = k.substr(kdot + 1);
+    size_t d, len;
+    if (known_section) {
+      if (ksec != section) continue;
+      d = edit_distance(key.substr(dot + 1), tail), len = key.size() - dot - 1;
+    } else if (dot == std::string::npos) {
+      d = edit_distance(key, tail), len = key.size();  // a bare key: its section was left out
+    } else {
+      d = edit_distance(key, k), len = key.size();
     }
+    if (d <= 2 && 3 * d <= len && d < best_d) best_d = d, best = k;
   }
-  return best_d <= std::max<size_t>(2, key.size() / 3) ? best : "";
+  return best;
+}
+
+std::string unknown_key_hint(const std::string& key) {
+  const std::string near = nearest_key(key);
+  if (!near.empty()) return fmt::format(" (did you mean {}?)", near);
+  const size_t dot = key.find('.');
+  if (dot == std::string::npos) return "";
+  const auto sec = schema().find(key.substr(0, dot));
+  if (sec == schema().end() || sec->first.empty()) return "";
+  std::string list;
+  for (const auto& k : sec->second) list += (list.empty() ? "" : ", ") + k;
+  return fmt::format(" (keys of [{}]: {})", sec->first, list);
 }
 
 Case parse_case(const std::string& toml_text, const std::string& origin,
@@ -369,22 +295,36 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
   auto positive = [](double v) { return v > 0.0; };
   auto any = [](double) { return true; };
   c.title = r.word("", "title", c.title);
+  // The scene's physical keys are required (DESIGN §3): a file that omits one is an error, not a demo.
+  const std::string model = r.word("circulation", "model", "spin", {"spin", "given"});
+  c.scene.circulation_given = model == "given";
+  r.require("cylinder", "radius", "the cylinder radius a, m");
+  r.require("flow", "speed", "the freestream speed U, m/s");
+  const std::vector<std::string> spin_keys = {"spin", "spin_ratio", "rpm"};
+  std::string spin_key;
+  for (const auto& k : spin_keys) {
+    if (!r.has("cylinder", k)) continue;
+    if (!spin_key.empty())
+      r.fail("cylinder." + k, fmt::format("conflicts with cylinder.{}: give exactly one of them", spin_key));
+    spin_key = k;
+  }
+  if (spin_key.empty() && !c.scene.circulation_given)
+    r.fail("cylinder.spin", "required key is missing: give one of cylinder.spin (rad/s), cylinder.spin_ratio or "
+                            "cylinder.rpm, or circulation.model = \"given\" with circulation.value");
   c.scene.radius = r.number("cylinder", "radius", c.scene.radius, positive, "> 0 (m)");
-  if (r.has("cylinder", "spin") && r.has("cylinder", "spin_ratio"))
-    r.fail("cylinder.spin_ratio", "conflicts with cylinder.spin: give exactly one of them");
   c.scene.speed = r.number("flow", "speed", c.scene.speed, [](double v) { return v >= 0.0; }, ">= 0 (m/s)");
   c.scene.density = r.number("flow", "density", c.scene.density, positive, "> 0 (kg/m^3)");
   c.scene.pressure_inf = r.number("flow", "pressure", c.scene.pressure_inf, any, "finite (Pa)");
-  if (r.has("cylinder", "spin_ratio")) {
+  if (spin_key == "spin_ratio") {
     const double alpha = r.number("cylinder", "spin_ratio", 0.0, any, "finite");
     if (c.scene.speed == 0.0 && alpha != 0.0)
       r.fail("cylinder.spin_ratio", "needs flow.speed > 0 (alpha = a*omega/U); give cylinder.spin instead");
     c.scene.spin = alpha * c.scene.speed / c.scene.radius;
+  } else if (spin_key == "rpm") {
+    c.scene.spin = r.number("cylinder", "rpm", 0.0, any, "finite (rev/min)") * (2.0 * M_PI / 60.0);
   } else {
-    c.scene.spin = r.number("cylinder", "spin", c.scene.spin, any, "finite (rad/s)");
+    c.scene.spin = r.number("cylinder", "spin", 0.0, any, "finite (rad/s)");  // absent: ω = 0 (model "given")
   }
-  const std::string model = r.word("circulation", "model", "spin", {"spin", "given"});
-  c.scene.circulation_given = model == "given";
   if (r.has("circulation", "value") && !c.scene.circulation_given)
     r.fail("circulation.value", "is only used with circulation.model = \"given\"");
   if (c.scene.circulation_given && !r.has("circulation", "value"))
@@ -394,12 +334,14 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
   if (!std::isfinite(c.scene.spin))
     r.fail("cylinder.spin_ratio", fmt::format("gives a spin omega = alpha*U/a that is not finite (a = {}, U = {})",
                                               c.scene.radius, c.scene.speed));
-  if (!std::isfinite(c.scene.Gamma()))
-    r.fail("cylinder.radius", fmt::format("gives a circulation 2*pi*a^2*omega that is not finite (a = {}, omega = {})", c.scene.radius, c.scene.spin));
-  if (!std::isfinite(c.scene.spin_ratio()))
-    r.fail("flow.speed", fmt::format("{} is too small: the spin ratio a*omega/U is not finite", c.scene.speed));
   c.grid.outer_radius = r.number("domain", "outer_radius", c.grid.outer_radius,
                             [](double v) { return v > 1.0 && v <= 1e12; }, "> 1 and <= 1e12 (R/a)");
+  SceneKeys keys;
+  if (!spin_key.empty()) keys.spin = "cylinder." + spin_key;
+  if (spin_key == "spin_ratio" || spin_key == "rpm") keys.spin_value = r.number("cylinder", spin_key, 0.0, any, "");
+  if (const auto o = find_overflow(c.scene, c.grid.outer_radius, keys))
+    r.fail(o->key, fmt::format("{:g} is too {}: {} {}", o->value, std::fabs(o->value) >= 1.0 ? "large" : "small",
+                               o->quantity, o->underflow ? "underflows double precision" : "is not finite"));
   c.grid.far_field = r.word("domain", "far_field", "exact", {"exact", "freestream"}) == "exact"
                     ? FarField::exact : FarField::freestream;
   c.grid.n_theta = int(r.integer("grid", "n_theta", c.grid.n_theta,
@@ -409,6 +351,7 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
                         "0 (square cells) or 3 ... 4194304"));
   c.grid.spacing = r.word("grid", "spacing", "geometric", {"geometric", "uniform"}) == "geometric"
                   ? Spacing::geometric : Spacing::uniform;
+  c.grid.spacing_given = r.has("grid", "spacing");
   c.grid.tolerance = r.number("grid", "tolerance", 0.0, [](double v) { return v == 0.0 || (v >= 1e-14 && v <= 0.1); },
                          "0 (grid as given) or 1e-14 ... 0.1");
   const std::string method = r.word("solver", "method", "auto", {"auto", "cholmod", "fft"});
@@ -446,6 +389,9 @@ Case load_case(const std::string& path, const std::vector<std::string>& override
   std::ostringstream ss;
   ss << in.rdbuf();
   if (in.bad()) throw CaseError(fmt::format("cannot read case file '{}': read error", path));
+  if (ss.str().rfind("\x89HDF\r\n\x1a\n", 0) == 0)  // the HDF5 signature at offset 0
+    throw CaseError(fmt::format("{}: an HDF5 result file, not a case file (TOML); to see what it holds: magnus inspect {}",
+                                path, path));
   return parse_case(ss.str(), path, overrides);
 }
 
@@ -473,7 +419,9 @@ std::string to_toml(const Case& c) {
   if (c.scene.circulation_given) t += fmt::format("value = {}\n", num(c.scene.circulation_value));
   t += fmt::format("\n[domain]\nouter_radius = {}\nfar_field = {}\n", num(c.grid.outer_radius), str(to_string(c.grid.far_field)));
   // With a tolerance the grid and stencil are chosen at run time (and stored in /parameters).
-  t += fmt::format("\n[grid]\nspacing = {}\n", str(to_string(c.grid.spacing)));
+  // With a tolerance and no stated spacing the search chooses it too: the resolved case leaves it out.
+  t += "\n[grid]\n";
+  if (c.grid.tolerance == 0.0 || c.grid.spacing_given) t += fmt::format("spacing = {}\n", str(to_string(c.grid.spacing)));
   if (c.grid.tolerance > 0.0) t += fmt::format("tolerance = {}\n", num(c.grid.tolerance));
   else t += fmt::format("n_theta = {}\nn_r = {}\n", c.grid.n_theta, c.grid.n_r);
   t += fmt::format("\n[solver]\nmethod = {}\n", str(to_string(c.solver.method)));

@@ -26,7 +26,12 @@ std::string to_toml(const Case& c);
 /// Every valid "section.key".
 const std::vector<std::string>& case_keys();
 
-/// The nearest valid key to a misspelt one ("" if nothing is close).
+/// The valid key a misspelt one most likely means: a synonym (flow.velocity → flow.speed) or a near spelling
+/// (within 2 edits and a third of the length, in the key's own section); "" if none, and always "" for a key
+/// that means something else (cylinder.span is not cylinder.spin).
 std::string nearest_key(const std::string& key);
+
+/// What follows "unknown key K" in a message: " (did you mean X?)", else " (keys of [section]: …)", else "".
+std::string unknown_key_hint(const std::string& key);
 
 }  // namespace magnus

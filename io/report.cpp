@@ -6,27 +6,43 @@
 
 #include "io/hdf5_io.hpp"
 #include "io/text_format.hpp"
+#include "postproc/forces.hpp"
 
 namespace magnus {
 
 std::string fmt_opt(const std::optional<double>& v, const char* spec) {
-  return v ? fmt::format(fmt::runtime(spec), *v) : std::string("undefined");
+  return v ? fmt::format(fmt::runtime(spec), *v + 0.0) : std::string("undefined");  // + 0.0: never "-0"
 }
 
 namespace {
 
 std::string deg(double rad) { return fmt::format("{:.3f}°", rad * 180.0 / M_PI); }
 
-std::string points(const std::vector<StagnationPoint>& pts, double a) {
-  if (pts.empty()) return "none";
+/// The points in the one order every table uses (sorted_stagnation_points: θ in [0, 2π), ascending).
+std::string points(const std::vector<StagnationPoint>& unsorted, double a) {
+  if (unsorted.empty()) return "none";
   std::string s;
-  for (const auto& p : pts) {
+  for (const auto& p : sorted_stagnation_points(unsorted)) {
     if (!s.empty()) s += ", ";
     s += p.on_surface ? fmt::format("θ = {} on the surface", deg(p.theta))
                       : fmt::format("θ = {}, r = {:.6g} m = {:.6g} a (free)", deg(p.theta), p.r, p.r / a);
   }
   return s;
 }
+
+/// "none", and why when the exact free point lies beyond the grid's outer radius R.
+std::string numeric_points(const FlowResult& r) {
+  const double a = r.c.scene.radius, R = r.grid.outer_radius();
+  if (r.stagnation.empty())
+    for (const auto& p : r.stagnation_exact)
+      if (!p.on_surface && p.r > R)
+        return fmt::format("none: the free point lies outside the grid (exact r_s/a = {:.6g}, grid R/a = {:.6g})",
+                           p.r / a, R / a);
+  return points(r.stagnation, a);
+}
+
+/// A number as {spec} would print it, with −0 printed as 0.
+std::string num(double v, const char* spec = "{:.6g}") { return fmt::format(fmt::runtime(spec), v + 0.0); }
 
 }  // namespace
 
@@ -39,11 +55,18 @@ std::string summary_text(const FlowResult& r, const std::string& output_path) {
     s += fmt::format("{:<15}{}\n", label, text);
   };
   s += fmt::format("magnus {} — {}\n", MAGNUS_VERSION, c.title);
-  line("case", fmt::format("a = {:.6g} m, ω = {:.6g} rad/s, U = {:.6g} m/s, α = aω/U = {}, ρ = {:.6g} kg/m³",
-                           c.scene.radius, c.scene.spin, c.scene.speed, c.scene.speed > 0 ? fmt::format("{:.6g}", c.scene.spin_ratio()) : "undefined",
-                           c.scene.density));
-  line("circulation", fmt::format("Γ = {:.8g} m²/s ({})", c.scene.Gamma(),
-                                  c.scene.circulation_given ? "given" : "spin model, Γ = 2πa²ω"));
+  const Scene& sc = c.scene;
+  const bool given = sc.circulation_given, moving = sc.speed > 0.0, spinning = sc.spin != 0.0;
+  // The seed estimates lift from ω: with a given Γ and no spin it says nothing (with the spin model, ω = 0 → 0).
+  const bool seed_defined = spinning || !given;
+  // α = aω/U is the spin's ratio; with a given Γ the flow has the effective α_Γ = Γ/(2πaU) instead.
+  std::string alpha = moving ? num(sc.spin_ratio()) : "undefined (U = 0)";
+  if (given && moving) alpha += fmt::format(", α_Γ = Γ/(2πaU) = {} (the given Γ sets the flow)",
+                                            num(sc.Gamma() / (2.0 * M_PI * sc.radius * sc.speed)));
+  line("case", fmt::format("a = {} m, ω = {} rad/s, U = {} m/s, α = aω/U = {}, ρ = {} kg/m³", num(sc.radius),
+                           num(sc.spin), num(sc.speed), alpha, num(sc.density)));
+  line("circulation", fmt::format("Γ = {} m²/s ({})", num(sc.Gamma(), "{:.8g}"),
+                                  given ? "given, not from the spin" : "spin model, Γ = 2πa²ω"));
   const double R = g.outer_radius() / g.a;
   line("grid", fmt::format("n_θ × n_r = {} × {} ({} nodes), {} spacing, R/a = {:.6g}{}, far field {}",
                            g.n_theta, g.n_r, g.nodes(), to_string(g.spacing), R,
@@ -57,32 +80,44 @@ std::string summary_text(const FlowResult& r, const std::string& output_path) {
                              ms(r.timing.factor_s), ms(r.timing.solve_s), ms(r.timing.postproc_s),
                              ms(r.timing.total_s)));
   s += "\n";
-  line("lift F_y", fmt::format("{:.10g} N/m   (Kutta–Joukowski −ρUΓ = {:.10g} N/m)", f.lift, f.lift_kutta_joukowski));
-  line("drag F_x", fmt::format("{:.3g} N/m   (d'Alembert: 0)", f.drag));
+  line("lift F_y", fmt::format("{} N/m   (Kutta–Joukowski −ρUΓ = {} N/m)", num(f.lift, "{:.10g}"),
+                               num(f.lift_kutta_joukowski, "{:.10g}")));
+  line("drag F_x", fmt::format("{} N/m   (d'Alembert: 0)", num(f.drag, "{:.3g}")));
   if (f.cl) {
-    line("C_L", fmt::format("numeric {:.10g}   Kutta–Joukowski {:.10g}   seed estimate {:.10g}", *f.cl,
-                            *f.cl_kutta_joukowski, *f.cl_seed_estimate));
     const double kj = *f.cl_kutta_joukowski, seed = *f.cl_seed_estimate;
+    line("C_L", fmt::format("numeric {}   Kutta–Joukowski {}   seed estimate {}{}", num(*f.cl, "{:.10g}"),
+                            num(kj, "{:.10g}"), seed_defined ? num(seed, "{:.10g}") : "undefined (ω = 0)",
+                            given && spinning ? " (−4α: from ω, not from the given Γ)" : ""));
     line("", fmt::format("numeric/KJ − 1 = {}   KJ/seed = {}",
-                         kj != 0 ? fmt::format("{:.3e}", *f.cl / kj - 1) : "undefined (Γ = 0)",
-                         seed != 0 ? fmt::format("{:.6f} (π/2 = {:.6f})", kj / seed, M_PI / 2) : "undefined (ω = 0)"));
-    line("C_D", fmt::format("{:.3e}", *f.cd));
+                         kj != 0 ? num(*f.cl / kj - 1, "{:.3e}") : "undefined (Γ = 0)",
+                         !spinning ? "undefined (ω = 0)"
+                         : given   ? fmt::format("{} (= α_Γ·π/(2α): π/2 only when Γ = 2πa²ω)", num(kj / seed, "{:.6f}"))
+                                   : fmt::format("{} (π/2 = {:.6f})", num(kj / seed, "{:.6f}"), M_PI / 2)));
+    line("C_D", num(*f.cd, "{:.3e}"));
   } else {
     line("C_L, C_D", "undefined (U = 0: no dynamic pressure to scale by)");
   }
-  line("ΔP top−bottom", fmt::format("numeric {:.8g} Pa   exact 4ρUΓ/(2πa) = {:.8g} Pa   seed 2ρUaω = {:.8g} Pa",
-                                    f.delta_p_top_bottom, f.delta_p_top_bottom_exact, f.delta_p_seed_estimate));
-  if (f.delta_p_seed_estimate != 0.0)
-    line("", fmt::format("numeric/seed = {:.6f}: potential flow doubles the shoulder speed (2U, not U)",
-                         f.delta_p_top_bottom / f.delta_p_seed_estimate));
-  line("Magnus S", fmt::format("numeric {} kg/m   exact 2πρa² = {:.8g} kg/m   seed 4ρa² = {:.8g} kg/m",
-                               fmt_opt(f.magnus_S, "{:.8g}"), f.magnus_S_exact, 4.0 * c.scene.density * c.scene.radius * c.scene.radius));
-  line("stagnation", "numeric " + points(r.stagnation, c.scene.radius));
-  line("", "exact   " + points(r.stagnation_exact, c.scene.radius));
+  line("ΔP top−bottom", fmt::format("numeric {} Pa   exact 4ρUΓ/(2πa) = {} Pa   seed 2ρUaω = {}",
+                                    num(f.delta_p_top_bottom, "{:.8g}"), num(f.delta_p_top_bottom_exact, "{:.8g}"),
+                                    seed_defined ? num(f.delta_p_seed_estimate, "{:.8g}") + " Pa" : "undefined (ω = 0)"));
+  if (f.delta_p_seed_estimate != 0.0) {
+    const double ratio = f.delta_p_top_bottom / f.delta_p_seed_estimate;
+    line("", given ? fmt::format("numeric/seed = {}: the given Γ, not the spin, sets ΔP (exact 2α_Γ/α)", num(ratio, "{:.6f}"))
+                   : fmt::format("numeric/seed = {}: potential flow doubles the shoulder speed (2U, not U)",
+                                 num(ratio, "{:.6f}")));
+  }
+  const std::string s_exact = !given ? fmt::format("exact 2πρa² = {} kg/m", fmt_opt(f.magnus_S_exact, "{:.8g}"))
+                              : spinning ? fmt::format("exact ρΓ/ω = {} kg/m (the given Γ)", fmt_opt(f.magnus_S_exact, "{:.8g}"))
+                                         : "exact ρΓ/ω = undefined (ω = 0)";
+  line("Magnus S", fmt::format("numeric {}{}   {}   seed 4ρa² = {} kg/m", fmt_opt(f.magnus_S, "{:.8g}"),
+                               f.magnus_S ? " kg/m" : !moving ? " (U = 0)" : " (ω = 0)", s_exact,
+                               num(4.0 * sc.density * sc.radius * sc.radius, "{:.8g}")));
+  line("stagnation", "numeric " + numeric_points(r));
+  line("", "exact   " + points(r.stagnation_exact, sc.radius));
   s += "\n";
-  line("errors", fmt::format("ψ max rel {:.3e}   Cp surface max abs {}   C_L rel {:.3e}   Γ rel {:.3e}",
-                             r.errors.psi_max_rel, fmt_opt(r.errors.cp_surface_max_abs, "{:.3e}"), r.errors.cl_rel,
-                             r.errors.circulation_rel));
+  line("errors", fmt::format("ψ max rel {}   Cp surface max abs {}   C_L rel {}   Γ rel {}",
+                             num(r.errors.psi_max_rel, "{:.3e}"), fmt_opt(r.errors.cp_surface_max_abs, "{:.3e}"),
+                             fmt_opt(r.errors.cl_rel, "{:.3e}"), num(r.errors.circulation_rel, "{:.3e}")));
   if (r.info.estimated_cl_rel >= 0.0)
     line("", fmt::format("C_L rel estimated (a posteriori) {:.3e}", r.info.estimated_cl_rel));
   if (!output_path.empty()) line("output", fmt::format("{} (+ {} for ParaView)", output_path, xdmf_path(output_path)));

@@ -28,10 +28,11 @@ double ExactFlow::delta_p_top_bottom(double rho) const {
 std::vector<StagnationPoint> ExactFlow::stagnation_points() const {
   if (U <= 0.0) return {};
   const double s = Gamma / (4.0 * M_PI * a * U);  // sinθ_s; spin model: α/2
-  if (std::fabs(s) <= 1.0) {
+  // |s| = 1 within round-off (α = 2 gives s = 1 ± ε): the double root on the surface at θ = ±π/2.
+  if (std::fabs(std::fabs(s) - 1.0) <= 1e-12) return {{a, s > 0 ? M_PI / 2 : 3 * M_PI / 2, true}};
+  if (std::fabs(s) < 1.0) {
     double t1 = std::asin(s), t2 = M_PI - t1;
     if (t1 < 0.0) t1 += 2.0 * M_PI;
-    if (std::fabs(s) == 1.0) return {{a, t1, true}};
     return {{a, t1, true}, {a, t2, true}};
   }
   // Free point on the y axis: r_s = a(|2s| + √(4s² − 4))/2, above for Γ > 0.

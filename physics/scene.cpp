@@ -1,6 +1,8 @@
 #include "physics/scene.hpp"
 
+#include <cfloat>
 #include <cmath>
+#include <tuple>
 
 namespace magnus {
 
@@ -10,6 +12,59 @@ double Scene::Gamma() const {
 }
 
 double Scene::spin_ratio() const { return speed > 0.0 ? radius * spin / speed : 0.0; }
+
+std::optional<Overflow> find_overflow(const Scene& s, double outer_radius, const SceneKeys& k) {
+  const double a = s.radius, U = s.speed, rho = s.density, w = s.spin, G = s.Gamma(), p = s.pressure_inf;
+  struct Factor {
+    const std::string* key;
+    double value;
+  };
+  // Γ's own inputs: the given value, or a and ω (Γ = 2πa²ω).
+  const std::vector<Factor> gamma = s.circulation_given ? std::vector<Factor>{{&k.circulation, s.circulation_value}}
+                                                        : std::vector<Factor>{{&k.radius, a}, {&k.spin, w}};
+  auto with = [](std::vector<Factor> f, const std::vector<Factor>& more) {
+    f.insert(f.end(), more.begin(), more.end());
+    return f;
+  };
+  const Factor fa{&k.radius, a}, fU{&k.speed, U}, frho{&k.density, rho}, fw{&k.spin, w}, fp{&k.pressure, p};
+  const double u_max = 2.0 * U + std::fabs(G) / (2.0 * M_PI * a), R = outer_radius * a;
+  const std::vector<std::tuple<const char*, double, std::vector<Factor>>> checks = {
+      {"the circulation Γ", G, gamma},
+      {"the spin ratio α = aω/U", s.spin_ratio(), {fa, fw, fU}},
+      {"U²", U * U, {fU}},
+      {"ρU²", rho * U * U, {frho, fU}},
+      {"the force scale ½ρU²·2a", rho * U * U * a, {frho, fU, fa}},
+      {"the lift ρUΓ", rho * U * G, with({frho, fU}, gamma)},
+      {"the seed ΔP = 2ρUaω", 2.0 * rho * U * a * w, {frho, fU, fa, fw}},
+      {"the exact ΔP = 4ρUΓ/(2πa)", 4.0 * rho * U * G / (2.0 * M_PI * a), with({frho, fU, fa}, gamma)},
+      {"the seed force 4ρUa²ω", 4.0 * rho * U * a * a * w, {frho, fU, fa, fw}},
+      {"the Magnus S = 2πρa²", 2.0 * M_PI * rho * a * a, {frho, fa}},
+      {"the surface speed 2U + |Γ|/(2πa)", u_max, with({fU, fa}, gamma)},
+      {"the surface pressure p∞ − ½ρ(2U + |Γ|/(2πa))²", p - 0.5 * rho * u_max * u_max, with({fp, frho, fU, fa}, gamma)},
+      {"C_L = −Γ/(Ua)", U > 0.0 ? G / (U * a) : 0.0, with({fU, fa}, gamma)},
+      {"the free stagnation radius |Γ|/(2πU)", U > 0.0 ? G / (2.0 * M_PI * U) : 0.0, with({fU}, gamma)},
+      {"the streamfunction at the outer boundary U·R + |Γ|/(2π)·ln(R/a)",
+       U * R + std::fabs(G) / (2.0 * M_PI) * std::log(outer_radius), with({fU, fa}, gamma)},
+  };
+  for (const auto& [quantity, value, factors] : checks) {
+    bool inputs_nonzero = true;
+    for (const auto& f : factors) inputs_nonzero = inputs_nonzero && f.value != 0.0;
+    // Not finite, or lost below the smallest normal double although every input is non-zero (a sum, like the
+    // surface pressure, may be zero by cancellation: only products are checked for underflow).
+    const bool underflow = inputs_nonzero && std::fabs(value) < DBL_MIN && value == value &&
+                           std::string(quantity).find("pressure") == std::string::npos &&
+                           std::string(quantity).find("speed") == std::string::npos;
+    if (std::isfinite(value) && !underflow) continue;
+    const Factor* worst = &factors.front();
+    double worst_log = -1.0;
+    for (const auto& f : factors)
+      if (f.value != 0.0 && std::fabs(std::log10(std::fabs(f.value))) > worst_log)
+        worst = &f, worst_log = std::fabs(std::log10(std::fabs(f.value)));
+    const bool spin_as_given = worst->key == &k.spin && k.spin_value != 0.0;
+    return Overflow{quantity, *worst->key, spin_as_given ? k.spin_value : worst->value, underflow};
+  }
+  return std::nullopt;
+}
 
 const char* to_string(Spacing s) { return s == Spacing::geometric ? "geometric" : "uniform"; }
 const char* to_string(FarField f) { return f == FarField::exact ? "exact" : "freestream"; }

@@ -37,6 +37,7 @@ struct GridRequest {
   int n_theta = 256;
   int n_r = 0;                 ///< 0: chosen from the spacing (square cells)
   Spacing spacing = Spacing::geometric;
+  bool spacing_given = false;  ///< grid.spacing was stated (file or --set): a tolerance search keeps it
   double tolerance = 0.0;      ///< target relative lift error; 0: the grid as given
 };
 
@@ -61,6 +62,27 @@ struct Case {
   OutputRequest output;
   std::string source_text;  ///< resolved case as TOML
 };
+
+/// A derived quantity of a scene that is not finite in double precision, and the input to blame for it.
+struct Overflow {
+  std::string quantity;  ///< e.g. "U²", "ρU²", "the seed ΔP = 2ρUaω"
+  std::string key;       ///< the case key of the input with the largest |log10| among the quantity's factors
+  double value = 0.0;    ///< that input's value (SI)
+  bool underflow = false;  ///< the quantity is below the smallest normal double (else it is not finite)
+};
+
+/// The case-file keys the scene's inputs came from (spin: "cylinder.spin", ".spin_ratio" or ".rpm").
+struct SceneKeys {
+  std::string radius = "cylinder.radius", spin = "cylinder.spin", speed = "flow.speed",
+              density = "flow.density", pressure = "flow.pressure", circulation = "circulation.value";
+  double spin_value = 0.0;  ///< the value given for `spin` in its own units (α, rev/min); 0: ω itself
+};
+
+/// The first of Γ, α = aω/U, U², ρU², ½ρU²·2a, Γ, ρUΓ, the seed ΔP = 2ρUaω, 4ρUΓ/(2πa), F_seed = 4ρUa²ω, S = 2πρa²,
+/// the surface speed 2U + |Γ|/(2πa) and pressure p∞ ± ½ρ(2U + |Γ|/(2πa))², and ψ(R) ≈ U·R + |Γ|/(2π)·ln(R/a)
+/// (R = outer_radius·a), C_L = −Γ/(Ua) and the free stagnation radius |Γ|/(2πU) that is not finite, or that a
+/// product of non-zero inputs underflows below the smallest normal double; empty if none.
+std::optional<Overflow> find_overflow(const Scene& s, double outer_radius, const SceneKeys& keys = {});
 
 const char* to_string(Spacing);
 const char* to_string(FarField);

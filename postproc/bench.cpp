@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "postproc/pipeline.hpp"
 
@@ -43,7 +44,7 @@ BenchRow run_rung(const Case& c, const BenchOptions& opt) {
       const Errors e = compute_errors(c.scene, psi, exact_flow(c.scene).psi_field(d.grid.r, d.grid.theta), s, f);
       row.n_r = d.grid.n_r;
       row.unknowns = d.solver->op().unknowns();
-      row.cl_rel = e.cl_rel;
+      row.cl_rel = *e.cl_rel;  // U > 0: run_bench refuses U = 0
       row.psi_rel = e.psi_max_rel;
       row.cp_abs = e.cp_surface_max_abs.value_or(0.0);
     }
@@ -61,6 +62,9 @@ BenchRow run_rung(const Case& c, const BenchOptions& opt) {
 
 std::vector<BenchRow> run_bench(const Case& base, const BenchOptions& opt,
                                 const std::function<void(const std::string&)>& progress) {
+  if (!(base.scene.speed > 0.0))
+    throw std::runtime_error("bench: flow.speed = 0: C_L and its error are undefined without a freestream; "
+                             "bench needs flow.speed > 0");
   std::vector<BenchRow> rows;
   size_t total = opt.methods.size() * opt.stencils.size() * opt.ladder.size(), done = 0;
   for (Method m : opt.methods)

@@ -20,7 +20,8 @@ struct Forces {
   double delta_p_seed_estimate = 0.0;   ///< 2ρUaω, Pa
   double circulation_measured = 0.0;    ///< ∮ u_θ a dθ at r = a, m²/s
   std::optional<double> magnus_S;       ///< S = −F_y/(Uω), kg/m (F = S ω × v_body)
-  double magnus_S_exact = 0.0;          ///< 2πρa², kg/m
+  /// S exact, kg/m: 2πρa² (spin model); ρΓ/ω for a given Γ (F_y = −ρUΓ = −S·U·ω), empty when ω = 0 (undefined)
+  std::optional<double> magnus_S_exact;
 };
 
 /// F = −∮ p n̂ a dθ by the periodic trapezoid, in the form ½ρ∮(2ū u' + u'²) n̂ a dθ with the surface's
@@ -37,7 +38,8 @@ std::vector<StagnationPoint> find_stagnation_points(
 struct Errors {
   double psi_max_rel = 0.0;                ///< max|ψ − ψ_ex| / max|ψ_ex|
   std::optional<double> cp_surface_max_abs;///< max|Cp − Cp_ex| on r = a (U > 0)
-  double cl_rel = 0.0;  ///< |F_y − F_y,KJ| / |F_y,KJ| (absolute in units of ½ρU²·2a when F_y,KJ = 0)
+  /// |F_y − F_y,KJ| / |F_y,KJ| (absolute in units of ½ρU²·2a when F_y,KJ = 0); empty when U = 0 (undefined)
+  std::optional<double> cl_rel;
   double circulation_rel = 0.0;  ///< |Γ_measured − Γ| / |Γ| (/(2πaU) when Γ = 0)
 };
 /// |F_y − F_y,KJ| / |F_y,KJ|; when F_y,KJ = 0, the absolute C_L error (U > 0) or the lift itself (N/m).

@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include "postproc/finite.hpp"
+#include "postproc/plan.hpp"
 #include "postproc/tolerance.hpp"
 #include "solver/memory.hpp"
 
@@ -25,21 +27,28 @@ std::optional<double> lift_coefficient(const Case& c, int threads) {
   return compute_forces(c.scene, compute_surface(d.grid, c.scene, psi, derivative_order(c.solver.stencil))).cl;
 }
 
-FlowResult run_case(const Case& requested, int threads, size_t max_bytes) {
+RunPlan plan_run(const Case& requested, int threads, size_t max_bytes) {
   const double t0 = now_s();
-  Case c = requested;
-  GridChoice choice;
-  if (c.grid.tolerance > 0.0) {  // only what the scene needs: the grid the tolerance asks for
-    choice = choose_grid(c, threads);
-    c.grid.n_theta = choice.n_theta;
-    c.grid.n_r = 0;
-    c.solver.stencil = choice.stencil;
+  RunPlan p;
+  p.c = requested;
+  if (p.c.grid.tolerance > 0.0) {  // only what the scene needs: the grid the tolerance asks for
+    p.choice = choose_grid(p.c, threads, max_bytes);
+    p.c.grid.n_theta = p.choice.n_theta;
+    p.c.grid.n_r = 0;
+    p.c.grid.spacing = p.choice.spacing;
+    p.c.solver.stencil = p.choice.stencil;
   }
-  const double t_choice = now_s() - t0;
+  p.choice_s = now_s() - t0;
+  return p;
+}
+
+FlowResult run_planned(const RunPlan& plan, int threads, size_t max_bytes) {
+  const double t0 = now_s();
+  const Case& c = plan.c;
   const FieldSelection sel = select_fields(c.output.fields);
   int fields = 0;
   for (bool on : sel.on) fields += on;
-  const Discretization d = discretize(c, threads, max_bytes, fields);
+  const Discretization d = discretize(c, threads, max_bytes, fields);          // the memory guard, then factor
   const PsiBasis basis = solve_basis(*d.solver);                               // solve ψ_U, ψ_Γ
   const double t1 = now_s();
   FlowResult r = postprocess(d.grid, c, basis.psi_U, basis.psi_Gamma, sel);
@@ -47,16 +56,22 @@ FlowResult run_case(const Case& requested, int threads, size_t max_bytes) {
   r.timing.factor_s = d.solver->timing.factor_s;
   r.timing.solve_s = d.solver->timing.solve_s;
   r.timing.postproc_s = now_s() - t1;
-  r.timing.total_s = now_s() - t0;
+  r.timing.total_s = now_s() - t0 + plan.choice_s;
   r.info.method = to_string(d.solver->method());
   r.info.threads = threads;
   if (c.grid.tolerance > 0.0) {
-    r.info.estimated_cl_rel = choice.estimated_cl_rel;
-    r.info.grid_choice =
-        fmt::format("chosen for C_L tolerance {:.3g}: n_θ = {}, {} stencil (grids tried {}, {:.3g} ms)",
-                    c.grid.tolerance, c.grid.n_theta, to_string(c.solver.stencil), choice.trail, t_choice * 1e3);
+    r.info.estimated_cl_rel = plan.choice.estimated_cl_rel;
+    r.info.grid_choice = fmt::format(
+        "chosen for C_L tolerance {:.3g}: n_θ = {}, {} spacing, {} stencil (grids tried {}, {:.3g} ms)",
+        c.grid.tolerance, c.grid.n_theta, to_string(c.grid.spacing), to_string(c.solver.stencil), plan.choice.trail,
+        plan.choice_s * 1e3);
   }
+  check_finite(r);  // the last line of defence: nothing not finite is printed or written
   return r;
+}
+
+FlowResult run_case(const Case& requested, int threads, size_t max_bytes) {
+  return run_planned(plan_run(requested, threads, max_bytes), threads, max_bytes);
 }
 
 }  // namespace magnus

@@ -149,7 +149,7 @@ TEST_CASE("sweep ranges A:B:STEP: inclusive, rounded, and bad ones refused in on
 TEST_CASE("magnus sweep: table, CSV, HDF5 and plot; bad ranges give one line and no files", "[app][sweep][cli]") {
   const std::string dir = test::temp_dir("sweep-cli");
   const std::string case_path = dir + "/case.toml";
-  std::ofstream(case_path) << "[grid]\nn_theta = 32\n";
+  std::ofstream(case_path) << "[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = 10.0\n[grid]\nn_theta = 32\n";
   const Outcome o = magnus_cmd({"sweep", case_path, "--spin-ratio", "0:4:0.5", "--csv", dir + "/s.csv", "-o",
                                 dir + "/s.h5", "--plot", dir + "/s.png", "--size", "400x300"},
                                dir);
@@ -220,8 +220,8 @@ TEST_CASE("magnus sweep: table, CSV, HDF5 and plot; bad ranges give one line and
 
   // Bad input: one line on stderr, non-zero exit, nothing written.
   const std::string bad_dir = test::temp_dir("sweep-cli-bad");
-  std::ofstream(bad_dir + "/case.toml") << "[grid]\nn_theta = 16\n";
-  std::ofstream(bad_dir + "/still.toml") << "[grid]\nn_theta = 16\n[flow]\nspeed = 0.0\n";
+  std::ofstream(bad_dir + "/case.toml") << "[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = 10.0\n[grid]\nn_theta = 16\n";
+  std::ofstream(bad_dir + "/still.toml") << "[cylinder]\nradius = 0.1\nspin = 100.0\n[grid]\nn_theta = 16\n[flow]\nspeed = 0.0\n";
   const std::string c = bad_dir + "/case.toml", out = bad_dir + "/o.csv";
   const std::vector<std::vector<std::string>> bad = {
       {"sweep", c, "--spin-ratio", "4:0:0.5", "--csv", out},
