@@ -12,36 +12,19 @@
 #include <optional>
 
 #include "io/hdf5_io.hpp"
+#include "io/schema.hpp"
 
 namespace magnus {
 
 namespace {
 
-/// A parameter as stored in /parameters (or the root title): number or text.
-struct ParamSpec {
-  const char* object;
-  const char* name;
-  bool text;
-  const char* units;
-};
-const ParamSpec kParams[] = {
-    {"/", "title", true, ""},
-    {"/parameters", "radius", false, "m"},
-    {"/parameters", "speed", false, "m/s"},
-    {"/parameters", "spin", false, "rad/s"},
-    {"/parameters", "spin_ratio", false, "1"},
-    {"/parameters", "circulation_model", true, ""},
-    {"/parameters", "circulation", false, "m²/s"},
-    {"/parameters", "density", false, "kg/m³"},
-    {"/parameters", "pressure_inf", false, "Pa"},
-    {"/parameters", "outer_radius", false, "R/a"},
-    {"/parameters", "far_field", true, ""},
-    {"/parameters", "spacing", true, ""},
-    {"/parameters", "n_theta", false, ""},
-    {"/parameters", "n_r", false, ""},
-    {"/parameters", "method", true, ""},
-    {"/parameters", "stencil", true, ""},
-};
+/// The parameters compared: the root title and every /parameters attribute of the schema.
+std::vector<const AttrSpec*> params() {
+  std::vector<const AttrSpec*> out = {find_attribute("/", "title")};
+  for (const AttrSpec& a : result_attributes())
+    if (std::string(a.group) == "/parameters") out.push_back(&a);
+  return out;
+}
 
 struct Param {
   std::optional<double> number;
@@ -63,67 +46,60 @@ std::string show(const Param& p) {
   return "—";
 }
 
-/// One row of the comparison: a label with units, how to get the value, and its format.
+/// One row of the comparison: a schema attribute with a compare label, or a ratio of two of them.
 struct Quantity {
-  const char* label;
-  const char* csv;
-  const char* spec;
+  std::string label, csv, spec;
+  const AttrSpec* attr = nullptr;       ///< the value, or
+  const AttrSpec* num = nullptr;        ///< num / den (− 1 when minus_one)
+  const AttrSpec* den = nullptr;
+  bool minus_one = false;
 };
-const Quantity kQuantities[] = {
-    {"lift F_y (N/m)", "lift_N_m", "{:.10g}"},
-    {"drag F_x (N/m)", "drag_N_m", "{:.3g}"},
-    {"C_L numeric", "cl", "{:.10g}"},
-    {"C_L Kutta–Joukowski", "cl_kutta_joukowski", "{:.10g}"},
-    {"C_L seed estimate", "cl_seed_estimate", "{:.10g}"},
-    {"C_L numeric/K–J − 1", "cl_over_kj_minus_1", "{:.3e}"},
-    {"C_L K–J/seed", "kj_over_seed", "{:.6f}"},
-    {"C_D", "cd", "{:.3e}"},
-    {"ΔP top−bottom (Pa)", "delta_p_top_bottom_Pa", "{:.8g}"},
-    {"ΔP seed 2ρUaω (Pa)", "delta_p_seed_estimate_Pa", "{:.8g}"},
-    {"error ψ max rel", "psi_max_rel", "{:.3e}"},
-    {"error Cp surface max abs", "cp_surface_max_abs", "{:.3e}"},
-    {"error C_L rel", "cl_rel", "{:.3e}"},
-    {"time total (s)", "total_s", "{:.3g}"},
-};
+
+std::vector<Quantity> quantities() {
+  std::vector<Quantity> out;
+  for (const AttrSpec& a : result_attributes()) {
+    if (!a.compare_label) continue;
+    out.push_back({a.compare_label, a.compare_csv, a.compare_format, &a});
+    if (std::string(a.name) == "cl_seed_estimate") {
+      const AttrSpec* cl = find_attribute("/forces", "cl");
+      const AttrSpec* kj = find_attribute("/forces", "cl_kutta_joukowski");
+      out.push_back({"C_L numeric/K–J − 1", "cl_over_kj_minus_1", "{:.3e}", nullptr, cl, kj, true});
+      out.push_back({"C_L K–J/seed", "kj_over_seed", "{:.6f}", nullptr, kj, &a, false});
+    }
+  }
+  return out;
+}
 
 struct FileData {
   std::string path;
-  std::vector<Param> params;                   // as kParams
-  std::vector<std::optional<double>> values;  // as kQuantities
+  std::vector<Param> params;                   // as params()
+  std::vector<std::optional<double>> values;  // as quantities()
 };
 
-FileData read(const std::string& path) {
+FileData read(const std::string& path, const std::vector<const AttrSpec*>& ps, const std::vector<Quantity>& qs) {
   const ResultFile f(path);
   FileData d;
   d.path = path;
-  for (const auto& p : kParams) {
+  for (const AttrSpec* p : ps) {
     Param v;
-    if (f.has_attr(p.object, p.name)) {
-      if (p.text) v.text = f.attr_string(p.object, p.name);
-      else v.number = f.attr_double(p.object, p.name);
+    if (f.has_attr(p->group, p->name)) {
+      if (p->kind == AttrKind::text) v.text = f.attr_string(p->group, p->name);
+      else v.number = f.attr_double(p->group, p->name);
     }
     d.params.push_back(v);
   }
-  auto attr = [&](const char* obj, const char* name) -> std::optional<double> {
-    if (!f.has_attr(obj, name)) return std::nullopt;
-    return f.attr_double(obj, name);
+  auto attr = [&](const AttrSpec* a) -> std::optional<double> {
+    if (!f.has_attr(a->group, a->name)) return std::nullopt;
+    return f.attr_double(a->group, a->name);
   };
-  const auto cl = attr("/forces", "cl"), kj = attr("/forces", "cl_kutta_joukowski"),
-             seed = attr("/forces", "cl_seed_estimate");
-  d.values = {attr("/forces", "lift"),
-              attr("/forces", "drag"),
-              cl,
-              kj,
-              seed,
-              cl && kj && *kj != 0.0 ? std::optional<double>(*cl / *kj - 1.0) : std::nullopt,
-              kj && seed && *seed != 0.0 ? std::optional<double>(*kj / *seed) : std::nullopt,
-              attr("/forces", "cd"),
-              attr("/forces", "delta_p_top_bottom"),
-              attr("/forces", "delta_p_seed_estimate"),
-              attr("/errors", "psi_max_rel"),
-              attr("/errors", "cp_surface_max_abs"),
-              attr("/errors", "cl_rel"),
-              attr("/timing", "total_s")};
+  for (const Quantity& q : qs) {
+    if (q.attr) {
+      d.values.push_back(attr(q.attr));
+      continue;
+    }
+    const auto n = attr(q.num), m = attr(q.den);
+    d.values.push_back(n && m && *m != 0.0 ? std::optional<double>(*n / *m - (q.minus_one ? 1.0 : 0.0)) : std::nullopt);
+  }
   return d;
 }
 
@@ -132,8 +108,10 @@ FileData read(const std::string& path) {
 
 Comparison compare_results(const std::vector<std::string>& paths) {
   if (paths.empty()) throw std::invalid_argument("compare: no result files given");
+  const std::vector<const AttrSpec*> kParams = params();
+  const std::vector<Quantity> kQuantities = quantities();
   std::vector<FileData> files;
-  for (const auto& p : paths) files.push_back(read(p));
+  for (const auto& p : paths) files.push_back(read(p, kParams, kQuantities));
 
   Comparison out;
   std::vector<size_t> differ;
@@ -141,7 +119,7 @@ Comparison compare_results(const std::vector<std::string>& paths) {
     for (size_t i = 1; i < files.size(); ++i)
       if (!same(files[0].params[k], files[i].params[k])) {
         differ.push_back(k);
-        out.differing.push_back(kParams[k].name);
+        out.differing.push_back(kParams[k]->name);
         break;
       }
 
@@ -154,8 +132,8 @@ Comparison compare_results(const std::vector<std::string>& paths) {
     if (k == 0) continue;  // the titles head the table already
     std::vector<std::string> cells;
     for (const auto& f : files) cells.push_back(show(f.params[k]));
-    const std::string units = kParams[k].units;
-    param_rows.push_back({units.empty() ? kParams[k].name : fmt::format("{} ({})", kParams[k].name, units), cells});
+    const std::string units = kParams[k]->kind == AttrKind::number ? kParams[k]->units : "";
+    param_rows.push_back({units.empty() ? kParams[k]->name : fmt::format("{} ({})", kParams[k]->name, units), cells});
   }
   for (size_t q = 0; q < std::size(kQuantities); ++q) {
     std::vector<std::string> cells;
@@ -199,7 +177,7 @@ Comparison compare_results(const std::vector<std::string>& paths) {
   std::string& c = out.csv;
   c += "file,title";
   for (size_t k : differ)
-    if (k != 0) c += std::string(",") + kParams[k].name;
+    if (k != 0) c += std::string(",") + kParams[k]->name;
   for (const auto& q : kQuantities) c += std::string(",") + q.csv;
   c += "\n";
   for (const auto& f : files) {
@@ -218,7 +196,9 @@ void command_compare(const std::vector<std::string>& paths, const std::string& c
   if (!csv.empty()) check_writable(csv);
   const Comparison c = compare_results(paths);
   if (!csv.empty()) write_text_output(csv, c.csv);
-  std::fputs(c.table.c_str(), stdout);
+  // With --csv -, standard output carries the CSV alone (for a pipe); the table, which says the same, is
+  // not printed.
+  if (csv != "-") std::fputs(c.table.c_str(), stdout);
 }
 
 }  // namespace magnus

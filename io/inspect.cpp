@@ -2,55 +2,194 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
+#include <set>
+#include <stdexcept>
 
 #include "io/hdf5_io.hpp"
-#include "io/report.hpp"
-#include "io/inspect.hpp"
+#include "io/schema.hpp"
 
 namespace magnus {
 
-std::string describe_result(const std::string& path) {
-  const ResultFile f(path);
+namespace {
+
+/// Bookkeeping attributes: shown through what they describe, not as values.
+bool bookkeeping(const std::string& name) {
+  return name == "units" || name == "undefined" || name == "note" || name == "description" ||
+         (name.size() > 6 && name.compare(name.size() - 6, 6, "_units") == 0);
+}
+
+std::string value_text(const ResultFile& f, const std::string& obj, const std::string& name) {
+  if (f.attr_is_text(obj, name)) {
+    std::string v = f.attr_string(obj, name);
+    const auto nl = v.find('\n');
+    if (nl != std::string::npos) v = fmt::format("({} lines of text)", std::count(v.begin(), v.end(), '\n') + 1);
+    return v;
+  }
+  return fmt::format("{:.10g}", f.attr_double(obj, name));
+}
+
+/// The unit of obj@name: the companion NAME_units (version 2), else the schema's; "" for text.
+std::string attr_units(const ResultFile& f, const std::string& obj, const std::string& name) {
+  if (f.has_attr(obj, name + "_units") && f.attr_is_text(obj, name + "_units")) return f.attr_string(obj, name + "_units");
+  if (const AttrSpec* a = find_attribute(obj, name)) return a->units;
+  return "";
+}
+
+std::string line(const std::string& name, const std::string& value, const std::string& units) {
+  return units.empty() ? fmt::format("  {:<26}{}\n", name, value) : fmt::format("  {:<26}{}  [{}]\n", name, value, units);
+}
+
+/// Every attribute of a group: the schema's first (undefined ones marked), then any others the file holds.
+std::string group_text(const ResultFile& f, const std::string& group, const char* heading, bool strict) {
+  std::string s = fmt::format("\n{}\n", heading);
+  std::set<std::string> undefined;
+  if (f.has_attr(group, "undefined")) {
+    const std::string list = f.attr_string(group, "undefined");
+    size_t at = 0;
+    while (at <= list.size()) {
+      const size_t comma = std::min(list.find(", ", at), list.size());
+      undefined.insert(list.substr(at, comma - at));
+      at = comma + 2;
+    }
+  }
+  std::set<std::string> shown;
+  for (const AttrSpec& a : result_attributes()) {
+    if (group != a.group || group == "/") continue;
+    shown.insert(a.name);
+    if (f.has_attr(group, a.name)) s += line(a.name, value_text(f, group, a.name), a.units);
+    else if (strict && !undefined.count(a.name))  // version 2 lists every value it omits
+      throw std::runtime_error(fmt::format("'{}' is damaged or incomplete: {}@{} is missing", f.path(), group, a.name));
+    else if (a.kind != AttrKind::text) s += line(a.name, "undefined", a.units);
+  }
+  for (const auto& name : f.attributes(group))
+    if (!shown.count(name) && !bookkeeping(name)) s += line(name, value_text(f, group, name), attr_units(f, group, name));
+  return s;
+}
+
+std::string dims_text(const std::vector<size_t>& shape) {
+  std::string dims;
+  for (size_t d : shape) dims += (dims.empty() ? "" : " × ") + std::to_string(d);
+  return dims;
+}
+
+/// The stagnation points, as coordinates: r in m and in units of a, θ in rad and degrees.
+std::string stagnation_text(const ResultFile& f, double a) {
   std::string s;
-  s += fmt::format("{}: magnus-flow version {} (written by magnus {})\n", path, f.attr_int("/", "format_version"),
+  for (const bool exact : {false, true}) {
+    std::vector<double> r, th;
+    const std::string sfx = exact ? "_exact" : "";
+    if (f.has("/stagnation/r" + sfx) && f.has("/stagnation/theta" + sfx)) {
+      r = f.dataset("/stagnation/r" + sfx);
+      th = f.dataset("/stagnation/theta" + sfx);
+    } else if (f.has(exact ? "/stagnation/exact" : "/stagnation/numeric")) {  // version 1: (k, 2) of (r, θ)
+      const auto v = f.dataset(exact ? "/stagnation/exact" : "/stagnation/numeric");
+      for (size_t k = 0; k + 1 < v.size(); k += 2) r.push_back(v[k]), th.push_back(v[k + 1]);
+    } else {
+      continue;
+    }
+    s += fmt::format("  {}:{}\n", exact ? "exact" : "numeric", r.empty() ? " none" : "");
+    for (size_t k = 0; k < std::min(r.size(), th.size()); ++k)
+      s += fmt::format("    r = {:.8g} m ({:.6g} a), theta = {:.8g} rad ({:.4f}°)\n", r[k], a > 0 ? r[k] / a : 0.0,
+                       th[k], th[k] * 180.0 / M_PI);
+  }
+  return s.empty() ? s : "\nstagnation points\n" + s;
+}
+
+std::string describe_flow(const ResultFile& f) {
+  // A result has a version and its parameters: a file with only the format attribute is not one.
+  const long version = f.attr_int("/", "format_version");
+  if (!f.has("/parameters") || !f.has("/grid/r"))
+    throw std::runtime_error(fmt::format("'{}' is not a complete magnus result: no /parameters or /grid", f.path()));
+  // What every complete file holds (a damaged group can lose links silently): the grid, the surface but
+  // what it lists as undefined, and (version 2) the stagnation points and a field behind every mesh view.
+  std::vector<std::string> expected = {"/grid/r", "/grid/theta", "/grid/x", "/grid/y", "/surface/theta",
+                                       "/surface/u_theta", "/surface/pressure"};
+  const std::string surface_undefined = f.has_attr("/surface", "undefined") ? f.attr_string("/surface", "undefined") : "";
+  if (surface_undefined.find("cp") == std::string::npos) expected.insert(expected.end(), {"/surface/cp", "/surface/cp_exact"});
+  if (version >= 2) {
+    for (const char* p : {"/stagnation/r", "/stagnation/theta", "/stagnation/r_exact", "/stagnation/theta_exact",
+                          "/mesh/points", "/mesh/quads"})
+      expected.push_back(p);
+    for (const DatasetSpec* d : field_datasets())
+      if (f.has("/mesh/" + d->path.substr(8))) expected.push_back(d->path);
+  }
+  for (const auto& p : expected)
+    if (!f.has(p)) throw std::runtime_error(fmt::format("'{}' is damaged or incomplete: {} is missing", f.path(), p));
+  std::string s;
+  s += fmt::format("{}: magnus-flow version {} (written by magnus {})\n", f.path(), version,
                    f.attr_string("/", "software_version"));
-  if (f.has_attr("/", "title")) s += fmt::format("title: {}\n", f.attr_string("/", "title"));
-  auto num = [&](const char* obj, const char* name) {
-    return f.has_attr(obj, name) ? fmt::format("{:.10g}", f.attr_double(obj, name)) : std::string("undefined");
-  };
-  s += "\nparameters\n";
-  for (const char* k : {"radius", "spin", "spin_ratio", "speed", "density", "pressure_inf", "circulation",
-                        "outer_radius"})
-    s += fmt::format("  {:<22}{}\n", k, num("/parameters", k));
-  for (const char* k : {"far_field", "spacing", "method", "stencil"})
-    if (f.has_attr("/parameters", k)) s += fmt::format("  {:<22}{}\n", k, f.attr_string("/parameters", k));
-  for (const char* k : {"n_r", "n_theta"})
-    if (f.has_attr("/parameters", k)) s += fmt::format("  {:<22}{}\n", k, f.attr_int("/parameters", k));
-  s += "\nforces\n";
-  for (const char* k : {"lift", "drag", "cl", "cd", "cl_kutta_joukowski", "cl_seed_estimate", "delta_p_top_bottom",
-                        "delta_p_seed_estimate", "circulation_measured"})
-    s += fmt::format("  {:<22}{}\n", k, num("/forces", k));
-  s += "\nerrors\n";
-  for (const char* k : {"psi_max_rel", "cp_surface_max_abs", "cl_rel"})
-    s += fmt::format("  {:<22}{}\n", k, num("/errors", k));
-  s += "\ntiming (s)\n";
-  for (const char* k : {"total_s", "assemble_s", "factor_s", "solve_s", "postproc_s"})
-    s += fmt::format("  {:<22}{}\n", k, num("/timing", k));
+  for (const char* k : {"model", "title"})
+    if (f.has_attr("/", k)) s += fmt::format("{}: {}\n", k, f.attr_string("/", k));
+  s += group_text(f, "/parameters", "parameters", version >= 2);
+  s += group_text(f, "/forces", "forces", version >= 2);
+  s += group_text(f, "/errors", "errors", version >= 2);
+  s += group_text(f, "/timing", "timing", version >= 2);
+  for (const char* g : {"/fields", "/surface"})
+    if (f.has_attr(g, "undefined")) s += fmt::format("\n{} undefined: {}\n", g, f.attr_string(g, "undefined"));
+  s += stagnation_text(f, f.has_attr("/parameters", "radius") ? f.attr_double("/parameters", "radius") : 0.0);
   s += "\ndatasets\n";
   size_t values = 0;
   const auto all = f.datasets();
   for (const auto& [name, shape] : all) {
-    std::string dims;
-    for (size_t d : shape) dims += (dims.empty() ? "" : " × ") + std::to_string(d);
-    const std::string units = f.has_attr(name, "units") ? f.attr_string(name, "units") : "?";
-    s += fmt::format("  {:<24}({})  [{}]\n", name, dims, units);
+    std::string units = dataset_units(name);
+    if (units.empty()) units = f.has_attr(name, "units") ? f.attr_string(name, "units") : "?";
+    const DatasetSpec* d = find_dataset(name);
+    s += fmt::format("  {:<24}({})  [{}]{}\n", name, dims_text(shape), units, d ? "  " + d->description : "");
     // Read every value back: HDF5 verifies the checksums (Fletcher-32) on the way, so a damaged file is
     // reported here rather than found later by whoever uses the numbers.
     values += f.dataset(name).size();
   }
   s += fmt::format("\nchecked: {} datasets, {} values read back intact\n", all.size(), values);
   return s;
+}
+
+std::string describe_sweep(const ResultFile& f) {
+  std::string s;
+  s += fmt::format("{}: magnus-sweep version {} (written by magnus {})\n", f.path(), f.version(),
+                   f.has_attr("/", "software_version") ? f.attr_string("/", "software_version") : "?");
+  for (const char* k : {"title", "variable"})
+    if (f.has_attr("/", k)) s += fmt::format("{}: {}\n", k, f.attr_string("/", k));
+  for (const auto& [g, heading] : {std::pair{"/parameters", "parameters"}, std::pair{"/timing", "timing"}}) {
+    if (!f.has(g)) continue;
+    s += fmt::format("\n{}\n", heading);
+    for (const auto& name : f.attributes(g))
+      if (!bookkeeping(name)) s += line(name, value_text(f, g, name), attr_units(f, g, name));
+    if (f.has_attr(g, "units")) s += fmt::format("  (units: {})\n", f.attr_string(g, "units"));
+  }
+  s += "\ncolumns (/sweep)\n";
+  size_t values = 0;
+  const auto all = f.datasets();
+  for (const auto& [name, shape] : all) {
+    const std::vector<double> v = f.dataset(name);
+    values += v.size();
+    const bool fill = f.has_attr(name, "_FillValue");
+    const double fv = fill ? f.attr_double(name, "_FillValue") : 0.0;
+    double lo = INFINITY, hi = -INFINITY;
+    size_t undefined = 0;
+    for (double x : v) {
+      if (!std::isfinite(x) || (fill && x == fv)) {
+        ++undefined;
+        continue;
+      }
+      lo = std::min(lo, x), hi = std::max(hi, x);
+    }
+    const std::string units = f.has_attr(name, "units") ? f.attr_string(name, "units") : "?";
+    const std::string range = lo <= hi ? fmt::format("{:.6g} … {:.6g}", lo, hi) : std::string("all undefined");
+    s += fmt::format("  {:<32}({})  [{}]  {}{}\n", name, dims_text(shape), units, range,
+                     undefined ? fmt::format(" ({} undefined)", undefined) : "");
+  }
+  if (f.has_attr("/sweep", "undefined")) s += fmt::format("  undefined (not stored): {}\n", f.attr_string("/sweep", "undefined"));
+  s += fmt::format("\nchecked: {} datasets, {} values read back intact\n", all.size(), values);
+  return s;
+}
+
+}  // namespace
+
+std::string describe_result(const std::string& path) {
+  const ResultFile f(path, {"magnus-flow", "magnus-sweep"});
+  return f.format() == "magnus-sweep" ? describe_sweep(f) : describe_flow(f);
 }
 
 }  // namespace magnus

@@ -1,10 +1,12 @@
 #pragma once
-// `magnus inspect`: what a result file holds, as text.
+// `magnus inspect`: what a result (magnus-flow) or sweep (magnus-sweep) file holds, as text, with units.
 #include <string>
 
 namespace magnus {
 
-/// What a result file holds (magnus inspect). Throws std::runtime_error with one line.
+/// Every attribute and dataset of a magnus-flow file (units from the schema table, io/schema.hpp), or the
+/// parameters and columns of a magnus-sweep file (units and ranges); every value is read back, so a damaged
+/// file is reported. Versions 1 and 2. Throws std::runtime_error with one line.
 std::string describe_result(const std::string& path);
 
 }  // namespace magnus

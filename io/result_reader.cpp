@@ -6,23 +6,34 @@
 #include <stdexcept>
 
 #include "io/hdf5_io.hpp"
+#include "io/schema.hpp"
 
 namespace magnus {
 
 namespace {
 
-std::vector<StagnationPoint> read_points(const ResultFile& f, const char* name, double a) {
-  std::vector<StagnationPoint> out;
-  if (!f.has(name)) return out;
-  std::vector<size_t> shape;
-  const auto v = f.dataset(name, &shape);
-  if (v.empty()) return out;
-  if (shape.size() != 2 || shape[1] != 2)
-    throw std::runtime_error(fmt::format("'{}': {} is not a (k, 2) table of (r, theta)", f.path(), name));
-  for (size_t k = 0; k < shape[0]; ++k) {
-    const double r = v[2 * k], th = v[2 * k + 1];
-    out.push_back({r, th, std::fabs(r - a) <= 1e-9 * a});
+[[noreturn]] void fail(const std::string& what) { throw std::runtime_error(what); }
+
+/// Stagnation points: version 2 stores /stagnation/r and /stagnation/theta (and *_exact); version 1 a
+/// (k, 2) table /stagnation/numeric (or exact) of (r, θ).
+std::vector<StagnationPoint> read_points(const ResultFile& f, bool exact, double a) {
+  std::vector<double> r, th;
+  const std::string suffix = exact ? "_exact" : "";
+  if (f.has("/stagnation/r" + suffix) && f.has("/stagnation/theta" + suffix)) {
+    r = f.dataset("/stagnation/r" + suffix);
+    th = f.dataset("/stagnation/theta" + suffix);
+    if (r.size() != th.size()) fail(fmt::format("'{}': /stagnation/r{} and theta{} differ in length", f.path(), suffix, suffix));
+  } else {
+    const std::string name = exact ? "/stagnation/exact" : "/stagnation/numeric";
+    if (!f.has(name)) return {};
+    std::vector<size_t> shape;
+    const auto v = f.dataset(name, &shape);
+    if (v.empty()) return {};
+    if (shape.size() != 2 || shape[1] != 2) fail(fmt::format("'{}': {} is not a (k, 2) table of (r, theta)", f.path(), name));
+    for (size_t k = 0; k < shape[0]; ++k) r.push_back(v[2 * k]), th.push_back(v[2 * k + 1]);
   }
+  std::vector<StagnationPoint> out;
+  for (size_t k = 0; k < r.size(); ++k) out.push_back({r[k], th[k], std::fabs(r[k] - a) <= 1e-9 * a});
   return out;
 }
 
@@ -32,20 +43,15 @@ FlowResult read_result(const std::string& path) {
   const ResultFile f(path);
   FlowResult r;
   Case& c = r.c;
-  c.title = f.has_attr("/", "title") ? f.attr_string("/", "title") : std::string("Spinning cylinder");
-  c.scene.radius = f.attr_double("/parameters", "radius");
-  c.scene.speed = f.attr_double("/parameters", "speed");
-  c.scene.spin = f.attr_double("/parameters", "spin");
-  c.scene.density = f.attr_double("/parameters", "density");
-  c.scene.pressure_inf = f.attr_double("/parameters", "pressure_inf");
-  c.scene.circulation_given =
-      f.has_attr("/parameters", "circulation_model") && f.attr_string("/parameters", "circulation_model") == "given";
-  c.scene.circulation_value = f.attr_double("/parameters", "circulation");
-  if (f.has_attr("/parameters", "spacing"))
-    c.grid.spacing = f.attr_string("/parameters", "spacing") == "uniform" ? Spacing::uniform : Spacing::geometric;
-  if (f.has_attr("/parameters", "stencil"))
-    c.solver.stencil = f.attr_string("/parameters", "stencil") == "9-point" ? StencilKind::nine_point : StencilKind::five_point;
-  if (!(c.scene.radius > 0.0)) throw std::runtime_error(fmt::format("'{}': /parameters radius is not positive", path));
+  // Every attribute of the schema the file holds (versions 1 and 2 share the names).
+  for (const AttrSpec& a : result_attributes()) {
+    if (!f.has_attr(a.group, a.name)) continue;
+    if (a.kind == AttrKind::text && a.set_text) a.set_text(r, f.attr_string(a.group, a.name));
+    else if (a.kind != AttrKind::text && a.set_number) a.set_number(r, f.attr_double(a.group, a.name));
+  }
+  for (const char* required : {"radius", "speed", "spin", "density", "pressure_inf", "circulation"})
+    if (!f.has_attr("/parameters", required)) fail(fmt::format("'{}': /parameters has no attribute '{}'", path, required));
+  if (!(c.scene.radius > 0.0)) fail(fmt::format("'{}': /parameters radius is not positive", path));
 
   PolarGrid& g = r.grid;
   g.a = c.scene.radius;
@@ -54,40 +60,29 @@ FlowResult read_result(const std::string& path) {
   g.theta = f.dataset("/grid/theta");
   g.n_r = int(g.r.size());
   g.n_theta = int(g.theta.size());
-  if (g.n_r < 2 || g.n_theta < 4) throw std::runtime_error(fmt::format("'{}': the grid is too small to plot", path));
+  if (g.n_r < 2 || g.n_theta < 4) fail(fmt::format("'{}': the grid is too small to plot", path));
   g.d_theta = 2.0 * M_PI / g.n_theta;
   for (double ri : g.r) g.xi.push_back(std::log(ri / g.a));
   c.grid.n_theta = g.n_theta;
   c.grid.n_r = g.n_r;
-  c.grid.outer_radius = g.outer_radius() / g.a;
+  if (!f.has_attr("/parameters", "outer_radius_requested")) c.grid.outer_radius = g.outer_radius() / g.a;
 
-  auto field = [&](const char* name, std::vector<double>& into) {
-    const std::string obj = std::string("/fields/") + name;
-    if (!f.has(obj)) return;
+  // The fields and the surface that are present, each checked against the grid.
+  for (const DatasetSpec& d : result_datasets()) {
+    if (!d.set || d.path.rfind("/grid/", 0) == 0 || !f.has(d.path)) continue;
     std::vector<size_t> shape;
-    into = f.dataset(obj, &shape);
-    if (shape.size() != 2 || shape[0] != size_t(g.n_r) || shape[1] != size_t(g.n_theta))
-      throw std::runtime_error(fmt::format("'{}': {} does not match the grid ({} × {})", path, obj, g.n_r, g.n_theta));
-  };
-  field("psi", r.fields.psi);
-  field("cp", r.fields.cp);
-
-  auto surface = [&](const char* name, std::vector<double>& into) {
-    const std::string obj = std::string("/surface/") + name;
-    if (!f.has(obj)) return;
-    into = f.dataset(obj);
-    if (into.size() != size_t(g.n_theta))
-      throw std::runtime_error(fmt::format("'{}': {} has {} values for n_theta = {}", path, obj, into.size(), g.n_theta));
-  };
-  surface("theta", r.surface.theta);
-  surface("u_theta", r.surface.u_theta);
-  surface("pressure", r.surface.pressure);
-  surface("cp", r.surface.cp);
-  surface("cp_exact", r.surface.cp_exact);
+    std::vector<double> v = f.dataset(d.path, &shape);
+    if (d.shape == DataShape::grid &&
+        (shape.size() != 2 || shape[0] != size_t(g.n_r) || shape[1] != size_t(g.n_theta)))
+      fail(fmt::format("'{}': {} does not match the grid ({} × {})", path, d.path, g.n_r, g.n_theta));
+    if (d.shape == DataShape::n_theta && v.size() != size_t(g.n_theta))
+      fail(fmt::format("'{}': {} has {} values for n_theta = {}", path, d.path, v.size(), g.n_theta));
+    d.set(r, std::move(v));
+  }
   if (r.surface.cp.empty() != r.surface.cp_exact.empty()) r.surface.cp.clear(), r.surface.cp_exact.clear();
 
-  r.stagnation = read_points(f, "/stagnation/numeric", c.scene.radius);
-  r.stagnation_exact = read_points(f, "/stagnation/exact", c.scene.radius);
+  r.stagnation = read_points(f, false, c.scene.radius);
+  r.stagnation_exact = read_points(f, true, c.scene.radius);
   return r;
 }
 

@@ -6,9 +6,10 @@
 
 namespace magnus {
 
-/// As much of a FlowResult as the plots need, read from a magnus-flow file: the case (title, a, U, ω,
-/// ρ, p∞, circulation model and Γ), the grid (r, θ), the fields that are present (psi, cp), the surface
-/// (θ, u_θ, pressure, cp, cp_exact) and the stagnation points. Throws std::runtime_error with one line.
+/// A FlowResult read from a magnus-flow file (format version 1 or 2), through the schema table
+/// (io/schema.hpp): every attribute the file holds (case, parameters, forces, errors, timing), the grid
+/// (r, θ), the fields and surface values present, and the stagnation points. Throws std::runtime_error
+/// with one line.
 FlowResult read_result(const std::string& path);
 
 }  // namespace magnus

@@ -29,9 +29,12 @@ std::string sweep_table(const SweepResult& s);
 /// CSV, one header line (names with units) and one line per point; undefined values are empty.
 std::string sweep_csv(const SweepResult& s);
 
-/// HDF5 (format "magnus-sweep", version 1): root attributes, /parameters, and one dataset per column
-/// in /sweep, each with a `units` attribute; written beside the target under a temporary name, then
-/// renamed. Throws std::runtime_error with one line naming the file.
+/// HDF5 (format "magnus-sweep", version 2): root attributes, /parameters and /timing (each numeric attribute
+/// NAME with its unit in NAME_units), and one dataset per column in /sweep with `units` and `description`;
+/// angles in rad. Never NaN: a column undefined at every point is not stored and is listed in
+/// /sweep@undefined; a column undefined at some points holds 9.969209968386869e36 there, named by its
+/// `_FillValue` attribute (the netCDF convention: xarray masks it). Written beside the target under a
+/// temporary name, then renamed. Throws std::runtime_error with one line naming the file.
 void write_sweep_hdf5(const SweepResult& s, const std::string& path);
 
 /// Viscous reference points within the swept α range beside potential flow's −2πα ("" if none).

@@ -2,74 +2,82 @@
 
 #include <fmt/core.h>
 
-#include <cmath>
+#include "io/schema.hpp"
 
 namespace magnus {
 
 namespace {
 
-std::vector<double> closed(const std::vector<double>& f, size_t nr, size_t nt) {
-  std::vector<double> out(nr * (nt + 1));
-  for (size_t i = 0; i < nr; ++i) {
-    std::copy(f.begin() + long(i * nt), f.begin() + long((i + 1) * nt), out.begin() + long(i * (nt + 1)));
-    out[i * (nt + 1) + nt] = f[i * nt];
+bool has_velocity(const FlowResult& r) { return !r.fields.u_x.empty() && !r.fields.u_y.empty(); }
+
+/// Name of a stored field (path /fields/NAME).
+std::string field_name(const DatasetSpec& d) { return d.path.substr(d.path.rfind('/') + 1); }
+
+/// Characters XML does not allow bare in an attribute value or text.
+std::string xml_escape(const std::string& s) {
+  std::string out;
+  for (char ch : s) {
+    switch (ch) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += ch;
+    }
   }
   return out;
 }
 
-bool has_velocity(const FlowResult& r) { return !r.fields.u_x.empty() && !r.fields.u_y.empty(); }
-
 }  // namespace
 
-void for_each_xdmf_array(const FlowResult& r, const std::function<void(const XdmfArray&)>& visit) {
-  const PolarGrid& g = r.grid;
-  const size_t nr = g.n_r, nt = g.n_theta;
-  XdmfArray x{"x", {1, nr, nt + 1}, std::vector<double>(nr * (nt + 1)), "m"};
-  XdmfArray y{"y", {1, nr, nt + 1}, std::vector<double>(nr * (nt + 1)), "m"};
-  for (size_t i = 0; i < nr; ++i)
-    for (size_t j = 0; j <= nt; ++j) {
-      const double th = j == nt ? 2.0 * M_PI : g.theta[j];
-      x.data[i * (nt + 1) + j] = g.r[i] * std::cos(th);
-      y.data[i * (nt + 1) + j] = g.r[i] * std::sin(th);
+std::vector<int> quad_connectivity(size_t n_r, size_t n_theta) {
+  std::vector<int> q;
+  if (n_r < 2 || n_theta < 2) return q;
+  q.reserve(4 * (n_r - 1) * n_theta);
+  for (size_t i = 0; i + 1 < n_r; ++i)
+    for (size_t j = 0; j < n_theta; ++j) {
+      const size_t jn = (j + 1) % n_theta;
+      for (size_t node : {i * n_theta + j, (i + 1) * n_theta + j, (i + 1) * n_theta + jn, i * n_theta + jn})
+        q.push_back(int(node));
     }
-  visit(x);
-  visit(y);
-  for (const auto& name : field_names()) {
-    const auto& f = r.fields.get(name);
-    if (!f.empty()) visit({name, {1, nr, nt + 1}, closed(f, nr, nt), field_units(name)});
-  }
-  if (has_velocity(r)) {
-    XdmfArray v{"velocity", {1, nr, nt + 1, 3}, std::vector<double>(nr * (nt + 1) * 3, 0.0), "m/s"};
-    for (size_t i = 0; i < nr; ++i)
-      for (size_t j = 0; j <= nt; ++j) {
-        const size_t src = i * nt + (j % nt), dst = 3 * (i * (nt + 1) + j);
-        v.data[dst] = r.fields.u_x[src];
-        v.data[dst + 1] = r.fields.u_y[src];
-      }
-    visit(v);
-  }
+  return q;
+}
+
+void write_mesh(const FlowResult& r, H5Writer& w) {
+  const size_t nr = r.grid.n_r, nt = r.grid.n_theta, n = nr * nt;
+  const H5Writer::id m = w.group("/mesh");
+  w.attr(m, "note", "for the .xmf sidecar: virtual datasets (views, no storage) of /grid and /fields flattened "
+                    "to n_r·n_theta nodes, and the quadrilateral connectivity (periodic in theta)");
+  w.view(m, "points", {n, 3}, {{"/grid/x", 0}, {"/grid/y", 1}}, "m", "node coordinates (x, y, 0), node i·n_theta + j");
+  const std::vector<int> q = quad_connectivity(nr, nt);
+  w.int_dataset(m, "quads", {q.size() / 4, 4}, q.data(), "1",
+                "node indices of each quadrilateral, counter-clockwise; column n_theta − 1 wraps to column 0");
+  for (const DatasetSpec* d : field_datasets())
+    if (!d->values(r).empty()) w.view(m, field_name(*d), {n}, {{d->path, 0}}, d->units, "view of " + d->path);
+  if (has_velocity(r))
+    w.view(m, "velocity", {n, 3}, {{"/fields/u_x", 0}, {"/fields/u_y", 1}}, "m/s", "(u_x, u_y, 0): view of /fields");
 }
 
 std::string xdmf_text(const FlowResult& r, const std::string& h5_name) {
-  const size_t nr = r.grid.n_r, nt1 = r.grid.n_theta + 1;
-  auto item = [&](const std::string& name, const std::string& dims) {
-    return fmt::format(
-        "        <DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
-        "{}:/xdmf/{}</DataItem>\n", dims, h5_name, name);
+  const size_t nr = r.grid.n_r, nt = r.grid.n_theta, n = nr * nt, cells = (nr - 1) * nt;
+  const std::string file = xml_escape(h5_name);
+  auto item = [&](const std::string& name, const std::string& dims, const char* type = "Float", int prec = 8) {
+    return fmt::format("        <DataItem Dimensions=\"{}\" NumberType=\"{}\" Precision=\"{}\" Format=\"HDF\">"
+                       "{}:/mesh/{}</DataItem>\n", dims, type, prec, file, name);
   };
-  const std::string d2 = fmt::format("1 {} {}", nr, nt1), d3 = fmt::format("1 {} {} 3", nr, nt1);
   std::string s = "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
                   "<Xdmf Version=\"3.0\">\n  <Domain>\n";
-  s += fmt::format("    <Grid Name=\"{}\" GridType=\"Uniform\">\n", "magnus");
-  s += fmt::format("      <Topology TopologyType=\"3DSMesh\" Dimensions=\"{}\"/>\n", d2);
-  s += "      <Geometry GeometryType=\"X_Y\">\n" + item("x", d2) + item("y", d2) + "      </Geometry>\n";
-  for (const auto& name : field_names())
-    if (!r.fields.get(name).empty())
-      s += fmt::format("      <Attribute Name=\"{}\" AttributeType=\"Scalar\" Center=\"Node\">\n", name) +
-           item(name, d2) + "      </Attribute>\n";
+  s += fmt::format("    <Grid Name=\"{}\" GridType=\"Uniform\">\n", xml_escape(r.c.title.empty() ? "magnus" : r.c.title));
+  s += fmt::format("      <Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"{}\" NodesPerElement=\"4\">\n",
+                   cells) + item("quads", fmt::format("{} 4", cells), "Int", 4) + "      </Topology>\n";
+  s += "      <Geometry GeometryType=\"XYZ\">\n" + item("points", fmt::format("{} 3", n)) + "      </Geometry>\n";
+  for (const DatasetSpec* d : field_datasets())
+    if (!d->values(r).empty())
+      s += fmt::format("      <Attribute Name=\"{}\" AttributeType=\"Scalar\" Center=\"Node\">\n", field_name(*d)) +
+           item(field_name(*d), std::to_string(n)) + "      </Attribute>\n";
   if (has_velocity(r))
     s += "      <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n" +
-         item("velocity", d3) + "      </Attribute>\n";
+         item("velocity", fmt::format("{} 3", n)) + "      </Attribute>\n";
   s += "    </Grid>\n  </Domain>\n</Xdmf>\n";
   return s;
 }

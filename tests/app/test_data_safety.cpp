@@ -7,6 +7,7 @@
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -186,8 +187,8 @@ TEST_CASE("a full disk gives one line naming the file, no partial output, the ea
   const std::string out = dir + "/r.h5";
   earlier_result(out, dir);
   const std::string before = slurp(out), before_xmf = slurp(dir + "/r.xmf");
-  // The default case writes ~6 MB: fail its writes after 2 KB, 64 KB, 1 MB and 5 MB.
-  for (const rlim_t limit : {rlim_t(2) << 10, rlim_t(64) << 10, rlim_t(1) << 20, rlim_t(5) << 20}) {
+  // The default case writes ~2.8 MB: fail its writes after 2 KB, 64 KB, 1 MB and 2.5 MB.
+  for (const rlim_t limit : {rlim_t(2) << 10, rlim_t(64) << 10, rlim_t(1) << 20, rlim_t(5) << 19}) {
     const Outcome o = run_magnus({"run", case_path, "-o", out, "-q"}, dir, limit);
     CAPTURE(limit, o.err);
     REQUIRE(o.exited);  // not killed by SIGXFSZ or a crash in HDF5's clean-up at exit
@@ -394,4 +395,104 @@ TEST_CASE("reading damaged files in-process throws one line and leaves no HDF5 o
     REQUIRE(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL) == open_before);
   }
   REQUIRE(refused == damaged.size());
+}
+
+namespace {
+
+/// run_magnus, but a child still running after `seconds` is killed and reported (a FIFO must never hang).
+Outcome run_bounded(const std::vector<std::string>& args, const std::string& dir, int seconds = 60) {
+  const Child c = start(args, dir);
+  for (int k = 0; k < seconds * 20; ++k) {
+    int raw = 0;
+    const pid_t p = ::waitpid(c.pid, &raw, WNOHANG);
+    if (p == c.pid) return {WIFEXITED(raw), WIFEXITED(raw) ? WEXITSTATUS(raw) : WTERMSIG(raw), slurp(c.out_path), slurp(c.err_path)};
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  ::kill(c.pid, SIGKILL);
+  ::waitpid(c.pid, nullptr, 0);
+  FAIL("magnus " << args[0] << " still running after " << seconds << " s (blocked on an output?)");
+  return {};
+}
+
+/// A refusal: exit 1, one line on stderr naming the path.
+void require_one_line_refusal(const Outcome& o, const std::string& path) {
+  CAPTURE(o.err, o.out);
+  REQUIRE(o.exited);
+  REQUIRE(o.status == 1);
+  REQUIRE(lines(o.err) == 1);
+  REQUIRE(o.err.find(fs::path(path).filename().string()) != std::string::npos);
+}
+
+}  // namespace
+
+TEST_CASE("outputs through a symlink replace its target and keep the link (compare --csv, run -o)", "[app][safety]") {
+  const std::string dir = test::temp_dir("safety-links");
+  earlier_result(dir + "/a.h5", dir);
+  spit(dir + "/real.csv", "old\n");
+  fs::create_symlink("real.csv", dir + "/link.csv");
+  const Outcome c = run_bounded({"compare", dir + "/a.h5", "--csv", dir + "/link.csv"}, dir);
+  CAPTURE(c.err);
+  REQUIRE(c.status == 0);
+  REQUIRE(fs::is_symlink(dir + "/link.csv"));
+  REQUIRE(slurp(dir + "/real.csv").rfind("file,title", 0) == 0);
+
+  spit(dir + "/real.h5", "old");
+  fs::create_symlink("real.h5", dir + "/link.h5");
+  const Outcome r = run_bounded({"run", case_path, "-o", dir + "/link.h5", "-q", "--set", "grid.n_theta=16"}, dir);
+  CAPTURE(r.err);
+  REQUIRE(r.status == 0);
+  REQUIRE(fs::is_symlink(dir + "/link.h5"));
+  REQUIRE(fs::is_regular_file(fs::symlink_status(dir + "/real.h5")));
+  REQUIRE(slurp(dir + "/real.h5").compare(1, 3, "HDF") == 0);
+  // The sidecar sits beside the name given, and names it (the link resolves for the viewer).
+  REQUIRE(slurp(dir + "/link.xmf").find("link.h5:/mesh/") != std::string::npos);
+  REQUIRE(temp_files(dir).empty());
+}
+
+TEST_CASE("a FIFO, a device or a directory as an output is refused in one line, untouched", "[app][safety]") {
+  const std::string dir = test::temp_dir("safety-special");
+  earlier_result(dir + "/a.h5", dir);
+  // A FIFO: refused without opening it (opening would block with no reader).
+  REQUIRE(::mkfifo((dir + "/fifo.csv").c_str(), 0644) == 0);
+  REQUIRE(::mkfifo((dir + "/fifo.h5").c_str(), 0644) == 0);
+  require_one_line_refusal(run_bounded({"compare", dir + "/a.h5", "--csv", dir + "/fifo.csv"}, dir, 20), dir + "/fifo.csv");
+  require_one_line_refusal(run_bounded({"run", case_path, "-o", dir + "/fifo.h5", "-q"}, dir, 20), dir + "/fifo.h5");
+  struct stat st;
+  REQUIRE(::lstat((dir + "/fifo.csv").c_str(), &st) == 0);
+  REQUIRE(S_ISFIFO(st.st_mode));
+  REQUIRE(::lstat((dir + "/fifo.h5").c_str(), &st) == 0);
+  REQUIRE(S_ISFIFO(st.st_mode));
+
+  // A character device: as root, a device node of our own (root could rename over /dev/null itself).
+  std::string device = "/dev/null";
+  if (::geteuid() == 0) {
+    device = dir + "/null";
+    REQUIRE(::mknod(device.c_str(), S_IFCHR | 0666, makedev(1, 3)) == 0);
+  }
+  require_one_line_refusal(run_bounded({"compare", dir + "/a.h5", "--csv", device}, dir, 20), device);
+  REQUIRE(::lstat(device.c_str(), &st) == 0);
+  REQUIRE(S_ISCHR(st.st_mode));
+
+  // A directory.
+  fs::create_directory(dir + "/sub");
+  require_one_line_refusal(run_bounded({"compare", dir + "/a.h5", "--csv", dir + "/sub"}, dir, 20), dir + "/sub");
+  require_one_line_refusal(run_bounded({"run", case_path, "-o", dir + "/sub", "-q"}, dir, 20), dir + "/sub");
+  REQUIRE(fs::is_directory(dir + "/sub"));
+  REQUIRE(fs::is_empty(dir + "/sub"));
+  REQUIRE(temp_files(dir).empty());
+}
+
+TEST_CASE("compare --csv - writes the CSV alone on stdout and creates no file named '-'", "[app][safety][compare]") {
+  const std::string dir = test::temp_dir("safety-stdout");
+  earlier_result(dir + "/a.h5", dir);
+  const bool dash_before = fs::exists("-");
+  const Outcome o = run_bounded({"compare", dir + "/a.h5", dir + "/a.h5", "--csv", "-"}, dir);
+  CAPTURE(o.err);
+  REQUIRE(o.status == 0);
+  REQUIRE(o.out.rfind("file,title", 0) == 0);
+  REQUIRE(o.out.find("magnus compare:") == std::string::npos);  // no table mixed into the CSV
+  REQUIRE(lines(o.out) == 3);
+  REQUIRE(o.err.empty());
+  REQUIRE(fs::exists("-") == dash_before);
+  REQUIRE_FALSE(fs::exists(dir + "/-"));
 }

@@ -5,6 +5,7 @@
 #include "io/hdf5_io.hpp"
 #include "io/report.hpp"
 #include "io/inspect.hpp"
+#include "io/schema.hpp"
 #include "support.hpp"
 
 using namespace magnus;
@@ -29,7 +30,8 @@ TEST_CASE("HDF5 round trip: every dataset and attribute of DESIGN §5, with unit
   REQUIRE(std::filesystem::exists(dir + "/r.xmf"));
   const ResultFile f(path);
   REQUIRE(f.attr_string("/", "format") == "magnus-flow");
-  REQUIRE(f.attr_int("/", "format_version") == 1);
+  REQUIRE(f.attr_int("/", "format_version") == 2);
+  REQUIRE(f.attr_string("/", "model") == "potential");
   REQUIRE(f.attr_string("/", "case") == c.source_text);
   REQUIRE_FALSE(f.attr_string("/", "software_version").empty());
   const size_t nr = r.grid.n_r, nt = r.grid.n_theta;
@@ -92,12 +94,17 @@ TEST_CASE("HDF5 round trip: every dataset and attribute of DESIGN §5, with unit
   REQUIRE(f.attr_double("/errors", "cl_rel") == r.errors.cl_rel);
   for (const char* a : {"total_s", "assemble_s", "factor_s", "solve_s", "postproc_s"})
     REQUIRE(f.attr_double("/timing", a) >= 0.0);
-  // Seam-closed copies for ParaView: column n_θ repeats column 0.
-  const auto xc = f.dataset("/xdmf/psi", &shape);
-  REQUIRE(shape == std::vector<size_t>{1, nr, nt + 1});
-  REQUIRE(xc[5 * (nt + 1) + nt] == r.fields.psi[5 * nt]);
-  f.dataset("/xdmf/velocity", &shape);
-  REQUIRE(shape == std::vector<size_t>{1, nr, nt + 1, 3});
+  // Format 2: every numeric group attribute has its unit beside it, from the schema table.
+  for (const AttrSpec& a : result_attributes()) {
+    CAPTURE(a.group, a.name);
+    if (a.kind == AttrKind::text || !f.has_attr(a.group, a.name)) continue;
+    REQUIRE(f.attr_string(a.group, units_attribute(a.name)) == a.units);
+  }
+  REQUIRE(f.attr_string("/forces", "magnus_S_units") == "kg/m");
+  REQUIRE(f.attr_double("/forces", "magnus_S_exact") == r.forces.magnus_S_exact);
+  // Each field stored once: no seam-closed copies.
+  REQUIRE_FALSE(f.has("/xdmf"));
+  REQUIRE(f.attr_string("/stagnation/theta", "units") == "rad");
 }
 
 TEST_CASE("only the fields asked for are written; U = 0 marks Cp undefined", "[postproc][hdf5]") {
@@ -120,10 +127,11 @@ TEST_CASE("only the fields asked for are written; U = 0 marks Cp undefined", "[p
   REQUIRE(f.has_attr("/forces", "lift"));
   std::ifstream xmf(dir + "/sel.xmf");
   const std::string text((std::istreambuf_iterator<char>(xmf)), std::istreambuf_iterator<char>());
-  REQUIRE(text.find("3DSMesh") != std::string::npos);
-  REQUIRE(text.find("GeometryType=\"X_Y\"") != std::string::npos);
-  REQUIRE(text.find("sel.h5:/xdmf/psi") != std::string::npos);
-  REQUIRE(text.find("/xdmf/cp") == std::string::npos);
+  REQUIRE(text.find("TopologyType=\"Quadrilateral\"") != std::string::npos);
+  REQUIRE(text.find("GeometryType=\"XYZ\"") != std::string::npos);
+  REQUIRE(text.find("sel.h5:/mesh/psi") != std::string::npos);
+  REQUIRE(text.find("/mesh/cp") == std::string::npos);
+  REQUIRE(text.find("/mesh/velocity") == std::string::npos);
 }
 
 TEST_CASE("reading a foreign, truncated or missing file gives one clear error", "[postproc][hdf5]") {

@@ -1,0 +1,76 @@
+// The .xmf sidecar in the viewers themselves (opt-in: ctest -L viewers). Each test skips, with a note,
+// when its viewer is not installed: meshio (python3-meshio, python3-h5py) and ParaView's pvpython.
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <fstream>
+
+#include "io/hdf5_io.hpp"
+#include "support.hpp"
+
+using namespace magnus;
+
+namespace {
+
+bool runs(const std::string& cmd) { return std::system((cmd + " >/dev/null 2>&1").c_str()) == 0; }
+
+/// A result with every field on a small grid, written to dir/flow.h5 (+ flow.xmf).
+FlowResult write_flow(const std::string& dir) {
+  Case c = test::make_case(1.0, 32);
+  c.output.fields.reset();
+  const FlowResult r = run_case(c);
+  write_result(r, dir + "/flow.h5");
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("meshio reads the .xmf: nodes, quadrilaterals, every field and the velocity", "[viewers]") {
+  if (!runs("/usr/bin/python3 -c 'import meshio, h5py'")) {
+    WARN("skipped: meshio or h5py is not installed for /usr/bin/python3 (apt-get install python3-meshio python3-h5py)");
+    return;
+  }
+  const std::string dir = test::temp_dir("viewer-meshio");
+  const FlowResult r = write_flow(dir);
+  const size_t nr = r.grid.n_r, nt = r.grid.n_theta;
+  std::ofstream(dir + "/check.py") << "import sys, meshio, h5py, numpy as np\n"
+      "m = meshio.read(sys.argv[1] + '/flow.xmf')\n"
+      "nr, nt = int(sys.argv[2]), int(sys.argv[3])\n"
+      "assert m.points.shape == (nr * nt, 3), m.points.shape\n"
+      "q = m.cells_dict['quad']\n"
+      "assert q.shape == ((nr - 1) * nt, 4) and q.min() == 0 and q.max() == nr * nt - 1\n"
+      "f = h5py.File(sys.argv[1] + '/flow.h5', 'r')\n"
+      "for name in f['fields']:\n"
+      "    assert np.array_equal(m.point_data[name], f['fields'][name][()].ravel()), name\n"
+      "assert m.point_data['velocity'].shape == (nr * nt, 3)\n"
+      "print('ok')\n";
+  const int status = std::system(("/usr/bin/python3 '" + dir + "/check.py' '" + dir + "' " + std::to_string(nr) + " " +
+                                  std::to_string(nt) + " >'" + dir + "/out.txt' 2>&1").c_str());
+  CAPTURE(test::slurp(dir + "/out.txt"));
+  REQUIRE(status == 0);
+}
+
+TEST_CASE("ParaView's XDMF reader and both Xdmf3 readers open the .xmf", "[viewers]") {
+  if (!runs("command -v pvpython")) {
+    WARN("skipped: pvpython (ParaView) is not installed");
+    return;
+  }
+  const std::string dir = test::temp_dir("viewer-paraview");
+  const FlowResult r = write_flow(dir);
+  const size_t n = size_t(r.grid.n_r) * size_t(r.grid.n_theta), cells = size_t(r.grid.n_r - 1) * size_t(r.grid.n_theta);
+  std::ofstream(dir + "/check.py") << "import sys\n"
+      "from paraview.simple import *\n"
+      "path, n, cells = sys.argv[1] + '/flow.xmf', int(sys.argv[2]), int(sys.argv[3])\n"
+      "for make in (XDMFReader, Xdmf3ReaderS, Xdmf3ReaderT):\n"
+      "    src = make(FileNames=[path])\n"
+      "    src.UpdatePipeline()\n"
+      "    info = src.GetDataInformation()\n"
+      "    assert info.GetNumberOfPoints() == n, (make, info.GetNumberOfPoints())\n"
+      "    assert info.GetNumberOfCells() == cells, (make, info.GetNumberOfCells())\n"
+      "    assert src.PointData['velocity'].GetNumberOfComponents() == 3\n"
+      "print('ok')\n";
+  const int status = std::system(("pvpython '" + dir + "/check.py' '" + dir + "' " + std::to_string(n) + " " +
+                                  std::to_string(cells) + " >'" + dir + "/out.txt' 2>&1").c_str());
+  CAPTURE(test::slurp(dir + "/out.txt"));
+  REQUIRE(status == 0);
+}
