@@ -12,7 +12,7 @@
 #include "io/reference_file.hpp"
 #include "io/result_reader.hpp"
 #include "physics/exact.hpp"
-#include "plot/sweep_reader.hpp"
+#include "io/hdf5_io.hpp"
 
 namespace magnus {
 
@@ -258,20 +258,15 @@ CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference) {
 }
 
 LiftSweep read_lift_sweep(const std::string& path) {
-  const SweepFileData d = read_sweep_columns(path, {"alpha", "circulation", "cl"});
-  if (d.format != "magnus-sweep")
-    throw std::runtime_error(fmt::format("'{}' is not a magnus sweep: format is '{}'", path, d.format));
+  const ResultFile f(path, {"magnus-sweep"});
   LiftSweep s;
-  s.by_circulation = d.variable == "circulation";
-  const char* xcol = s.by_circulation ? "circulation" : "alpha";
-  for (const char* col : {xcol, "cl"})
-    if (!d.columns.count(col)) throw std::runtime_error(fmt::format("'{}': no /sweep/{}", path, col));
-  s.x = d.columns.at(xcol);
-  s.cl = d.columns.at("cl");
+  s.by_circulation = f.has_attr("/", "variable") && f.attr_string("/", "variable") == "circulation";
+  const std::string xcol = s.by_circulation ? "/sweep/circulation" : "/sweep/alpha";
+  s.x = f.dataset(xcol);
+  s.cl = f.dataset("/sweep/cl");
   if (s.x.size() != s.cl.size()) throw std::runtime_error(fmt::format("'{}': /sweep columns differ in length", path));
   auto param = [&](const char* name, double dflt) {
-    const auto it = d.parameters.find(name);
-    return it == d.parameters.end() ? dflt : it->second;
+    return f.has_attr("/parameters", name) ? f.attr_double("/parameters", name) : dflt;
   };
   s.base.radius = param("radius", 0.0);
   s.base.speed = param("speed", 0.0);
@@ -279,7 +274,7 @@ LiftSweep read_lift_sweep(const std::string& path) {
     throw std::runtime_error(fmt::format("'{}': /parameters radius and speed must be positive", path));
   s.base.spin = param("spin", 0.0);
   s.base.circulation_given = s.by_circulation;
-  s.title = d.title;
+  s.title = f.has_attr("/", "title") ? f.attr_string("/", "title") : std::string();
   s.n_theta = int(param("n_theta", 0.0));
   s.n_r = int(param("n_r", 0.0));
   return s;
@@ -313,9 +308,9 @@ PlotOutcome plot_result_file(const std::string& path, const std::string& dir, Pl
   // A sweep file draws C_L(α) (or C_L(Γ)); anything else goes to the result reader and its messages.
   bool sweep = false;
   try {
-    sweep = read_sweep_columns(path, {}).format == "magnus-sweep";
+    sweep = ResultFile(path, {"magnus-sweep"}).format() == "magnus-sweep";
   } catch (const std::exception&) {
-    sweep = false;
+    sweep = false;  // not a sweep: the result reader below says what it is
   }
   if (sweep) {
     const LiftSweep s = read_lift_sweep(path);
