@@ -35,7 +35,7 @@ void command_run(const std::string& case_path, const std::string& output, const 
   const RunPlan plan = plan_run(c, threads, max_bytes);
   check_output_space(plan.c, c.output.file);
   FlowResult r = run_planned(plan, threads, max_bytes);
-  write_result(r, c.output.file);
+  write_result(r, c.output.file, c.output.compression);
   if (!quiet) std::fputs(summary_text(r, c.output.file).c_str(), stdout);
 }
 
@@ -88,8 +88,8 @@ void add_run_command(CLI::App& app) {
 
 void add_inspect_command(CLI::App& app) {
   auto path = std::make_shared<std::string>();
-  auto* inspect = app.add_subcommand("inspect", "show what a result file holds");
-  inspect->add_option("file", *path, "result file (HDF5)")->required();
+  auto* inspect = app.add_subcommand("inspect", "show what a result or sweep file holds, with units");
+  inspect->add_option("file", *path, "result or sweep file (HDF5)")->required();
   inspect->callback([path] { command_inspect(*path); });
 }
 

@@ -32,7 +32,7 @@ const std::map<std::string, std::vector<std::string>>& schema() {
       {"domain", {"outer_radius", "far_field"}},
       {"grid", {"n_theta", "n_r", "spacing", "tolerance"}},
       {"solver", {"method", "stencil"}},
-      {"output", {"file", "fields"}},
+      {"output", {"file", "fields", "compression"}},
   };
   return s;
 }
@@ -230,7 +230,7 @@ std::string nearest_key(const std::string& key) {
   if (const auto it = aliases.find(key); it != aliases.end()) return it->second;
   // Keys of DESIGN §3/§9 that mean something else and this version does not read: never "corrected".
   for (const char* other : {"cylinder.span", "flow.direction", "flow.viscosity", "flow.reynolds", "flow.course",
-                            "model.flow", "output.compression"})
+                            "model.flow"})
     if (key == other) return "";
   // The edit distance is at least the difference in length, and no valid key is longer than 20 characters:
   // a key this long is never near one (and a megabyte key would cost seconds).
@@ -361,6 +361,8 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
   c.output.file = r.word("output", "file", c.output.file);
   if (c.output.file.empty()) r.fail("output.file", "must not be empty");
   if (r.has("output", "fields")) c.output.fields = r.words("output", "fields");
+  c.output.compression = int(r.integer("output", "compression", c.output.compression,
+                                       [](long v) { return v >= 0 && v <= 9; }, "an integer from 0 (none) to 9"));
   for (const auto& f : c.output.fields.value_or(std::vector<std::string>{})) {
     const auto& names = field_names();
     if (std::find(names.begin(), names.end(), f) == names.end()) {
@@ -432,6 +434,7 @@ std::string to_toml(const Case& c) {
     for (const auto& f : *c.output.fields) list += (list.empty() ? "" : ", ") + str(f);
     t += fmt::format("fields = [{}]\n", list);
   }
+  if (c.output.compression > 0) t += fmt::format("compression = {}\n", c.output.compression);
   return t;
 }
 

@@ -9,6 +9,7 @@
 
 #include "io/hdf5_io.hpp"
 #include "io/schema.hpp"
+#include "io/text_format.hpp"
 
 namespace magnus {
 
@@ -27,7 +28,7 @@ std::string value_text(const ResultFile& f, const std::string& obj, const std::s
     if (nl != std::string::npos) v = fmt::format("({} lines of text)", std::count(v.begin(), v.end(), '\n') + 1);
     return v;
   }
-  return fmt::format("{:.10g}", f.attr_double(obj, name));
+  return cell(f.attr_double(obj, name), "{:.10g}");  // no "-0"
 }
 
 /// The unit of obj@name: the companion NAME_units (version 2), else the schema's; "" for text.

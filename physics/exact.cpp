@@ -1,6 +1,7 @@
 #include "physics/exact.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace magnus {
 
@@ -33,6 +34,7 @@ std::vector<StagnationPoint> ExactFlow::stagnation_points() const {
   if (std::fabs(s) < 1.0) {
     double t1 = std::asin(s), t2 = M_PI - t1;
     if (t1 < 0.0) t1 += 2.0 * M_PI;
+    if (t2 < t1) std::swap(t1, t2);  // sorted by θ in [0, 2π): backspin puts asin(s) + 2π last
     return {{a, t1, true}, {a, t2, true}};
   }
   // Free point on the y axis: r_s = a(|2s| + √(4s² − 4))/2, above for Γ > 0.

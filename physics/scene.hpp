@@ -51,6 +51,7 @@ struct SolverChoice {
 struct OutputRequest {
   std::string file = "magnus.h5";
   std::optional<std::vector<std::string>> fields;  ///< absent: all fields; [] none
+  int compression = 0;                             ///< gzip level of the large datasets, 0 (none) … 9
 };
 
 /// One case: the four parts, its title and its resolved TOML text (stored in results).

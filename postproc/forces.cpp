@@ -54,7 +54,7 @@ std::vector<StagnationPoint> find_stagnation_points(
       pts.push_back({g.a, g.theta[j] + t * g.d_theta, true});
     }
   }
-  if (!pts.empty()) return pts;
+  if (!pts.empty()) return sorted_stagnation_points(pts);
   // No zero on the body: a free stagnation point on the y axis, on the side of Γ.
   const double theta = scene.Gamma() > 0.0 ? M_PI / 2 : 3 * M_PI / 2;
   const std::vector<double> ray = ray_u_theta(theta);

@@ -332,3 +332,17 @@ TEST_CASE("outputs never overwrite inputs, each other or a directory; a director
   REQUIRE(o.err.find("overwrite the input") != std::string::npos);
   REQUIRE(slurp(dir + "/a.h5") == before);
 }
+
+TEST_CASE("run: output.compression writes a smaller file with the same figures", "[app][cli]") {
+  const std::string dir = test::temp_dir("cli-compression");
+  const std::string cs = std::string(MAGNUS_SOURCE_DIR) + "/cases/spin_ratio_1.toml";
+  const auto plain = test::magnus_cmd({"run", cs, "-o", dir + "/plain.h5", "--set", "grid.n_theta=128"}, dir);
+  const auto packed = test::magnus_cmd(
+      {"run", cs, "-o", dir + "/packed.h5", "--set", "grid.n_theta=128", "--set", "output.compression=6"}, dir);
+  REQUIRE(plain.status == 0);
+  REQUIRE(packed.status == 0);
+  REQUIRE(test::slurp(dir + "/packed.h5").size() < 0.9 * test::slurp(dir + "/plain.h5").size());
+  const ResultFile a(dir + "/plain.h5"), b(dir + "/packed.h5");
+  REQUIRE(a.dataset("/fields/psi") == b.dataset("/fields/psi"));
+  REQUIRE(a.attr_double("/forces", "cl") == b.attr_double("/forces", "cl"));
+}

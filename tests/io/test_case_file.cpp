@@ -117,3 +117,12 @@ TEST_CASE("nearest key suggestions", "[app][case]") {
   REQUIRE(nearest_key("cylinder.spinratio") == "cylinder.spin_ratio");
   REQUIRE(nearest_key("completely.unrelated_thing_here") == "");
 }
+
+TEST_CASE("output.compression: a gzip level 0 to 9, kept in the resolved case", "[io][case]") {
+  REQUIRE(parse(scene).output.compression == 0);
+  const Case c = parse(scene + "[output]\ncompression = 6\n");
+  REQUIRE(c.output.compression == 6);
+  REQUIRE(parse(to_toml(c)).output.compression == 6);
+  REQUIRE(error_of(scene + "[output]\ncompression = 10\n").find("output.compression") != std::string::npos);
+  REQUIRE(error_of(scene + "[output]\ncompression = 1.5\n").find("expected an integer") != std::string::npos);
+}

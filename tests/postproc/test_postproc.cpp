@@ -176,3 +176,16 @@ TEST_CASE("the last line of defence names the first figure or field that is not 
   s.surface.pressure[3] = -INFINITY;
   CHECK(first_non_finite(s) == "surface pressure at j = 3");
 }
+
+TEST_CASE("stagnation points: numeric and exact both sorted by θ, for topspin and backspin", "[postproc]") {
+  for (double alpha : {1.0, -1.0, 1.5, -1.5}) {
+    CAPTURE(alpha);
+    const FlowResult r = run_case(make_case(alpha, 128));
+    REQUIRE(r.stagnation.size() == 2);
+    REQUIRE(r.stagnation_exact.size() == 2);
+    REQUIRE(r.stagnation[0].theta < r.stagnation[1].theta);
+    REQUIRE(r.stagnation_exact[0].theta < r.stagnation_exact[1].theta);
+    for (size_t k = 0; k < 2; ++k)
+      REQUIRE(r.stagnation[k].theta == Approx(r.stagnation_exact[k].theta).margin(2e-3));
+  }
+}
