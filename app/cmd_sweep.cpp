@@ -34,7 +34,12 @@ void command_sweep(const SweepOptions& o) {
   const SweepRange range =
       parse_sweep_range(by_spin ? o.spin_ratio : o.circulation, by_spin ? "--spin-ratio" : "--circulation");
   const PlotSize size = o.size.empty() ? PlotSize{} : parse_plot_size(o.size);
-  Case c = load_case(o.case_path, o.sets);
+  // The sweep sets the spin (or Γ) itself: the file need not state one. Given first, the file's own spin
+  // key (if any) and --set still replace it (one key of the spin group replaces the others).
+  std::vector<std::string> sets;
+  if (by_spin) sets.push_back(fmt::format("cylinder.spin_ratio={}", range.values.front()));
+  sets.insert(sets.end(), o.sets.begin(), o.sets.end());
+  Case c = load_case(o.case_path, sets);
   // Fail before solving, not after.
   check_distinct_paths({o.case_path}, {o.csv, o.output, o.plot});
   for (const std::string* p : {&o.csv, &o.output, &o.plot})
