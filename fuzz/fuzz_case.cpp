@@ -1,4 +1,4 @@
-// libFuzzer target for the case-file parser and the --set parser (issue 5, part 4).
+// libFuzzer target for the case-file parser and the --set parser.
 //
 // Each input is used twice:
 //   1. as a whole TOML case file: parse_case(text, "fuzz.toml");
@@ -24,7 +24,7 @@ namespace {
   std::abort();
 }
 
-/// What every accepted case must satisfy (DESIGN §3 ranges), and its resolved TOML must read back the same.
+/// What every accepted case must satisfy (the case-file ranges), and its resolved TOML must read back the same.
 void check_accepted(const Case& c) {
   for (double v : {c.scene.radius, c.scene.spin, c.scene.speed, c.scene.density, c.scene.pressure_inf, c.scene.circulation_value, c.grid.outer_radius,
                    c.grid.tolerance, c.scene.Gamma(), c.scene.spin_ratio()})

@@ -195,7 +195,7 @@ void apply_override(toml::table& t, const std::string& spec) {
     target = t.get_as<toml::table>(section);
     if (!target) throw CaseError(fmt::format("--set {}: {} is not a table in the case", spec, section));
   }
-  // An override of one of a mutually exclusive group replaces the others of its group (DESIGN §3).
+  // An override of one of a mutually exclusive group replaces the others of its group.
   if (section == "cylinder" && (key == "spin" || key == "spin_ratio" || key == "rpm"))
     for (const char* k : {"spin", "spin_ratio", "rpm"}) target->erase(k);
   try {
@@ -228,7 +228,7 @@ std::string nearest_key(const std::string& key) {
       {"flow.velocity", "flow.speed"}, {"flow.u", "flow.speed"}, {"flow.rho", "flow.density"},
       {"cylinder.omega", "cylinder.spin"}, {"cylinder.alpha", "cylinder.spin_ratio"}, {"cylinder.a", "cylinder.radius"}};
   if (const auto it = aliases.find(key); it != aliases.end()) return it->second;
-  // Keys of DESIGN §3/§9 that mean something else and this version does not read: never "corrected".
+  // Keys of the design (docs/design.md) that mean something else and this version does not read: never "corrected".
   for (const char* other : {"cylinder.span", "flow.direction", "flow.viscosity", "flow.reynolds", "flow.course",
                             "model.flow"})
     if (key == other) return "";
@@ -295,7 +295,7 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
   auto positive = [](double v) { return v > 0.0; };
   auto any = [](double) { return true; };
   c.title = r.word("", "title", c.title);
-  // The scene's physical keys are required (DESIGN §3): a file that omits one is an error, not a demo.
+  // The scene's physical keys are required: a file that omits one is an error, not a demo.
   const std::string model = r.word("circulation", "model", "spin", {"spin", "given"});
   c.scene.circulation_given = model == "given";
   r.require("cylinder", "radius", "the cylinder radius a, m");

@@ -1,5 +1,5 @@
 #pragma once
-// Case files (DESIGN §3): TOML with in-code defaults, range checks, loud failure on conflicts.
+// Case files: TOML with in-code defaults, range checks, loud failure on conflicts.
 #include <stdexcept>
 #include <string>
 #include <vector>

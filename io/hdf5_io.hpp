@@ -1,5 +1,5 @@
 #pragma once
-// The magnus-flow HDF5 result (DESIGN §5): written atomically, read back for inspect/compare/tests.
+// The magnus-flow HDF5 result: written atomically, read back for inspect/compare/tests.
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -64,7 +64,7 @@ class H5Writer {
 /// Create the HDF5 file at path atomically: fill writes it under a temporary name beside it (1.10 format,
 /// checksummed metadata), each sidecar (path, text) is written likewise, and all are renamed into place
 /// only once all are complete. Throws one line naming path; leaves no temporary behind.
-/// compression: gzip level 0–9 of the double datasets (0: none; DESIGN §5 output.compression).
+/// compression: gzip level 0–9 of the double datasets (0: none; the case key output.compression).
 void write_hdf5_atomic(const std::string& path, const std::function<void(H5Writer&)>& fill,
                        const std::vector<std::pair<std::string, std::string>>& sidecars = {}, int compression = 0);
 

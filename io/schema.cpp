@@ -43,7 +43,7 @@ std::vector<AttrSpec> make_attributes() {
   const char* T = "/timing";
   return {
       text("/", "format", "\"magnus-flow\"", [](const FlowResult&) { return std::string("magnus-flow"); }),
-      integer("/", "format_version", "version of this layout (DESIGN §5); readers accept 1 and 2",
+      integer("/", "format_version", "version of this layout; readers accept 1 and 2",
               [](const FlowResult&) { return opt(double(kFlowFormatVersion)); }),
       text("/", "software_version", "magnus version that wrote the file",
            [](const FlowResult&) { return std::string(MAGNUS_VERSION); }),

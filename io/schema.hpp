@@ -1,5 +1,5 @@
 #pragma once
-// The one table of what a magnus-flow file holds (DESIGN §5): every attribute of /, /parameters,
+// The one table of what a magnus-flow file holds: every attribute of /, /parameters,
 // /forces, /errors and /timing and every dataset, with its unit, a one-line description and how to get
 // it from (and put it back into) a FlowResult. The writer, the reader, inspect and compare use it; no
 // other place lists the keys.

@@ -8,7 +8,7 @@
 
 namespace magnus {
 
-/// Forces per unit span and the comparisons of DESIGN §1. Coefficients are empty when U = 0.
+/// Forces per unit span and the comparisons of docs/design.md. Coefficients are empty when U = 0.
 struct Forces {
   double lift = 0.0, drag = 0.0;        ///< F_y, F_x, N/m
   std::optional<double> cl, cd;         ///< F/(½ρU²·2a)
@@ -34,7 +34,7 @@ std::vector<StagnationPoint> find_stagnation_points(
     const PolarGrid& g, const Scene& scene, const std::vector<double>& surface_u_theta,
     const std::function<std::vector<double>(double)>& ray);
 
-/// Errors against the exact solution (DESIGN §5 /errors); psi_exact is ExactFlow::psi_field on the same grid.
+/// Errors against the exact solution (/errors in the result file); psi_exact is ExactFlow::psi_field on the same grid.
 struct Errors {
   double psi_max_rel = 0.0;                ///< max|ψ − ψ_ex| / max|ψ_ex|
   std::optional<double> cp_surface_max_abs;///< max|Cp − Cp_ex| on r = a (U > 0)

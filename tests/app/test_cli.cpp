@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// The scene keys DESIGN §3 requires, for cases about other keys.
+/// The scene keys a case file requires, for cases about other keys.
 const std::string scene = "[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = 10.0\n";
 
 /// Files in dir other than the ones the harness itself writes.

@@ -1,4 +1,4 @@
-// No data loss (issue 5, part 6): a magnus killed while it writes, a full disk, an unwritable place, and
+// No data loss: a magnus killed while it writes, a full disk, an unwritable place, and
 // damaged or foreign files given to `magnus inspect`. Every test runs the magnus binary of this build
 // (under scripts/sanitize.sh that is the sanitized one).
 #include <catch2/catch.hpp>

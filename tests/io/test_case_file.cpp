@@ -9,7 +9,7 @@ namespace {
 Case parse(const std::string& text, const std::vector<std::string>& sets = {}) {
   return parse_case(text, "test.toml", sets);
 }
-/// The scene keys DESIGN §3 requires, as the sections [cylinder] and [flow], for tests about other keys.
+/// The scene keys a case file requires, as the sections [cylinder] and [flow], for tests about other keys.
 const std::string scene = "[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = 10.0\n";
 /// The message parse_case throws for text ("" if it parses).
 std::string error_of(const std::string& text, const std::vector<std::string>& sets = {}) {

@@ -1,4 +1,4 @@
-// Format version 2 (DESIGN §5): one schema table, units on everything, dimension scales, no NaN, the
+// Format version 2: one schema table, units on everything, dimension scales, no NaN, the
 // XDMF sidecar that validates and closes the ring by connectivity, optional compression, the size figure,
 // and readers that still take version 1 files.
 #include <catch2/catch.hpp>

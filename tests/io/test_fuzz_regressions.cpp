@@ -12,7 +12,7 @@ using namespace magnus;
 
 namespace {
 
-/// The text with the scene keys DESIGN §3 requires appended, unless it has a [cylinder] or [flow] of its own
+/// The text with the scene keys a case file requires appended, unless it has a [cylinder] or [flow] of its own
 /// (these tests are about the parser, not the scene).
 std::string scened(const std::string& text) {
   if (text.find("[cylinder]") != std::string::npos || text.find("[flow]") != std::string::npos) return text;
@@ -108,7 +108,7 @@ TEST_CASE("fuzz: finite values whose products overflow are refused", "[app][case
   REQUIRE(parses("[cylinder]\nradius = 1e-6\nspin_ratio = 1e4\n[flow]\nspeed = 1e-12\n"));
 }
 
-TEST_CASE("fuzz: a very long unknown key is refused at once", "[app][case][fuzz]") {
+TEST_CASE("fuzz: a very long unknown key is refused without a suggestion (the search is bounded by length)", "[app][case][fuzz]") {
   // The nearest-key suggestion was O(length) per valid key and per key part: seconds for a megabyte key.
   const std::string key(1 << 20, 'k');
   std::string err;

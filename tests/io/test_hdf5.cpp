@@ -19,7 +19,7 @@ void require_equal(const std::vector<double>& a, const std::vector<double>& b) {
 
 }  // namespace
 
-TEST_CASE("HDF5 round trip: every dataset and attribute of DESIGN §5, with units, as computed", "[postproc][hdf5]") {
+TEST_CASE("HDF5 round trip: every dataset and attribute of format 2, with units, as computed", "[postproc][hdf5]") {
   const std::string dir = test::temp_dir("hdf5");
   Case c = test::make_case(1.0, 32);
   c.output.fields.reset();  // all fields

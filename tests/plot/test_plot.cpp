@@ -149,7 +149,7 @@ TEST_CASE("streamlines: markers on the exact stagnation points, contours on the 
     CHECK(std::fabs(0.5 * (f.box.x0 + f.box.x1) - 450.0) <= 2.0);
     CHECK(std::fabs((f.box.x1 - f.box.x0) - (f.box.y1 - f.box.y0)) <= 2.0);
     CHECK(frame_drawn(img, f));
-    // DESIGN §1: CCW spin, flow towards +x: sinθ_s = α/2 on the body (30° and 150° at α = 1), or one free
+    // The sign convention: CCW spin, flow towards +x: sinθ_s = α/2 on the body (30° and 150° at α = 1), or one free
     // point on the +y axis at r_s = a(α + √(α² − 4))/2.
     std::vector<CurvePoint> expect, mirror;
     if (alpha < 2) {

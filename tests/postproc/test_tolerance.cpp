@@ -7,7 +7,7 @@
 using namespace magnus;
 
 namespace {
-/// The scene keys DESIGN §3 requires.
+/// The scene keys a case file requires.
 const std::string scene = "[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = 10.0\n";
 }  // namespace
 
