@@ -119,39 +119,41 @@ void chunked(hid_t dcpl, const std::vector<hsize_t>& dims, size_t value_size, in
 
 }  // namespace
 
-void H5Writer::dataset(id parent, const std::string& name, const std::vector<size_t>& shape, const double* data,
-                       const std::string& units, const std::string& description) {
+namespace {
+
+/// One chunked, checksummed dataset of count values of the memory type mem stored as file, with its units
+/// and description (the shared body of the double and int datasets).
+void write_dataset(H5Writer& w, H5Writer::id parent, const std::string& name, const std::vector<size_t>& shape,
+                   hid_t mem, hid_t file, size_t value_size, int level, const void* data, const std::string& units,
+                   const std::string& description) {
   std::vector<hsize_t> dims(shape.begin(), shape.end());
   Handle space(H5Screate_simple(int(dims.size()), dims.data(), nullptr), H5Sclose);
   size_t count = 1;
-  for (size_t s : shape) count *= s;
+  for (size_t n : shape) count *= n;
   Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
-  chunked(dcpl, dims, sizeof(double), compression_, name);
+  chunked(dcpl, dims, value_size, level, name);
   errno = 0;
-  Handle d(H5Dcreate2(parent, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose);
+  Handle d(H5Dcreate2(parent, name.c_str(), file, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose);
   if (d < 0) check(-1, "cannot create dataset " + name);
   errno = 0;
-  if (count > 0) check(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
-                       "cannot write dataset " + name);
-  attr(d, "units", units);
-  if (!description.empty()) attr(d, "description", description);
+  if (count > 0) check(H5Dwrite(d, mem, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "cannot write dataset " + name);
+  w.attr(d, "units", units);
+  if (!description.empty()) w.attr(d, "description", description);
+}
+
+}  // namespace
+
+void H5Writer::dataset(id parent, const std::string& name, const std::vector<size_t>& shape, const double* data,
+                       const std::string& units, const std::string& description) {
+  write_dataset(*this, parent, name, shape, H5T_NATIVE_DOUBLE, H5T_NATIVE_DOUBLE, sizeof(double), compression_,
+                data, units, description);
 }
 
 void H5Writer::int_dataset(id parent, const std::string& name, const std::vector<size_t>& shape, const int* data,
                            const std::string& units, const std::string& description) {
-  std::vector<hsize_t> dims(shape.begin(), shape.end());
-  Handle space(H5Screate_simple(int(dims.size()), dims.data(), nullptr), H5Sclose);
-  size_t count = 1;
-  for (size_t s : shape) count *= s;
-  Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
-  chunked(dcpl, dims, sizeof(int), 6, name);
-  errno = 0;
-  Handle d(H5Dcreate2(parent, name.c_str(), H5T_STD_I32LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose);
-  if (d < 0) check(-1, "cannot create dataset " + name);
-  errno = 0;
-  if (count > 0) check(H5Dwrite(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "cannot write dataset " + name);
-  attr(d, "units", units);
-  if (!description.empty()) attr(d, "description", description);
+  // Connectivity compresses well and is read whole: always gzip level 6.
+  write_dataset(*this, parent, name, shape, H5T_NATIVE_INT, H5T_STD_I32LE, sizeof(int), 6, data, units,
+                description);
 }
 
 void H5Writer::view(id parent, const std::string& name, const std::vector<size_t>& shape,

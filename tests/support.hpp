@@ -1,5 +1,6 @@
 #pragma once
 // Shared helpers for the tests: a case on a chosen grid, solved and post-processed.
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -28,6 +29,20 @@ inline Case make_case(double alpha, int n_theta, Spacing spacing = Spacing::geom
 /// Observed order log(e_coarse/e_fine)/log(h_coarse/h_fine) for a refinement ratio.
 inline double observed_order(double e_coarse, double e_fine, double ratio = 2.0) {
   return std::log(e_coarse / e_fine) / std::log(ratio);
+}
+
+/// max_k |a_k − b_k|.
+inline double max_abs_diff(const std::vector<double>& a, const std::vector<double>& b) {
+  double m = 0.0;
+  for (size_t k = 0; k < a.size(); ++k) m = std::max(m, std::fabs(a[k] - b[k]));
+  return m;
+}
+
+/// max_k |a_k|.
+inline double max_abs(const std::vector<double>& a) {
+  double m = 0.0;
+  for (double v : a) m = std::max(m, std::fabs(v));
+  return m;
 }
 
 /// A fresh temporary directory for one test.

@@ -9,21 +9,12 @@
 #include "support.hpp"
 
 using namespace magnus;
+using magnus::test::max_abs;
+using magnus::test::max_abs_diff;
 using magnus::test::observed_order;
 
 namespace {
 
-double max_abs_diff(const std::vector<double>& a, const std::vector<double>& b) {
-  double m = 0.0;
-  for (size_t k = 0; k < a.size(); ++k) m = std::max(m, std::fabs(a[k] - b[k]));
-  return m;
-}
-
-double max_abs(const std::vector<double>& a) {
-  double m = 0.0;
-  for (double v : a) m = std::max(m, std::fabs(v));
-  return m;
-}
 
 std::vector<double> random_vector(size_t n, std::mt19937& rng, double lo = -1.0, double hi = 1.0) {
   std::uniform_real_distribution<double> d(lo, hi);

@@ -9,20 +9,11 @@
 #include "support.hpp"
 
 using namespace magnus;
+using magnus::test::max_abs;
+using magnus::test::max_abs_diff;
 
 namespace {
 
-double max_abs_diff(const std::vector<double>& a, const std::vector<double>& b) {
-  double m = 0.0;
-  for (size_t k = 0; k < a.size(); ++k) m = std::max(m, std::fabs(a[k] - b[k]));
-  return m;
-}
-
-double max_abs(const std::vector<double>& a) {
-  double m = 0.0;
-  for (double v : a) m = std::max(m, std::fabs(v));
-  return m;
-}
 
 }  // namespace
 
