@@ -6,10 +6,10 @@
 #include <map>
 #include <memory>
 
-#include "io/bench_table.hpp"
-#include "io/case_file.hpp"
 #include "app/commands.hpp"
 #include "app/threads.hpp"
+#include "io/bench_table.hpp"
+#include "io/case_file.hpp"
 #include "io/hdf5_io.hpp"
 #include "plot/curves.hpp"
 
@@ -27,12 +27,16 @@ void add_bench_command(CLI::App& app) {
   auto* b = app.add_subcommand("bench", "speed against error: a ladder of grids for each solver and stencil");
   b->add_option("case", o->case_path, "case file (TOML)")->required();
   b->add_option("--set", o->sets, "override a case key: section.key=value (repeatable)");
-  b->add_option("--ladder", o->ladder, "n_theta of each rung (default 32,64,…,1024)")->delimiter(',')
+  b->add_option("--ladder", o->ladder, "n_theta of each rung (default 32,64,…,1024)")
+      ->delimiter(',')
       ->check(CLI::Range(8, 1 << 20));
-  b->add_option("--repeats", o->repeats, "median over this many runs per rung (default 5)")->check(CLI::Range(1, 1000));
-  b->add_option("--method", o->methods, "cholmod and/or fft (default both)")->delimiter(',')
+  b->add_option("--repeats", o->repeats, "median over this many runs per rung (default 5)")
+      ->check(CLI::Range(1, 1000));
+  b->add_option("--method", o->methods, "cholmod and/or fft (default both)")
+      ->delimiter(',')
       ->check(CLI::IsMember({"cholmod", "fft"}));
-  b->add_option("--stencil", o->stencils, "5-point and/or 9-point (default both)")->delimiter(',')
+  b->add_option("--stencil", o->stencils, "5-point and/or 9-point (default both)")
+      ->delimiter(',')
       ->check(CLI::IsMember({"5-point", "9-point"}));
   b->add_option("--cholmod-max-unknowns", o->cholmod_max, "skip larger CHOLMOD rungs (default 300000)")
       ->check(CLI::Range(1L, 1L << 40));
@@ -67,10 +71,12 @@ void add_bench_command(CLI::App& app) {
     const auto rows = run_bench(c, opt, progress);
     if (tty) std::fprintf(stderr, "\r\033[K");
     if (rows.empty())
-      throw std::runtime_error("bench: no rung ran (the 9-point stencil needs geometric spacing, or every CHOLMOD "
-                               "rung is above --cholmod-max-unknowns)");
+      throw std::runtime_error(
+          "bench: no rung ran (the 9-point stencil needs geometric spacing, or every CHOLMOD "
+          "rung is above --cholmod-max-unknowns)");
     std::printf("magnus bench — %s (α = %.6g, far field %s, %d thread%s, median of %d)\n", c.title.c_str(),
-                c.scene.spin_ratio(), to_string(c.grid.far_field), opt.threads, opt.threads == 1 ? "" : "s", opt.repeats);
+                c.scene.spin_ratio(), to_string(c.grid.far_field), opt.threads, opt.threads == 1 ? "" : "s",
+                opt.repeats);
     std::fputs(bench_table(rows).c_str(), stdout);
     if (!o->csv.empty()) write_text_output(o->csv, bench_csv(rows));
     if (!o->plot.empty()) {

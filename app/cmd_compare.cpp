@@ -12,7 +12,8 @@ void add_compare_command(CLI::App& app) {
     std::string csv;
   };
   auto o = std::make_shared<Options>();
-  auto* compare = app.add_subcommand("compare", "lift coefficients and errors of several results side by side");
+  auto* compare =
+      app.add_subcommand("compare", "lift coefficients and errors of several results side by side");
   compare->add_option("files", o->files, "result files (HDF5, from magnus run)")->required();
   compare->add_option("--csv", o->csv, "write the comparison as CSV (one row per file)");
   compare->callback([o] { command_compare(o->files, o->csv); });

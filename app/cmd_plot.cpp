@@ -13,8 +13,10 @@ void add_plot_command(CLI::App& app) {
   };
   auto o = std::make_shared<Options>();
   auto* plot = app.add_subcommand(
-      "plot", "PNG pictures of a result (streamlines, the Cp field, surface Cp against exact) or of a sweep (C_L)");
-  plot->add_option("file", o->file, "result file (HDF5, from magnus run) or sweep file (magnus sweep -o)")->required();
+      "plot",
+      "PNG pictures of a result (streamlines, the Cp field, surface Cp against exact) or of a sweep (C_L)");
+  plot->add_option("file", o->file, "result file (HDF5, from magnus run) or sweep file (magnus sweep -o)")
+      ->required();
   plot->add_option("-o,--output-dir", o->dir, "directory for the PNGs (default: beside the result)");
   plot->add_option("--size", o->size, "PNG size WxH in pixels (default 1000x800)");
   plot->add_flag("-q,--quiet", o->quiet, "do not list the files written");

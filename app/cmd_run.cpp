@@ -9,9 +9,9 @@
 #include "app/threads.hpp"
 #include "io/case_file.hpp"
 #include "io/hdf5_io.hpp"
+#include "io/inspect.hpp"
 #include "io/output_size.hpp"
 #include "io/report.hpp"
-#include "io/inspect.hpp"
 #include "postproc/pipeline.hpp"
 #include "postproc/plan.hpp"
 #include "solver/memory.hpp"
@@ -20,8 +20,8 @@ namespace magnus {
 
 namespace {
 
-void command_run(const std::string& case_path, const std::string& output, const std::vector<std::string>& sets,
-                int threads, bool quiet, size_t max_bytes) {
+void command_run(const std::string& case_path, const std::string& output,
+                 const std::vector<std::string>& sets, int threads, bool quiet, size_t max_bytes) {
   Case c = load_case(case_path, sets);
   if (!output.empty()) {
     c.output.file = output;
@@ -39,9 +39,7 @@ void command_run(const std::string& case_path, const std::string& output, const 
   if (!quiet) std::fputs(summary_text(r, c.output.file).c_str(), stdout);
 }
 
-void command_inspect(const std::string& path) {
-  std::fputs(describe_result(path).c_str(), stdout);
-}
+void command_inspect(const std::string& path) { std::fputs(describe_result(path).c_str(), stdout); }
 
 }  // namespace
 
@@ -61,9 +59,10 @@ void add_run_command(CLI::App& app) {
   run->add_option("--set", o->sets, "override a case key: section.key=value (repeatable)");
   run->add_option("--threads", o->threads, "threads for the solver")->check(CLI::Range(1, 64));
   run->add_flag("-q,--quiet", o->quiet, "print nothing on success");
-  run->add_option("--tolerance", o->tolerance,
-                  "target relative C_L error, 1e-14 to 0.1: choose the smallest grid and stencil (supersedes the "
-                  "file's grid)");
+  run->add_option(
+      "--tolerance", o->tolerance,
+      "target relative C_L error, 1e-14 to 0.1: choose the smallest grid and stencil (supersedes the "
+      "file's grid)");
   run->add_option("--max-memory", o->max_memory, "refuse a run that would need more memory (e.g. 2G, 512M)");
   run->callback([o] {
     size_t max_bytes = 0;
@@ -79,7 +78,8 @@ void add_run_command(CLI::App& app) {
       char* end = nullptr;
       const double tol = std::strtod(o->tolerance.c_str(), &end);
       if (end == o->tolerance.c_str() || *end != '\0' || !(tol >= 1e-14 && tol <= 0.1))
-        throw std::runtime_error(fmt::format("--tolerance {}: must be between {:g} and {:g}", o->tolerance, 1e-14, 0.1));
+        throw std::runtime_error(
+            fmt::format("--tolerance {}: must be between {:g} and {:g}", o->tolerance, 1e-14, 0.1));
       sets.push_back(fmt::format("grid.tolerance={}", tol));
     }
     command_run(o->case_path, o->output, sets, usable_threads(o->threads), o->quiet, max_bytes);

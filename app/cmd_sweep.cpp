@@ -12,8 +12,8 @@
 #include "io/hdf5_io.hpp"
 #include "io/reference_file.hpp"
 #include "io/sweep_file.hpp"
-#include "plot/figures.hpp"
 #include "plot/curves.hpp"
+#include "plot/figures.hpp"
 
 namespace magnus {
 
@@ -30,7 +30,8 @@ struct SweepOptions {
 void command_sweep(const SweepOptions& o) {
   const bool by_spin = !o.spin_ratio.empty();
   if (by_spin == !o.circulation.empty())
-    throw std::invalid_argument("sweep: give exactly one of --spin-ratio A:B:STEP and --circulation A:B:STEP");
+    throw std::invalid_argument(
+        "sweep: give exactly one of --spin-ratio A:B:STEP and --circulation A:B:STEP");
   const SweepRange range =
       parse_sweep_range(by_spin ? o.spin_ratio : o.circulation, by_spin ? "--spin-ratio" : "--circulation");
   const PlotSize size = o.size.empty() ? PlotSize{} : parse_plot_size(o.size);
@@ -95,9 +96,11 @@ void command_sweep(const SweepOptions& o) {
 void add_sweep_command(CLI::App& app) {
   auto o = std::make_shared<SweepOptions>();
   auto* sweep = app.add_subcommand(
-      "sweep", "lift against spin ratio (or circulation) by superposition: two solves for any number of points");
+      "sweep",
+      "lift against spin ratio (or circulation) by superposition: two solves for any number of points");
   sweep->add_option("case", o->case_path, "case file (TOML)")->required();
-  auto* spin = sweep->add_option("--spin-ratio", o->spin_ratio, "spin ratios α = aω/U: A:B:STEP (A ≤ B, STEP > 0)");
+  auto* spin =
+      sweep->add_option("--spin-ratio", o->spin_ratio, "spin ratios α = aω/U: A:B:STEP (A ≤ B, STEP > 0)");
   auto* circ = sweep->add_option("--circulation", o->circulation,
                                  "circulations Γ (m²/s) for circulation.model = \"given\": A:B:STEP");
   spin->excludes(circ);

@@ -6,7 +6,8 @@
 #include "app/commands.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"magnus: potential flow past a spinning cylinder (Magnus lift, Kutta–Joukowski, the seed estimate)"};
+  CLI::App app{
+      "magnus: potential flow past a spinning cylinder (Magnus lift, Kutta–Joukowski, the seed estimate)"};
   app.set_version_flag("--version", std::string("magnus ") + MAGNUS_VERSION);
   app.require_subcommand(1);
   magnus::add_commands(app);
@@ -18,7 +19,8 @@ int main(int argc, char** argv) {
     known = known || (argc >= 2 && sub->get_name() == argv[1]);
   }
   if (argc >= 2 && argv[1][0] != '-' && !known) {
-    std::fprintf(stderr, "magnus: unknown command '%s' (commands: %s; see magnus --help)\n", argv[1], list.c_str());
+    std::fprintf(stderr, "magnus: unknown command '%s' (commands: %s; see magnus --help)\n", argv[1],
+                 list.c_str());
     return 2;
   }
   try {

@@ -10,8 +10,8 @@ namespace magnus {
 inline int usable_threads(int asked) {
   const unsigned cores = std::thread::hardware_concurrency();
   if (cores == 0 || unsigned(asked) <= cores) return asked;
-  std::fprintf(stderr, "magnus: note: --threads %d is more than the %u cores of this machine: using %u\n", asked, cores,
-               cores);
+  std::fprintf(stderr, "magnus: note: --threads %d is more than the %u cores of this machine: using %u\n",
+               asked, cores, cores);
   return int(cores);
 }
 

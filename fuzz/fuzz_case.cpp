@@ -24,10 +24,12 @@ namespace {
   std::abort();
 }
 
-/// What every accepted case must satisfy (the case-file ranges), and its resolved TOML must read back the same.
+/// What every accepted case must satisfy (the case-file ranges), and its resolved TOML must read back the
+/// same.
 void check_accepted(const Case& c) {
-  for (double v : {c.scene.radius, c.scene.spin, c.scene.speed, c.scene.density, c.scene.pressure_inf, c.scene.circulation_value, c.grid.outer_radius,
-                   c.grid.tolerance, c.scene.Gamma(), c.scene.spin_ratio()})
+  for (double v : {c.scene.radius, c.scene.spin, c.scene.speed, c.scene.density, c.scene.pressure_inf,
+                   c.scene.circulation_value, c.grid.outer_radius, c.grid.tolerance, c.scene.Gamma(),
+                   c.scene.spin_ratio()})
     if (!std::isfinite(v)) finding("a number of an accepted case is not finite", c.source_text);
   if (!(c.scene.radius > 0 && c.scene.speed >= 0 && c.scene.density > 0 && c.grid.outer_radius > 1))
     finding("a range check let a value through", c.source_text);
@@ -38,7 +40,8 @@ void check_accepted(const Case& c) {
   try {
     again = parse_case(c.source_text, "resolved.toml");
   } catch (const CaseError& e) {
-    finding("the resolved TOML of an accepted case does not parse", std::string(e.what()) + "\n" + c.source_text);
+    finding("the resolved TOML of an accepted case does not parse",
+            std::string(e.what()) + "\n" + c.source_text);
   }
   if (again.source_text != c.source_text)
     finding("the resolved TOML does not resolve to itself", c.source_text + "\n---\n" + again.source_text);

@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <toml++/toml.h>
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -10,10 +11,8 @@
 #include <functional>
 #include <map>
 #include <sstream>
-#include <toml++/toml.h>
 
 #include "io/toml_safe.hpp"
-
 
 namespace magnus {
 
@@ -78,9 +77,12 @@ class Reader {
     const toml::node* n = find(section, key);
     if (!n) return fallback;
     double v;
-    if (auto i = n->as_integer()) v = double(i->get());
-    else if (auto f = n->as_floating_point()) v = f->get();
-    else fail(key_name(section, key), fmt::format("expected a number, got {}", type_name(*n)));
+    if (auto i = n->as_integer())
+      v = double(i->get());
+    else if (auto f = n->as_floating_point())
+      v = f->get();
+    else
+      fail(key_name(section, key), fmt::format("expected a number, got {}", type_name(*n)));
     if (!std::isfinite(v)) fail(key_name(section, key), fmt::format("must be finite, got {}", v));
     if (!ok(v)) fail(key_name(section, key), fmt::format("{} is out of range: must be {}", v, range));
     return v;
@@ -116,7 +118,8 @@ class Reader {
     const toml::node* n = find(section, key);
     if (!n) return {};
     const auto arr = n->as_array();
-    if (!arr) fail(key_name(section, key), fmt::format("expected an array of strings, got {}", type_name(*n)));
+    if (!arr)
+      fail(key_name(section, key), fmt::format("expected an array of strings, got {}", type_name(*n)));
     std::vector<std::string> out;
     for (const auto& e : *arr) {
       const auto s = e.as_string();
@@ -128,13 +131,20 @@ class Reader {
 
   static const char* type_name(const toml::node& n) {
     switch (n.type()) {
-      case toml::node_type::string: return "a string";
-      case toml::node_type::integer: return "an integer";
-      case toml::node_type::floating_point: return "a float";
-      case toml::node_type::boolean: return "a boolean";
-      case toml::node_type::array: return "an array";
-      case toml::node_type::table: return "a table";
-      default: return "a date/time";
+      case toml::node_type::string:
+        return "a string";
+      case toml::node_type::integer:
+        return "an integer";
+      case toml::node_type::floating_point:
+        return "a float";
+      case toml::node_type::boolean:
+        return "a boolean";
+      case toml::node_type::array:
+        return "an array";
+      case toml::node_type::table:
+        return "a table";
+      default:
+        return "a date/time";
     }
   }
 
@@ -160,7 +170,8 @@ void reject_unknown_keys(const toml::table& t, const std::string& origin) {
         const std::string key2(k2.str());
         const auto& keys = sec->second;
         if (std::find(keys.begin(), keys.end(), key2) == keys.end()) {
-          throw CaseError(fmt::format("{}: unknown key {}.{}{}", origin, key, key2, unknown_key_hint(key + "." + key2)));
+          throw CaseError(
+              fmt::format("{}: unknown key {}.{}{}", origin, key, key2, unknown_key_hint(key + "." + key2)));
         }
         (void)v2;
       }
@@ -224,13 +235,17 @@ const std::vector<std::string>& case_keys() {
 
 std::string nearest_key(const std::string& key) {
   // Synonyms of a valid key: the one suggestion that is not a near spelling.
-  static const std::map<std::string, std::string> aliases = {
-      {"flow.velocity", "flow.speed"}, {"flow.u", "flow.speed"}, {"flow.rho", "flow.density"},
-      {"cylinder.omega", "cylinder.spin"}, {"cylinder.alpha", "cylinder.spin_ratio"}, {"cylinder.a", "cylinder.radius"}};
+  static const std::map<std::string, std::string> aliases = {{"flow.velocity", "flow.speed"},
+                                                             {"flow.u", "flow.speed"},
+                                                             {"flow.rho", "flow.density"},
+                                                             {"cylinder.omega", "cylinder.spin"},
+                                                             {"cylinder.alpha", "cylinder.spin_ratio"},
+                                                             {"cylinder.a", "cylinder.radius"}};
   if (const auto it = aliases.find(key); it != aliases.end()) return it->second;
-  // Keys of the design (docs/design.md) that mean something else and this version does not read: never "corrected".
-  for (const char* other : {"cylinder.span", "flow.direction", "flow.viscosity", "flow.reynolds", "flow.course",
-                            "model.flow"})
+  // Keys of the design (docs/design.md) that mean something else and this version does not read: never
+  // "corrected".
+  for (const char* other :
+       {"cylinder.span", "flow.direction", "flow.viscosity", "flow.reynolds", "flow.course", "model.flow"})
     if (key == other) return "";
   // The edit distance is at least the difference in length, and no valid key is longer than 20 characters:
   // a key this long is never near one (and a megabyte key would cost seconds).
@@ -309,10 +324,12 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
     spin_key = k;
   }
   if (spin_key.empty() && !c.scene.circulation_given)
-    r.fail("cylinder.spin", "required key is missing: give one of cylinder.spin (rad/s), cylinder.spin_ratio or "
-                            "cylinder.rpm, or circulation.model = \"given\" with circulation.value");
+    r.fail("cylinder.spin",
+           "required key is missing: give one of cylinder.spin (rad/s), cylinder.spin_ratio or "
+           "cylinder.rpm, or circulation.model = \"given\" with circulation.value");
   c.scene.radius = r.number("cylinder", "radius", c.scene.radius, positive, "> 0 (m)");
-  c.scene.speed = r.number("flow", "speed", c.scene.speed, [](double v) { return v >= 0.0; }, ">= 0 (m/s)");
+  c.scene.speed = r.number(
+      "flow", "speed", c.scene.speed, [](double v) { return v >= 0.0; }, ">= 0 (m/s)");
   c.scene.density = r.number("flow", "density", c.scene.density, positive, "> 0 (kg/m^3)");
   c.scene.pressure_inf = r.number("flow", "pressure", c.scene.pressure_inf, any, "finite (Pa)");
   if (spin_key == "spin_ratio") {
@@ -332,37 +349,49 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
   c.scene.circulation_value = r.number("circulation", "value", 0.0, any, "finite (m^2/s)");
   // Each value is finite, but what is derived from them must be too (1e300 * 1e300 is not).
   if (!std::isfinite(c.scene.spin))
-    r.fail("cylinder.spin_ratio", fmt::format("gives a spin omega = alpha*U/a that is not finite (a = {}, U = {})",
-                                              c.scene.radius, c.scene.speed));
-  c.grid.outer_radius = r.number("domain", "outer_radius", c.grid.outer_radius,
-                            [](double v) { return v > 1.0 && v <= 1e12; }, "> 1 and <= 1e12 (R/a)");
+    r.fail("cylinder.spin_ratio",
+           fmt::format("gives a spin omega = alpha*U/a that is not finite (a = {}, U = {})", c.scene.radius,
+                       c.scene.speed));
+  c.grid.outer_radius = r.number(
+      "domain", "outer_radius", c.grid.outer_radius, [](double v) { return v > 1.0 && v <= 1e12; },
+      "> 1 and <= 1e12 (R/a)");
   SceneKeys keys;
   if (!spin_key.empty()) keys.spin = "cylinder." + spin_key;
-  if (spin_key == "spin_ratio" || spin_key == "rpm") keys.spin_value = r.number("cylinder", spin_key, 0.0, any, "");
+  if (spin_key == "spin_ratio" || spin_key == "rpm")
+    keys.spin_value = r.number("cylinder", spin_key, 0.0, any, "");
   if (const auto o = find_overflow(c.scene, c.grid.outer_radius, keys))
-    r.fail(o->key, fmt::format("{:g} is too {}: {} {}", o->value, std::fabs(o->value) >= 1.0 ? "large" : "small",
-                               o->quantity, o->underflow ? "underflows double precision" : "is not finite"));
+    r.fail(o->key,
+           fmt::format("{:g} is too {}: {} {}", o->value, std::fabs(o->value) >= 1.0 ? "large" : "small",
+                       o->quantity, o->underflow ? "underflows double precision" : "is not finite"));
   c.grid.far_field = r.word("domain", "far_field", "exact", {"exact", "freestream"}) == "exact"
-                    ? FarField::exact : FarField::freestream;
-  c.grid.n_theta = int(r.integer("grid", "n_theta", c.grid.n_theta,
-                            [](long v) { return v >= 8 && v <= (1 << 20) && v % 2 == 0; },
-                            "even, >= 8 and <= 1048576"));
-  c.grid.n_r = int(r.integer("grid", "n_r", c.grid.n_r, [](long v) { return v == 0 || (v >= 3 && v <= (1 << 22)); },
-                        "0 (square cells) or 3 ... 4194304"));
+                         ? FarField::exact
+                         : FarField::freestream;
+  c.grid.n_theta = int(r.integer(
+      "grid", "n_theta", c.grid.n_theta, [](long v) { return v >= 8 && v <= (1 << 20) && v % 2 == 0; },
+      "even, >= 8 and <= 1048576"));
+  c.grid.n_r = int(r.integer(
+      "grid", "n_r", c.grid.n_r, [](long v) { return v == 0 || (v >= 3 && v <= (1 << 22)); },
+      "0 (square cells) or 3 ... 4194304"));
   c.grid.spacing = r.word("grid", "spacing", "geometric", {"geometric", "uniform"}) == "geometric"
-                  ? Spacing::geometric : Spacing::uniform;
+                       ? Spacing::geometric
+                       : Spacing::uniform;
   c.grid.spacing_given = r.has("grid", "spacing");
-  c.grid.tolerance = r.number("grid", "tolerance", 0.0, [](double v) { return v == 0.0 || (v >= 1e-14 && v <= 0.1); },
-                         "0 (grid as given) or 1e-14 ... 0.1");
+  c.grid.tolerance = r.number(
+      "grid", "tolerance", 0.0, [](double v) { return v == 0.0 || (v >= 1e-14 && v <= 0.1); },
+      "0 (grid as given) or 1e-14 ... 0.1");
   const std::string method = r.word("solver", "method", "auto", {"auto", "cholmod", "fft"});
-  c.solver.method = method == "auto" ? Method::automatic : method == "cholmod" ? Method::cholmod : Method::fft;
+  c.solver.method = method == "auto"      ? Method::automatic
+                    : method == "cholmod" ? Method::cholmod
+                                          : Method::fft;
   c.solver.stencil = r.word("solver", "stencil", "5-point", {"5-point", "9-point"}) == "5-point"
-                  ? StencilKind::five_point : StencilKind::nine_point;
+                         ? StencilKind::five_point
+                         : StencilKind::nine_point;
   c.output.file = r.word("output", "file", c.output.file);
   if (c.output.file.empty()) r.fail("output.file", "must not be empty");
   if (r.has("output", "fields")) c.output.fields = r.words("output", "fields");
-  c.output.compression = int(r.integer("output", "compression", c.output.compression,
-                                       [](long v) { return v >= 0 && v <= 9; }, "an integer from 0 (none) to 9"));
+  c.output.compression = int(r.integer(
+      "output", "compression", c.output.compression, [](long v) { return v >= 0 && v <= 9; },
+      "an integer from 0 (none) to 9"));
   for (const auto& f : c.output.fields.value_or(std::vector<std::string>{})) {
     const auto& names = field_names();
     if (std::find(names.begin(), names.end(), f) == names.end()) {
@@ -376,7 +405,8 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
   for (const char* key : {"grid.n_theta", "grid.n_r", "solver.stencil"}) {
     const std::string k(key);
     if (c.grid.tolerance > 0.0 && r.has(k.substr(0, k.find('.')), k.substr(k.find('.') + 1)))
-      r.fail("grid.tolerance", fmt::format("conflicts with {}: the tolerance chooses the grid and stencil", k));
+      r.fail("grid.tolerance",
+             fmt::format("conflicts with {}: the tolerance chooses the grid and stencil", k));
   }
   c.source_text = to_toml(c);
   return c;
@@ -392,8 +422,9 @@ Case load_case(const std::string& path, const std::vector<std::string>& override
   ss << in.rdbuf();
   if (in.bad()) throw CaseError(fmt::format("cannot read case file '{}': read error", path));
   if (ss.str().rfind("\x89HDF\r\n\x1a\n", 0) == 0)  // the HDF5 signature at offset 0
-    throw CaseError(fmt::format("{}: an HDF5 result file, not a case file (TOML); to see what it holds: magnus inspect {}",
-                                path, path));
+    throw CaseError(fmt::format(
+        "{}: an HDF5 result file, not a case file (TOML); to see what it holds: magnus inspect {}", path,
+        path));
   return parse_case(ss.str(), path, overrides);
 }
 
@@ -402,9 +433,15 @@ std::string to_toml(const Case& c) {
     std::string q = "\"";
     for (char ch : v) {
       if (ch == '"' || ch == '\\') q += '\\';
-      if (ch == '\n') { q += "\\n"; continue; }
+      if (ch == '\n') {
+        q += "\\n";
+        continue;
+      }
       // TOML basic strings may not hold control characters other than tab: escape them all.
-      if ((unsigned char)ch < 0x20 || ch == 0x7F) { q += fmt::format("\\u{:04X}", (unsigned char)ch); continue; }
+      if ((unsigned char)ch < 0x20 || ch == 0x7F) {
+        q += fmt::format("\\u{:04X}", (unsigned char)ch);
+        continue;
+      }
       q += ch;
     }
     return q + "\"";
@@ -415,17 +452,21 @@ std::string to_toml(const Case& c) {
   };
   std::string t = fmt::format("title = {}\n", str(c.title));
   t += fmt::format("\n[cylinder]\nradius = {}\nspin = {}\n", num(c.scene.radius), num(c.scene.spin));
-  t += fmt::format("\n[flow]\nspeed = {}\ndensity = {}\npressure = {}\n", num(c.scene.speed), num(c.scene.density),
-                   num(c.scene.pressure_inf));
+  t += fmt::format("\n[flow]\nspeed = {}\ndensity = {}\npressure = {}\n", num(c.scene.speed),
+                   num(c.scene.density), num(c.scene.pressure_inf));
   t += fmt::format("\n[circulation]\nmodel = {}\n", str(c.scene.circulation_given ? "given" : "spin"));
   if (c.scene.circulation_given) t += fmt::format("value = {}\n", num(c.scene.circulation_value));
-  t += fmt::format("\n[domain]\nouter_radius = {}\nfar_field = {}\n", num(c.grid.outer_radius), str(to_string(c.grid.far_field)));
+  t += fmt::format("\n[domain]\nouter_radius = {}\nfar_field = {}\n", num(c.grid.outer_radius),
+                   str(to_string(c.grid.far_field)));
   // With a tolerance the grid and stencil are chosen at run time (and stored in /parameters).
   // With a tolerance and no stated spacing the search chooses it too: the resolved case leaves it out.
   t += "\n[grid]\n";
-  if (c.grid.tolerance == 0.0 || c.grid.spacing_given) t += fmt::format("spacing = {}\n", str(to_string(c.grid.spacing)));
-  if (c.grid.tolerance > 0.0) t += fmt::format("tolerance = {}\n", num(c.grid.tolerance));
-  else t += fmt::format("n_theta = {}\nn_r = {}\n", c.grid.n_theta, c.grid.n_r);
+  if (c.grid.tolerance == 0.0 || c.grid.spacing_given)
+    t += fmt::format("spacing = {}\n", str(to_string(c.grid.spacing)));
+  if (c.grid.tolerance > 0.0)
+    t += fmt::format("tolerance = {}\n", num(c.grid.tolerance));
+  else
+    t += fmt::format("n_theta = {}\nn_r = {}\n", c.grid.n_theta, c.grid.n_r);
   t += fmt::format("\n[solver]\nmethod = {}\n", str(to_string(c.solver.method)));
   if (c.grid.tolerance == 0.0) t += fmt::format("stencil = {}\n", str(to_string(c.solver.stencil)));
   t += fmt::format("\n[output]\nfile = {}\n", str(c.output.file));

@@ -49,8 +49,8 @@ std::string show(const Param& p) {
 /// One row of the comparison: a schema attribute with a compare label, or a ratio of two of them.
 struct Quantity {
   std::string label, csv, spec;
-  const AttrSpec* attr = nullptr;       ///< the value, or
-  const AttrSpec* num = nullptr;        ///< num / den (− 1 when minus_one)
+  const AttrSpec* attr = nullptr;  ///< the value, or
+  const AttrSpec* num = nullptr;   ///< num / den (− 1 when minus_one)
   const AttrSpec* den = nullptr;
   bool minus_one = false;
 };
@@ -72,19 +72,22 @@ std::vector<Quantity> quantities() {
 
 struct FileData {
   std::string path;
-  std::vector<Param> params;                   // as params()
+  std::vector<Param> params;                  // as params()
   std::vector<std::optional<double>> values;  // as quantities()
 };
 
-FileData read(const std::string& path, const std::vector<const AttrSpec*>& ps, const std::vector<Quantity>& qs) {
+FileData read(const std::string& path, const std::vector<const AttrSpec*>& ps,
+              const std::vector<Quantity>& qs) {
   const ResultFile f(path);
   FileData d;
   d.path = path;
   for (const AttrSpec* p : ps) {
     Param v;
     if (f.has_attr(p->group, p->name)) {
-      if (p->kind == AttrKind::text) v.text = f.attr_string(p->group, p->name);
-      else v.number = f.attr_double(p->group, p->name);
+      if (p->kind == AttrKind::text)
+        v.text = f.attr_string(p->group, p->name);
+      else
+        v.number = f.attr_double(p->group, p->name);
     }
     d.params.push_back(v);
   }
@@ -98,11 +101,11 @@ FileData read(const std::string& path, const std::vector<const AttrSpec*>& ps, c
       continue;
     }
     const auto n = attr(q.num), m = attr(q.den);
-    d.values.push_back(n && m && *m != 0.0 ? std::optional<double>(*n / *m - (q.minus_one ? 1.0 : 0.0)) : std::nullopt);
+    d.values.push_back(n && m && *m != 0.0 ? std::optional<double>(*n / *m - (q.minus_one ? 1.0 : 0.0))
+                                           : std::nullopt);
   }
   return d;
 }
-
 
 }  // namespace
 
@@ -133,12 +136,14 @@ Comparison compare_results(const std::vector<std::string>& paths) {
     std::vector<std::string> cells;
     for (const auto& f : files) cells.push_back(show(f.params[k]));
     const std::string units = kParams[k]->kind == AttrKind::number ? kParams[k]->units : "";
-    param_rows.push_back({units.empty() ? kParams[k]->name : fmt::format("{} ({})", kParams[k]->name, units), cells});
+    param_rows.push_back(
+        {units.empty() ? kParams[k]->name : fmt::format("{} ({})", kParams[k]->name, units), cells});
   }
   for (size_t q = 0; q < std::size(kQuantities); ++q) {
     std::vector<std::string> cells;
     for (const auto& f : files)
-      cells.push_back(f.values[q] ? fmt::format(fmt::runtime(kQuantities[q].spec), *f.values[q]) : "undefined");
+      cells.push_back(f.values[q] ? fmt::format(fmt::runtime(kQuantities[q].spec), *f.values[q])
+                                  : "undefined");
     value_rows.push_back({kQuantities[q].label, cells});
   }
   size_t label_w = 24;
@@ -153,7 +158,8 @@ Comparison compare_results(const std::vector<std::string>& paths) {
   t += fmt::format("magnus compare: {} result file{}\n", n, n == 1 ? "" : "s");
   for (size_t i = 0; i < n; ++i) {
     const Param& title = files[i].params[0];
-    t += fmt::format("  {} {}{}\n", head[i], files[i].path, title.text ? "  — " + *title.text : std::string());
+    t +=
+        fmt::format("  {} {}{}\n", head[i], files[i].path, title.text ? "  — " + *title.text : std::string());
   }
   auto row = [&](const std::string& label, const std::vector<std::string>& cells) {
     std::string s = pad_right("  " + label, label_w + 2);
@@ -183,8 +189,10 @@ Comparison compare_results(const std::vector<std::string>& paths) {
   for (const auto& f : files) {
     c += csv_field(f.path) + "," + csv_field(f.params[0].text.value_or(""));
     for (size_t k : differ)
-      if (k != 0) c += "," + csv_field(f.params[k].text ? *f.params[k].text
-                                       : f.params[k].number ? fmt::format("{:.17g}", *f.params[k].number) : "");
+      if (k != 0)
+        c += "," + csv_field(f.params[k].text     ? *f.params[k].text
+                             : f.params[k].number ? fmt::format("{:.17g}", *f.params[k].number)
+                                                  : "");
     for (const auto& v : f.values) c += "," + (v ? fmt::format("{:.17g}", *v) : std::string());
     c += "\n";
   }

@@ -12,8 +12,8 @@ struct Comparison {
   std::vector<std::string> differing;  ///< names of the parameters that differ between the files
 };
 
-/// Read every file (magnus-flow results, format version 1 or 2) and compare them, through the schema table. Throws std::runtime_error with one line
-/// naming the first unreadable or foreign file.
+/// Read every file (magnus-flow results, format version 1 or 2) and compare them, through the schema table.
+/// Throws std::runtime_error with one line naming the first unreadable or foreign file.
 Comparison compare_results(const std::vector<std::string>& paths);
 
 /// `magnus compare`: print the table; write the CSV atomically when csv is not empty. csv "-" writes the

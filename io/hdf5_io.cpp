@@ -1,7 +1,7 @@
 #include "io/hdf5_io.hpp"
 
-#include <fmt/core.h>
 #include <dirent.h>
+#include <fmt/core.h>
 #include <hdf5.h>
 #include <hdf5_hl.h>
 #include <signal.h>
@@ -104,7 +104,8 @@ namespace {
 
 /// Chunked layout (whole rows, ~512 KB a chunk) with the filters: shuffle + gzip at level (if > 0),
 /// then Fletcher-32 (checked by HDF5 on every read, so a damaged file is reported, not read as numbers).
-void chunked(hid_t dcpl, const std::vector<hsize_t>& dims, size_t value_size, int level, const std::string& name) {
+void chunked(hid_t dcpl, const std::vector<hsize_t>& dims, size_t value_size, int level,
+             const std::string& name) {
   size_t count = 1;
   for (auto d : dims) count *= size_t(d);
   if (count == 0) return;
@@ -123,9 +124,9 @@ namespace {
 
 /// One chunked, checksummed dataset of count values of the memory type mem stored as file, with its units
 /// and description (the shared body of the double and int datasets).
-void write_dataset(H5Writer& w, H5Writer::id parent, const std::string& name, const std::vector<size_t>& shape,
-                   hid_t mem, hid_t file, size_t value_size, int level, const void* data, const std::string& units,
-                   const std::string& description) {
+void write_dataset(H5Writer& w, H5Writer::id parent, const std::string& name,
+                   const std::vector<size_t>& shape, hid_t mem, hid_t file, size_t value_size, int level,
+                   const void* data, const std::string& units, const std::string& description) {
   std::vector<hsize_t> dims(shape.begin(), shape.end());
   Handle space(H5Screate_simple(int(dims.size()), dims.data(), nullptr), H5Sclose);
   size_t count = 1;
@@ -143,21 +144,22 @@ void write_dataset(H5Writer& w, H5Writer::id parent, const std::string& name, co
 
 }  // namespace
 
-void H5Writer::dataset(id parent, const std::string& name, const std::vector<size_t>& shape, const double* data,
-                       const std::string& units, const std::string& description) {
-  write_dataset(*this, parent, name, shape, H5T_NATIVE_DOUBLE, H5T_NATIVE_DOUBLE, sizeof(double), compression_,
-                data, units, description);
+void H5Writer::dataset(id parent, const std::string& name, const std::vector<size_t>& shape,
+                       const double* data, const std::string& units, const std::string& description) {
+  write_dataset(*this, parent, name, shape, H5T_NATIVE_DOUBLE, H5T_NATIVE_DOUBLE, sizeof(double),
+                compression_, data, units, description);
 }
 
-void H5Writer::int_dataset(id parent, const std::string& name, const std::vector<size_t>& shape, const int* data,
-                           const std::string& units, const std::string& description) {
+void H5Writer::int_dataset(id parent, const std::string& name, const std::vector<size_t>& shape,
+                           const int* data, const std::string& units, const std::string& description) {
   // Connectivity compresses well and is read whole: always gzip level 6.
   write_dataset(*this, parent, name, shape, H5T_NATIVE_INT, H5T_STD_I32LE, sizeof(int), 6, data, units,
                 description);
 }
 
 void H5Writer::view(id parent, const std::string& name, const std::vector<size_t>& shape,
-                    const std::vector<ViewSource>& sources, const std::string& units, const std::string& description) {
+                    const std::vector<ViewSource>& sources, const std::string& units,
+                    const std::string& description) {
   std::vector<hsize_t> dims(shape.begin(), shape.end());
   Handle vspace(H5Screate_simple(int(dims.size()), dims.data(), nullptr), H5Sclose);
   Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
@@ -175,7 +177,8 @@ void H5Writer::view(id parent, const std::string& name, const std::vector<size_t
   }
   check(s, "cannot set up the view " + name);
   H5Sselect_all(vspace);
-  Handle d(H5Dcreate2(parent, name.c_str(), H5T_NATIVE_DOUBLE, vspace, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose);
+  Handle d(H5Dcreate2(parent, name.c_str(), H5T_NATIVE_DOUBLE, vspace, H5P_DEFAULT, dcpl, H5P_DEFAULT),
+           H5Dclose);
   if (d < 0) check(-1, "cannot create the view " + name);
   attr(d, "units", units);
   if (!description.empty()) attr(d, "description", description);
@@ -194,8 +197,9 @@ void H5Writer::attach_scale(const std::string& path, const std::string& scale_pa
 std::string xdmf_path(const std::string& h5_path) {
   const std::string base = base_of(h5_path);
   const auto dot = base.find_last_of('.');
-  const std::string stem = dot == std::string::npos || dot == 0 ? h5_path
-                           : h5_path.substr(0, h5_path.size() - (base.size() - dot));
+  const std::string stem = dot == std::string::npos || dot == 0
+                               ? h5_path
+                               : h5_path.substr(0, h5_path.size() - (base.size() - dot));
   return stem + ".xmf";
 }
 
@@ -243,6 +247,5 @@ void write_hdf5_atomic(const std::string& path, const std::function<void(H5Write
     throw std::runtime_error(fmt::format("cannot write '{}': {}", path, what));
   }
 }
-
 
 }  // namespace magnus

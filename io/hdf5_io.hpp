@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <functional>
 #include <map>
-#include <optional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 #include "io/atomic_file.hpp"
@@ -41,8 +41,9 @@ class H5Writer {
   };
   /// A virtual dataset (no storage of its own): a (n) or (n, k) view whose columns are whole stored
   /// datasets of n values; columns without a source read as 0.
-  void view(id parent, const std::string& name, const std::vector<size_t>& shape, const std::vector<ViewSource>& sources,
-            const std::string& units, const std::string& description = "");
+  void view(id parent, const std::string& name, const std::vector<size_t>& shape,
+            const std::vector<ViewSource>& sources, const std::string& units,
+            const std::string& description = "");
   /// A numeric attribute with its unit in the companion attribute NAME_units (format version 2).
   void attr_with_units(id obj, const char* name, double v, const std::string& units);
   /// An already written object (dataset or group) by path, to add attributes; closed with the writer.
@@ -66,7 +67,8 @@ class H5Writer {
 /// only once all are complete. Throws one line naming path; leaves no temporary behind.
 /// compression: gzip level 0–9 of the double datasets (0: none; the case key output.compression).
 void write_hdf5_atomic(const std::string& path, const std::function<void(H5Writer&)>& fill,
-                       const std::vector<std::pair<std::string, std::string>>& sidecars = {}, int compression = 0);
+                       const std::vector<std::pair<std::string, std::string>>& sidecars = {},
+                       int compression = 0);
 
 /// Write r to path (temporary name beside it, then rename) with its .xmf sidecar, format version 2
 /// (io/schema.hpp); compression: gzip level 0–9 of the stored datasets (0: none).

@@ -25,7 +25,8 @@ std::string value_text(const ResultFile& f, const std::string& obj, const std::s
   if (f.attr_is_text(obj, name)) {
     std::string v = f.attr_string(obj, name);
     const auto nl = v.find('\n');
-    if (nl != std::string::npos) v = fmt::format("({} lines of text)", std::count(v.begin(), v.end(), '\n') + 1);
+    if (nl != std::string::npos)
+      v = fmt::format("({} lines of text)", std::count(v.begin(), v.end(), '\n') + 1);
     return v;
   }
   return cell(f.attr_double(obj, name), "{:.10g}");  // no "-0"
@@ -33,13 +34,15 @@ std::string value_text(const ResultFile& f, const std::string& obj, const std::s
 
 /// The unit of obj@name: the companion NAME_units (version 2), else the schema's; "" for text.
 std::string attr_units(const ResultFile& f, const std::string& obj, const std::string& name) {
-  if (f.has_attr(obj, name + "_units") && f.attr_is_text(obj, name + "_units")) return f.attr_string(obj, name + "_units");
+  if (f.has_attr(obj, name + "_units") && f.attr_is_text(obj, name + "_units"))
+    return f.attr_string(obj, name + "_units");
   if (const AttrSpec* a = find_attribute(obj, name)) return a->units;
   return "";
 }
 
 std::string line(const std::string& name, const std::string& value, const std::string& units) {
-  return units.empty() ? fmt::format("  {:<26}{}\n", name, value) : fmt::format("  {:<26}{}  [{}]\n", name, value, units);
+  return units.empty() ? fmt::format("  {:<26}{}\n", name, value)
+                       : fmt::format("  {:<26}{}  [{}]\n", name, value, units);
 }
 
 /// Every attribute of a group: the schema's first (undefined ones marked), then any others the file holds.
@@ -59,13 +62,17 @@ std::string group_text(const ResultFile& f, const std::string& group, const char
   for (const AttrSpec& a : result_attributes()) {
     if (group != a.group || group == "/") continue;
     shown.insert(a.name);
-    if (f.has_attr(group, a.name)) s += line(a.name, value_text(f, group, a.name), a.units);
+    if (f.has_attr(group, a.name))
+      s += line(a.name, value_text(f, group, a.name), a.units);
     else if (strict && !undefined.count(a.name))  // version 2 lists every value it omits
-      throw std::runtime_error(fmt::format("'{}' is damaged or incomplete: {}@{} is missing", f.path(), group, a.name));
-    else if (a.kind != AttrKind::text) s += line(a.name, "undefined", a.units);
+      throw std::runtime_error(
+          fmt::format("'{}' is damaged or incomplete: {}@{} is missing", f.path(), group, a.name));
+    else if (a.kind != AttrKind::text)
+      s += line(a.name, "undefined", a.units);
   }
   for (const auto& name : f.attributes(group))
-    if (!shown.count(name) && !bookkeeping(name)) s += line(name, value_text(f, group, name), attr_units(f, group, name));
+    if (!shown.count(name) && !bookkeeping(name))
+      s += line(name, value_text(f, group, name), attr_units(f, group, name));
   return s;
 }
 
@@ -92,8 +99,8 @@ std::string stagnation_text(const ResultFile& f, double a) {
     }
     s += fmt::format("  {}:{}\n", exact ? "exact" : "numeric", r.empty() ? " none" : "");
     for (size_t k = 0; k < std::min(r.size(), th.size()); ++k)
-      s += fmt::format("    r = {:.8g} m ({:.6g} a), theta = {:.8g} rad ({:.4f}°)\n", r[k], a > 0 ? r[k] / a : 0.0,
-                       th[k], th[k] * 180.0 / M_PI);
+      s += fmt::format("    r = {:.8g} m ({:.6g} a), theta = {:.8g} rad ({:.4f}°)\n", r[k],
+                       a > 0 ? r[k] / a : 0.0, th[k], th[k] * 180.0 / M_PI);
   }
   return s.empty() ? s : "\nstagnation points\n" + s;
 }
@@ -102,22 +109,26 @@ std::string describe_flow(const ResultFile& f) {
   // A result has a version and its parameters: a file with only the format attribute is not one.
   const long version = f.attr_int("/", "format_version");
   if (!f.has("/parameters") || !f.has("/grid/r"))
-    throw std::runtime_error(fmt::format("'{}' is not a complete magnus result: no /parameters or /grid", f.path()));
+    throw std::runtime_error(
+        fmt::format("'{}' is not a complete magnus result: no /parameters or /grid", f.path()));
   // What every complete file holds (a damaged group can lose links silently): the grid, the surface but
   // what it lists as undefined, and (version 2) the stagnation points and a field behind every mesh view.
-  std::vector<std::string> expected = {"/grid/r", "/grid/theta", "/grid/x", "/grid/y", "/surface/theta",
-                                       "/surface/u_theta", "/surface/pressure"};
-  const std::string surface_undefined = f.has_attr("/surface", "undefined") ? f.attr_string("/surface", "undefined") : "";
-  if (surface_undefined.find("cp") == std::string::npos) expected.insert(expected.end(), {"/surface/cp", "/surface/cp_exact"});
+  std::vector<std::string> expected = {"/grid/r",        "/grid/theta",      "/grid/x",          "/grid/y",
+                                       "/surface/theta", "/surface/u_theta", "/surface/pressure"};
+  const std::string surface_undefined =
+      f.has_attr("/surface", "undefined") ? f.attr_string("/surface", "undefined") : "";
+  if (surface_undefined.find("cp") == std::string::npos)
+    expected.insert(expected.end(), {"/surface/cp", "/surface/cp_exact"});
   if (version >= 2) {
-    for (const char* p : {"/stagnation/r", "/stagnation/theta", "/stagnation/r_exact", "/stagnation/theta_exact",
-                          "/mesh/points", "/mesh/quads"})
+    for (const char* p : {"/stagnation/r", "/stagnation/theta", "/stagnation/r_exact",
+                          "/stagnation/theta_exact", "/mesh/points", "/mesh/quads"})
       expected.push_back(p);
     for (const DatasetSpec* d : field_datasets())
       if (f.has("/mesh/" + d->path.substr(8))) expected.push_back(d->path);
   }
   for (const auto& p : expected)
-    if (!f.has(p)) throw std::runtime_error(fmt::format("'{}' is damaged or incomplete: {} is missing", f.path(), p));
+    if (!f.has(p))
+      throw std::runtime_error(fmt::format("'{}' is damaged or incomplete: {} is missing", f.path(), p));
   std::string s;
   s += fmt::format("{}: magnus-flow version {} (written by magnus {})\n", f.path(), version,
                    f.attr_string("/", "software_version"));
@@ -128,7 +139,8 @@ std::string describe_flow(const ResultFile& f) {
   s += group_text(f, "/errors", "errors", version >= 2);
   s += group_text(f, "/timing", "timing", version >= 2);
   for (const char* g : {"/fields", "/surface"})
-    if (f.has_attr(g, "undefined")) s += fmt::format("\n{} undefined: {}\n", g, f.attr_string(g, "undefined"));
+    if (f.has_attr(g, "undefined"))
+      s += fmt::format("\n{} undefined: {}\n", g, f.attr_string(g, "undefined"));
   s += stagnation_text(f, f.has_attr("/parameters", "radius") ? f.attr_double("/parameters", "radius") : 0.0);
   s += "\ndatasets\n";
   size_t values = 0;
@@ -177,11 +189,13 @@ std::string describe_sweep(const ResultFile& f) {
       lo = std::min(lo, x), hi = std::max(hi, x);
     }
     const std::string units = f.has_attr(name, "units") ? f.attr_string(name, "units") : "?";
-    const std::string range = lo <= hi ? fmt::format("{:.6g} … {:.6g}", lo, hi) : std::string("all undefined");
+    const std::string range =
+        lo <= hi ? fmt::format("{:.6g} … {:.6g}", lo, hi) : std::string("all undefined");
     s += fmt::format("  {:<32}({})  [{}]  {}{}\n", name, dims_text(shape), units, range,
                      undefined ? fmt::format(" ({} undefined)", undefined) : "");
   }
-  if (f.has_attr("/sweep", "undefined")) s += fmt::format("  undefined (not stored): {}\n", f.attr_string("/sweep", "undefined"));
+  if (f.has_attr("/sweep", "undefined"))
+    s += fmt::format("  undefined (not stored): {}\n", f.attr_string("/sweep", "undefined"));
   s += fmt::format("\nchecked: {} datasets, {} values read back intact\n", all.size(), values);
   return s;
 }

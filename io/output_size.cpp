@@ -36,7 +36,8 @@ void check_output_space(const Case& c, const std::string& path) {
   for (bool on : sel.on) fields += on;
   const GridShape g = grid_shape(c.grid);
   std::optional<size_t> free_bytes = free_bytes_for(path);
-  if (const char* injected = std::getenv("MAGNUS_TEST_FREE_BYTES")) free_bytes = size_t(std::strtoull(injected, nullptr, 10));
+  if (const char* injected = std::getenv("MAGNUS_TEST_FREE_BYTES"))
+    free_bytes = size_t(std::strtoull(injected, nullptr, 10));
   if (free_bytes) check_disk_space(path, estimated_output_bytes(g.n_r, g.n_theta, fields), *free_bytes);
 }
 

@@ -11,16 +11,17 @@ namespace magnus {
 /// (the fields and the grid's x, y) + 8·(n_r + 6·n_θ) (r, θ and the surface arrays), bytes.
 size_t estimated_output_bytes(long n_r, long n_theta, int fields);
 
-/// Free bytes for an unprivileged user (statvfs f_bavail·f_frsize) in the directory of `path`; empty if unknown.
+/// Free bytes for an unprivileged user (statvfs f_bavail·f_frsize) in the directory of `path`; empty if
+/// unknown.
 std::optional<size_t> free_bytes_for(const std::string& path);
 
 /// Throws std::runtime_error (one line: the estimate and the free space) if `needed` exceeds `free_bytes`.
 void check_disk_space(const std::string& path, size_t needed, size_t free_bytes);
 
 /// The free-space check for a run's output: the estimate for the case's resolved grid against
-/// free_bytes_for(path). The environment variable MAGNUS_TEST_FREE_BYTES, when set, replaces the measured free
-/// space (the tests use it to check the refusal deterministically; it can only make the check stricter or looser,
-/// never skip it).
+/// free_bytes_for(path). The environment variable MAGNUS_TEST_FREE_BYTES, when set, replaces the measured
+/// free space (the tests use it to check the refusal deterministically; it can only make the check stricter
+/// or looser, never skip it).
 void check_output_space(const Case& c, const std::string& path);
 
 }  // namespace magnus

@@ -2,14 +2,13 @@
 
 #include <fmt/core.h>
 
+#include <toml++/toml.h>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
-#include <toml++/toml.h>
-
 
 namespace magnus {
 
@@ -25,7 +24,8 @@ std::string required_string(const toml::table& t, const char* key, const std::st
   return *v;
 }
 
-std::vector<double> number_array(const toml::table& t, const char* key, const std::string& where, bool required) {
+std::vector<double> number_array(const toml::table& t, const char* key, const std::string& where,
+                                 bool required) {
   const toml::array* a = t[key].as_array();
   if (!a) {
     if (required) fail(where, fmt::format("missing array '{}'", key));
@@ -74,14 +74,16 @@ ViscousReference parse_viscous_reference(const std::string& toml_text, const std
     const auto cl = number_array(*t, "cl", where, true);
     const auto cd = number_array(*t, "cd", where, false);
     if (alpha.empty()) fail(where, "alpha is empty");
-    if (cl.size() != alpha.size()) fail(where, fmt::format("cl has {} values for {} alpha", cl.size(), alpha.size()));
+    if (cl.size() != alpha.size())
+      fail(where, fmt::format("cl has {} values for {} alpha", cl.size(), alpha.size()));
     if (!cd.empty() && cd.size() != alpha.size())
       fail(where, fmt::format("cd has {} values for {} alpha", cd.size(), alpha.size()));
     for (size_t j = 0; j < alpha.size(); ++j) {
       ReferencePoint p;
       p.alpha = alpha[j];
       if (d.cl_sign == "magnitude") {
-        if (cl[j] < 0.0) fail(where, fmt::format("cl[{}] = {} is negative but cl_sign = \"magnitude\"", j, cl[j]));
+        if (cl[j] < 0.0)
+          fail(where, fmt::format("cl[{}] = {} is negative but cl_sign = \"magnitude\"", j, cl[j]));
         // CCW spin (α > 0) lifts towards −y in magnus's convention; CW spin towards +y.
         p.cl = (alpha[j] >= 0.0 ? -cl[j] : cl[j]) + 0.0;  // + 0.0: no −0
       } else {
@@ -98,8 +100,9 @@ ViscousReference parse_viscous_reference(const std::string& toml_text, const std
 ViscousReference load_viscous_reference(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in)
-    throw std::runtime_error(
-        fmt::format("cannot read the viscous reference data '{}' (set MAGNUS_DATA_DIR to the directory holding it)", path));
+    throw std::runtime_error(fmt::format(
+        "cannot read the viscous reference data '{}' (set MAGNUS_DATA_DIR to the directory holding it)",
+        path));
   std::ostringstream ss;
   ss << in.rdbuf();
   return parse_viscous_reference(ss.str(), path);

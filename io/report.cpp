@@ -36,8 +36,9 @@ std::string numeric_points(const FlowResult& r) {
   if (r.stagnation.empty())
     for (const auto& p : r.stagnation_exact)
       if (!p.on_surface && p.r > R)
-        return fmt::format("none: the free point lies outside the grid (exact r_s/a = {:.6g}, grid R/a = {:.6g})",
-                           p.r / a, R / a);
+        return fmt::format(
+            "none: the free point lies outside the grid (exact r_s/a = {:.6g}, grid R/a = {:.6g})", p.r / a,
+            R / a);
   return points(r.stagnation, a);
 }
 
@@ -57,28 +58,32 @@ std::string summary_text(const FlowResult& r, const std::string& output_path) {
   s += fmt::format("magnus {} — {}\n", MAGNUS_VERSION, c.title);
   const Scene& sc = c.scene;
   const bool given = sc.circulation_given, moving = sc.speed > 0.0, spinning = sc.spin != 0.0;
-  // The seed estimates lift from ω: with a given Γ and no spin it says nothing (with the spin model, ω = 0 → 0).
+  // The seed estimates lift from ω: with a given Γ and no spin it says nothing (with the spin model, ω = 0 →
+  // 0).
   const bool seed_defined = spinning || !given;
   // α = aω/U is the spin's ratio; with a given Γ the flow has the effective α_Γ = Γ/(2πaU) instead.
   std::string alpha = moving ? num(sc.spin_ratio()) : "undefined (U = 0)";
-  if (given && moving) alpha += fmt::format(", α_Γ = Γ/(2πaU) = {} (the given Γ sets the flow)",
-                                            num(sc.Gamma() / (2.0 * M_PI * sc.radius * sc.speed)));
+  if (given && moving)
+    alpha += fmt::format(", α_Γ = Γ/(2πaU) = {} (the given Γ sets the flow)",
+                         num(sc.Gamma() / (2.0 * M_PI * sc.radius * sc.speed)));
   line("case", fmt::format("a = {} m, ω = {} rad/s, U = {} m/s, α = aω/U = {}, ρ = {} kg/m³", num(sc.radius),
                            num(sc.spin), num(sc.speed), alpha, num(sc.density)));
   line("circulation", fmt::format("Γ = {} m²/s ({})", num(sc.Gamma(), "{:.8g}"),
                                   given ? "given, not from the spin" : "spin model, Γ = 2πa²ω"));
   const double R = g.outer_radius() / g.a;
-  line("grid", fmt::format("n_θ × n_r = {} × {} ({} nodes), {} spacing, R/a = {:.6g}{}, far field {}",
-                           g.n_theta, g.n_r, g.nodes(), to_string(g.spacing), R,
-                           std::fabs(R / c.grid.outer_radius - 1) > 1e-12
-                               ? fmt::format(" (asked {:.6g}, rounded up to whole square cells)", c.grid.outer_radius) : "",
-                           to_string(c.grid.far_field)));
+  line("grid",
+       fmt::format("n_θ × n_r = {} × {} ({} nodes), {} spacing, R/a = {:.6g}{}, far field {}", g.n_theta,
+                   g.n_r, g.nodes(), to_string(g.spacing), R,
+                   std::fabs(R / c.grid.outer_radius - 1) > 1e-12
+                       ? fmt::format(" (asked {:.6g}, rounded up to whole square cells)", c.grid.outer_radius)
+                       : "",
+                   to_string(c.grid.far_field)));
   if (!r.info.grid_choice.empty()) line("", r.info.grid_choice);
-  line("solver", fmt::format("{}, {} stencil, {} thread{}", r.info.method, to_string(c.solver.stencil), r.info.threads,
-                             r.info.threads == 1 ? "" : "s"));
-  line("timing", fmt::format("assemble {}, factor {}, solve {} (ψ_U and ψ_Γ), post-process {}; total {}", ms(r.timing.assemble_s),
-                             ms(r.timing.factor_s), ms(r.timing.solve_s), ms(r.timing.postproc_s),
-                             ms(r.timing.total_s)));
+  line("solver", fmt::format("{}, {} stencil, {} thread{}", r.info.method, to_string(c.solver.stencil),
+                             r.info.threads, r.info.threads == 1 ? "" : "s"));
+  line("timing", fmt::format("assemble {}, factor {}, solve {} (ψ_U and ψ_Γ), post-process {}; total {}",
+                             ms(r.timing.assemble_s), ms(r.timing.factor_s), ms(r.timing.solve_s),
+                             ms(r.timing.postproc_s), ms(r.timing.total_s)));
   s += "\n";
   line("lift F_y", fmt::format("{} N/m   (Kutta–Joukowski −ρUΓ = {} N/m)", num(f.lift, "{:.10g}"),
                                num(f.lift_kutta_joukowski, "{:.10g}")));
@@ -88,39 +93,47 @@ std::string summary_text(const FlowResult& r, const std::string& output_path) {
     line("C_L", fmt::format("numeric {}   Kutta–Joukowski {}   seed estimate {}{}", num(*f.cl, "{:.10g}"),
                             num(kj, "{:.10g}"), seed_defined ? num(seed, "{:.10g}") : "undefined (ω = 0)",
                             given && spinning ? " (−4α: from ω, not from the given Γ)" : ""));
-    line("", fmt::format("numeric/KJ − 1 = {}   KJ/seed = {}",
-                         kj != 0 ? num(*f.cl / kj - 1, "{:.3e}") : "undefined (Γ = 0)",
-                         !spinning ? "undefined (ω = 0)"
-                         : given   ? fmt::format("{} (= α_Γ·π/(2α): π/2 only when Γ = 2πa²ω)", num(kj / seed, "{:.6f}"))
-                                   : fmt::format("{} (π/2 = {:.6f})", num(kj / seed, "{:.6f}"), M_PI / 2)));
+    line("", fmt::format(
+                 "numeric/KJ − 1 = {}   KJ/seed = {}",
+                 kj != 0 ? num(*f.cl / kj - 1, "{:.3e}") : "undefined (Γ = 0)",
+                 !spinning ? "undefined (ω = 0)"
+                 : given ? fmt::format("{} (= α_Γ·π/(2α): π/2 only when Γ = 2πa²ω)", num(kj / seed, "{:.6f}"))
+                         : fmt::format("{} (π/2 = {:.6f})", num(kj / seed, "{:.6f}"), M_PI / 2)));
     line("C_D", num(*f.cd, "{:.3e}"));
   } else {
     line("C_L, C_D", "undefined (U = 0: no dynamic pressure to scale by)");
   }
-  line("ΔP top−bottom", fmt::format("numeric {} Pa   exact 4ρUΓ/(2πa) = {} Pa   seed 2ρUaω = {}",
-                                    num(f.delta_p_top_bottom, "{:.8g}"), num(f.delta_p_top_bottom_exact, "{:.8g}"),
-                                    seed_defined ? num(f.delta_p_seed_estimate, "{:.8g}") + " Pa" : "undefined (ω = 0)"));
+  line("ΔP top−bottom",
+       fmt::format("numeric {} Pa   exact 4ρUΓ/(2πa) = {} Pa   seed 2ρUaω = {}",
+                   num(f.delta_p_top_bottom, "{:.8g}"), num(f.delta_p_top_bottom_exact, "{:.8g}"),
+                   seed_defined ? num(f.delta_p_seed_estimate, "{:.8g}") + " Pa" : "undefined (ω = 0)"));
   if (f.delta_p_seed_estimate != 0.0) {
     const double ratio = f.delta_p_top_bottom / f.delta_p_seed_estimate;
-    line("", given ? fmt::format("numeric/seed = {}: the given Γ, not the spin, sets ΔP (exact 2α_Γ/α)", num(ratio, "{:.6f}"))
+    line("", given ? fmt::format("numeric/seed = {}: the given Γ, not the spin, sets ΔP (exact 2α_Γ/α)",
+                                 num(ratio, "{:.6f}"))
                    : fmt::format("numeric/seed = {}: potential flow doubles the shoulder speed (2U, not U)",
                                  num(ratio, "{:.6f}")));
   }
-  const std::string s_exact = !given ? fmt::format("exact 2πρa² = {} kg/m", fmt_opt(f.magnus_S_exact, "{:.8g}"))
-                              : spinning ? fmt::format("exact ρΓ/ω = {} kg/m (the given Γ)", fmt_opt(f.magnus_S_exact, "{:.8g}"))
-                                         : "exact ρΓ/ω = undefined (ω = 0)";
+  const std::string s_exact =
+      !given     ? fmt::format("exact 2πρa² = {} kg/m", fmt_opt(f.magnus_S_exact, "{:.8g}"))
+      : spinning ? fmt::format("exact ρΓ/ω = {} kg/m (the given Γ)", fmt_opt(f.magnus_S_exact, "{:.8g}"))
+                 : "exact ρΓ/ω = undefined (ω = 0)";
   line("Magnus S", fmt::format("numeric {}{}   {}   seed 4ρa² = {} kg/m", fmt_opt(f.magnus_S, "{:.8g}"),
-                               f.magnus_S ? " kg/m" : !moving ? " (U = 0)" : " (ω = 0)", s_exact,
-                               num(4.0 * sc.density * sc.radius * sc.radius, "{:.8g}")));
+                               f.magnus_S ? " kg/m"
+                               : !moving  ? " (U = 0)"
+                                          : " (ω = 0)",
+                               s_exact, num(4.0 * sc.density * sc.radius * sc.radius, "{:.8g}")));
   line("stagnation", "numeric " + numeric_points(r));
   line("", "exact   " + points(r.stagnation_exact, sc.radius));
   s += "\n";
-  line("errors", fmt::format("ψ max rel {}   Cp surface max abs {}   C_L rel {}   Γ rel {}",
-                             num(r.errors.psi_max_rel, "{:.3e}"), fmt_opt(r.errors.cp_surface_max_abs, "{:.3e}"),
-                             fmt_opt(r.errors.cl_rel, "{:.3e}"), num(r.errors.circulation_rel, "{:.3e}")));
+  line("errors",
+       fmt::format("ψ max rel {}   Cp surface max abs {}   C_L rel {}   Γ rel {}",
+                   num(r.errors.psi_max_rel, "{:.3e}"), fmt_opt(r.errors.cp_surface_max_abs, "{:.3e}"),
+                   fmt_opt(r.errors.cl_rel, "{:.3e}"), num(r.errors.circulation_rel, "{:.3e}")));
   if (r.info.estimated_cl_rel >= 0.0)
     line("", fmt::format("C_L rel estimated (a posteriori) {:.3e}", r.info.estimated_cl_rel));
-  if (!output_path.empty()) line("output", fmt::format("{} (+ {} for ParaView)", output_path, xdmf_path(output_path)));
+  if (!output_path.empty())
+    line("output", fmt::format("{} (+ {} for ParaView)", output_path, xdmf_path(output_path)));
   return s;
 }
 

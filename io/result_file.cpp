@@ -16,7 +16,6 @@ namespace magnus {
 using h5::fail;
 using h5::Handle;
 
-
 ResultFile::ResultFile(const std::string& path) : ResultFile(path, std::vector<std::string>{"magnus-flow"}) {}
 
 ResultFile::ResultFile(const std::string& path, const std::vector<std::string>& formats) : path_(path) {
@@ -25,14 +24,16 @@ ResultFile::ResultFile(const std::string& path, const std::vector<std::string>& 
   if (::stat(path.c_str(), &st) != 0) fail(fmt::format("cannot read '{}': {}", path, std::strerror(errno)));
   if (S_ISDIR(st.st_mode)) fail(fmt::format("'{}' is a directory, not a result file", path));
   if (!S_ISREG(st.st_mode)) fail(fmt::format("'{}' is not a regular file", path));
-  if (::access(path.c_str(), R_OK) != 0) fail(fmt::format("cannot read '{}': {}", path, std::strerror(errno)));
+  if (::access(path.c_str(), R_OK) != 0)
+    fail(fmt::format("cannot read '{}': {}", path, std::strerror(errno)));
   if (st.st_size == 0) fail(fmt::format("'{}' is empty, not a result file", path));
   if (H5Fis_hdf5(path.c_str()) <= 0) fail(fmt::format("'{}' is not an HDF5 file (or it is truncated)", path));
   id_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (id_ < 0) fail(fmt::format("'{}' is a damaged or truncated HDF5 file: it cannot be opened", path));
   std::string format;
   try {
-    if (!has_attr("/", "format")) fail(fmt::format("'{}' is not a magnus result: no 'format' attribute", path));
+    if (!has_attr("/", "format"))
+      fail(fmt::format("'{}' is not a magnus result: no 'format' attribute", path));
     format = attr_string("/", "format");
     if (std::find(formats.begin(), formats.end(), format) == formats.end())
       fail(fmt::format("'{}' is not a magnus result: format is '{}'", path, format));
@@ -64,8 +65,9 @@ namespace {
 
 /// Opens object@name and checks that it holds exactly one value of type class cls (a foreign or damaged
 /// file may hold an array there: reading it into one value would overrun the buffer).
-hid_t open_single_attr(hid_t file, const std::string& path, const std::string& object, const std::string& name,
-                       std::initializer_list<H5T_class_t> classes, const char* what) {
+hid_t open_single_attr(hid_t file, const std::string& path, const std::string& object,
+                       const std::string& name, std::initializer_list<H5T_class_t> classes,
+                       const char* what) {
   const hid_t a = H5Aopen_by_name(file, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
   if (a < 0) fail(fmt::format("'{}': attribute {}@{} cannot be read (damaged file?)", path, object, name));
   Handle space(H5Aget_space(a), H5Sclose);
@@ -87,7 +89,8 @@ std::vector<double> ResultFile::dataset(const std::string& name, std::vector<siz
   if (d < 0) fail(fmt::format("'{}': cannot open dataset {}", path_, name));
   Handle type(H5Dget_type(d), H5Tclose);
   const H5T_class_t cls = type < 0 ? H5T_NO_CLASS : H5Tget_class(type);
-  if (cls != H5T_FLOAT && cls != H5T_INTEGER) fail(fmt::format("'{}': dataset {} does not hold numbers", path_, name));
+  if (cls != H5T_FLOAT && cls != H5T_INTEGER)
+    fail(fmt::format("'{}': dataset {} does not hold numbers", path_, name));
   Handle space(H5Dget_space(d), H5Sclose);
   const int rank = space < 0 ? -1 : H5Sget_simple_extent_ndims(space);
   if (rank < 0 || rank > 4) fail(fmt::format("'{}': dataset {} has a bad shape", path_, name));
@@ -101,13 +104,16 @@ std::vector<double> ResultFile::dataset(const std::string& name, std::vector<siz
   const size_t limit = std::max<size_t>(size_t(file_size), size_t(1) << 20);
   size_t count = 1;
   for (auto v : dims) {
-    if (v != 0 && count > limit / v) fail(fmt::format("'{}': dataset {} claims more values than the file holds (damaged file?)", path_, name));
+    if (v != 0 && count > limit / v)
+      fail(fmt::format("'{}': dataset {} claims more values than the file holds (damaged file?)", path_,
+                       name));
     count *= size_t(v);
   }
   if (shape) shape->assign(dims.begin(), dims.end());
   std::vector<double> out(count);
   if (count > 0 && H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
-    fail(fmt::format("'{}': dataset {} cannot be read: the file is damaged (checksum or structure)", path_, name));
+    fail(fmt::format("'{}': dataset {} cannot be read: the file is damaged (checksum or structure)", path_,
+                     name));
   return out;
 }
 
@@ -136,7 +142,8 @@ std::string ResultFile::attr_string(const std::string& object, const std::string
   if (H5Tis_variable_str(type) > 0) {
     Handle mem(H5Tcopy(H5T_C_S1), H5Tclose);
     char* p = nullptr;
-    if (H5Tset_size(mem, H5T_VARIABLE) < 0 || H5Tset_cset(mem, H5Tget_cset(type)) < 0 || H5Aread(a, mem, &p) < 0)
+    if (H5Tset_size(mem, H5T_VARIABLE) < 0 || H5Tset_cset(mem, H5Tget_cset(type)) < 0 ||
+        H5Aread(a, mem, &p) < 0)
       fail(fmt::format("'{}': cannot read {}@{}", path_, object, name));
     if (!p) return "";
     std::string s(p);
@@ -144,7 +151,8 @@ std::string ResultFile::attr_string(const std::string& object, const std::string
     return s;
   }
   const size_t n = H5Tget_size(type);
-  if (n == 0 || n > (size_t(64) << 20)) fail(fmt::format("'{}': attribute {}@{} has a bad size", path_, object, name));
+  if (n == 0 || n > (size_t(64) << 20))
+    fail(fmt::format("'{}': attribute {}@{} has a bad size", path_, object, name));
   std::string s(n, '\0');
   if (H5Aread(a, type, s.data()) < 0) fail(fmt::format("'{}': cannot read {}@{}", path_, object, name));
   s.resize(std::strlen(s.c_str()));

@@ -22,14 +22,16 @@ std::vector<StagnationPoint> read_points(const ResultFile& f, bool exact, double
   if (f.has("/stagnation/r" + suffix) && f.has("/stagnation/theta" + suffix)) {
     r = f.dataset("/stagnation/r" + suffix);
     th = f.dataset("/stagnation/theta" + suffix);
-    if (r.size() != th.size()) fail(fmt::format("'{}': /stagnation/r{} and theta{} differ in length", f.path(), suffix, suffix));
+    if (r.size() != th.size())
+      fail(fmt::format("'{}': /stagnation/r{} and theta{} differ in length", f.path(), suffix, suffix));
   } else {
     const std::string name = exact ? "/stagnation/exact" : "/stagnation/numeric";
     if (!f.has(name)) return {};
     std::vector<size_t> shape;
     const auto v = f.dataset(name, &shape);
     if (v.empty()) return {};
-    if (shape.size() != 2 || shape[1] != 2) fail(fmt::format("'{}': {} is not a (k, 2) table of (r, theta)", f.path(), name));
+    if (shape.size() != 2 || shape[1] != 2)
+      fail(fmt::format("'{}': {} is not a (k, 2) table of (r, theta)", f.path(), name));
     for (size_t k = 0; k < shape[0]; ++k) r.push_back(v[2 * k]), th.push_back(v[2 * k + 1]);
   }
   std::vector<StagnationPoint> out;
@@ -46,11 +48,14 @@ FlowResult read_result(const std::string& path) {
   // Every attribute of the schema the file holds (versions 1 and 2 share the names).
   for (const AttrSpec& a : result_attributes()) {
     if (!f.has_attr(a.group, a.name)) continue;
-    if (a.kind == AttrKind::text && a.set_text) a.set_text(r, f.attr_string(a.group, a.name));
-    else if (a.kind != AttrKind::text && a.set_number) a.set_number(r, f.attr_double(a.group, a.name));
+    if (a.kind == AttrKind::text && a.set_text)
+      a.set_text(r, f.attr_string(a.group, a.name));
+    else if (a.kind != AttrKind::text && a.set_number)
+      a.set_number(r, f.attr_double(a.group, a.name));
   }
   for (const char* required : {"radius", "speed", "spin", "density", "pressure_inf", "circulation"})
-    if (!f.has_attr("/parameters", required)) fail(fmt::format("'{}': /parameters has no attribute '{}'", path, required));
+    if (!f.has_attr("/parameters", required))
+      fail(fmt::format("'{}': /parameters has no attribute '{}'", path, required));
   if (!(c.scene.radius > 0.0)) fail(fmt::format("'{}': /parameters radius is not positive", path));
 
   PolarGrid& g = r.grid;

@@ -44,8 +44,10 @@ void write_file(const FlowResult& r, H5Writer& w) {
       undefined[a.group].push_back(a.name);
       continue;
     }
-    if (a.kind == AttrKind::integer) w.attr(g, a.name, long(*v));
-    else w.attr(g, a.name, *v);
+    if (a.kind == AttrKind::integer)
+      w.attr(g, a.name, long(*v));
+    else
+      w.attr(g, a.name, *v);
     w.attr(g, units_attribute(a.name).c_str(), a.units);
   }
 
@@ -57,12 +59,14 @@ void write_file(const FlowResult& r, H5Writer& w) {
     const std::string name = d.path.substr(d.path.rfind('/') + 1);
     const bool is_field = d.path.rfind("/fields/", 0) == 0;
     if (v.empty() && d.shape != DataShape::points) {
-      // A field not asked for is simply absent; one asked for (or a surface value) that is empty is undefined.
+      // A field not asked for is simply absent; one asked for (or a surface value) that is empty is
+      // undefined.
       if (!is_field || selected.has(name)) undefined[group_of(d.path)].push_back(name);
       continue;
     }
     for (double x : v)
-      if (!std::isfinite(x)) throw std::runtime_error(fmt::format("{} holds a non-finite value: not written", d.path));
+      if (!std::isfinite(x))
+        throw std::runtime_error(fmt::format("{} holds a non-finite value: not written", d.path));
     std::vector<size_t> shape = {v.size()};
     if (d.shape == DataShape::grid) shape = {nr, nt};
     if (shape[0] * (shape.size() > 1 ? shape[1] : 1) != v.size())
@@ -89,8 +93,9 @@ void write_file(const FlowResult& r, H5Writer& w) {
 }  // namespace
 
 void write_result(const FlowResult& r, const std::string& path, int compression) {
-  write_hdf5_atomic(path, [&](H5Writer& w) { write_file(r, w); }, {{xdmf_path(path), xdmf_text(r, base_of(path))}},
-                    compression);
+  write_hdf5_atomic(
+      path, [&](H5Writer& w) { write_file(r, w); }, {{xdmf_path(path), xdmf_text(r, base_of(path))}},
+      compression);
 }
 
 }  // namespace magnus

@@ -48,123 +48,183 @@ std::vector<AttrSpec> make_attributes() {
       text("/", "software_version", "magnus version that wrote the file",
            [](const FlowResult&) { return std::string(MAGNUS_VERSION); }),
       text("/", "model", "flow model: potential", [](const FlowResult&) { return std::string("potential"); }),
-      text("/", "case", "the resolved case as TOML", [](const FlowResult& r) { return r.c.source_text; },
-           [](FlowResult& r, const std::string& v) { r.c.source_text = v; }),
-      text("/", "title", "the case's title", [](const FlowResult& r) { return r.c.title; },
-           [](FlowResult& r, const std::string& v) { r.c.title = v; }),
+      text(
+          "/", "case", "the resolved case as TOML", [](const FlowResult& r) { return r.c.source_text; },
+          [](FlowResult& r, const std::string& v) { r.c.source_text = v; }),
+      text(
+          "/", "title", "the case's title", [](const FlowResult& r) { return r.c.title; },
+          [](FlowResult& r, const std::string& v) { r.c.title = v; }),
 
-      num(P, "radius", "m", "cylinder radius a", [](const FlowResult& r) { return opt(r.c.scene.radius); },
+      num(
+          P, "radius", "m", "cylinder radius a", [](const FlowResult& r) { return opt(r.c.scene.radius); },
           [](FlowResult& r, double v) { r.c.scene.radius = v; }),
-      num(P, "spin", "rad/s", "spin ω, counter-clockwise positive", [](const FlowResult& r) { return opt(r.c.scene.spin); },
+      num(
+          P, "spin", "rad/s", "spin ω, counter-clockwise positive",
+          [](const FlowResult& r) { return opt(r.c.scene.spin); },
           [](FlowResult& r, double v) { r.c.scene.spin = v; }),
-      num(P, "spin_ratio", "1", "spin ratio α = aω/U (undefined when U = 0)", [](const FlowResult& r) {
-        return r.c.scene.speed > 0.0 ? opt(r.c.scene.spin_ratio()) : std::nullopt;
-      }),
-      num(P, "speed", "m/s", "freestream speed U towards +x", [](const FlowResult& r) { return opt(r.c.scene.speed); },
+      num(P, "spin_ratio", "1", "spin ratio α = aω/U (undefined when U = 0)",
+          [](const FlowResult& r) {
+            return r.c.scene.speed > 0.0 ? opt(r.c.scene.spin_ratio()) : std::nullopt;
+          }),
+      num(
+          P, "speed", "m/s", "freestream speed U towards +x",
+          [](const FlowResult& r) { return opt(r.c.scene.speed); },
           [](FlowResult& r, double v) { r.c.scene.speed = v; }),
-      num(P, "density", "kg/m^3", "fluid density ρ", [](const FlowResult& r) { return opt(r.c.scene.density); },
+      num(
+          P, "density", "kg/m^3", "fluid density ρ",
+          [](const FlowResult& r) { return opt(r.c.scene.density); },
           [](FlowResult& r, double v) { r.c.scene.density = v; }),
-      num(P, "pressure_inf", "Pa", "freestream pressure p∞", [](const FlowResult& r) { return opt(r.c.scene.pressure_inf); },
+      num(
+          P, "pressure_inf", "Pa", "freestream pressure p∞",
+          [](const FlowResult& r) { return opt(r.c.scene.pressure_inf); },
           [](FlowResult& r, double v) { r.c.scene.pressure_inf = v; }),
-      num(P, "circulation", "m^2/s", "circulation Γ (2πa²ω for the spin model)",
+      num(
+          P, "circulation", "m^2/s", "circulation Γ (2πa²ω for the spin model)",
           [](const FlowResult& r) { return opt(r.c.scene.Gamma()); },
           [](FlowResult& r, double v) { r.c.scene.circulation_value = v; }),
-      text(P, "circulation_model", "\"spin\" (Γ = 2πa²ω) or \"given\"",
-           [](const FlowResult& r) { return std::string(r.c.scene.circulation_given ? "given" : "spin"); },
-           [](FlowResult& r, const std::string& v) { r.c.scene.circulation_given = v == "given"; }),
+      text(
+          P, "circulation_model", "\"spin\" (Γ = 2πa²ω) or \"given\"",
+          [](const FlowResult& r) { return std::string(r.c.scene.circulation_given ? "given" : "spin"); },
+          [](FlowResult& r, const std::string& v) { r.c.scene.circulation_given = v == "given"; }),
       num(P, "outer_radius", "1", "outer radius of the grid over a, R/a (as built)",
           [](const FlowResult& r) { return opt(r.grid.outer_radius() / r.grid.a); }),
-      num(P, "outer_radius_requested", "1", "outer radius over a asked for by the case",
+      num(
+          P, "outer_radius_requested", "1", "outer radius over a asked for by the case",
           [](const FlowResult& r) { return opt(r.c.grid.outer_radius); },
           [](FlowResult& r, double v) { r.c.grid.outer_radius = v; }),
-      text(P, "far_field", "far-field condition: exact or freestream",
-           [](const FlowResult& r) { return std::string(to_string(r.c.grid.far_field)); },
-           [](FlowResult& r, const std::string& v) { r.c.grid.far_field = v == "freestream" ? FarField::freestream : FarField::exact; }),
-      text(P, "spacing", "radial spacing: geometric or uniform",
-           [](const FlowResult& r) { return std::string(to_string(r.c.grid.spacing)); },
-           [](FlowResult& r, const std::string& v) { r.c.grid.spacing = v == "uniform" ? Spacing::uniform : Spacing::geometric; }),
+      text(
+          P, "far_field", "far-field condition: exact or freestream",
+          [](const FlowResult& r) { return std::string(to_string(r.c.grid.far_field)); },
+          [](FlowResult& r, const std::string& v) {
+            r.c.grid.far_field = v == "freestream" ? FarField::freestream : FarField::exact;
+          }),
+      text(
+          P, "spacing", "radial spacing: geometric or uniform",
+          [](const FlowResult& r) { return std::string(to_string(r.c.grid.spacing)); },
+          [](FlowResult& r, const std::string& v) {
+            r.c.grid.spacing = v == "uniform" ? Spacing::uniform : Spacing::geometric;
+          }),
       integer(P, "n_r", "radial grid points", [](const FlowResult& r) { return opt(double(r.grid.n_r)); }),
-      integer(P, "n_theta", "angular grid points", [](const FlowResult& r) { return opt(double(r.grid.n_theta)); }),
-      text(P, "method", "linear solver that ran: fft or cholmod", [](const FlowResult& r) { return r.info.method; },
-           [](FlowResult& r, const std::string& v) { r.info.method = v; }),
-      text(P, "stencil", "finite-difference stencil: 5-point or 9-point",
-           [](const FlowResult& r) { return std::string(to_string(r.c.solver.stencil)); },
-           [](FlowResult& r, const std::string& v) {
-             r.c.solver.stencil = v == "9-point" ? StencilKind::nine_point : StencilKind::five_point;
-           }),
+      integer(P, "n_theta", "angular grid points",
+              [](const FlowResult& r) { return opt(double(r.grid.n_theta)); }),
+      text(
+          P, "method", "linear solver that ran: fft or cholmod",
+          [](const FlowResult& r) { return r.info.method; },
+          [](FlowResult& r, const std::string& v) { r.info.method = v; }),
+      text(
+          P, "stencil", "finite-difference stencil: 5-point or 9-point",
+          [](const FlowResult& r) { return std::string(to_string(r.c.solver.stencil)); },
+          [](FlowResult& r, const std::string& v) {
+            r.c.solver.stencil = v == "9-point" ? StencilKind::nine_point : StencilKind::five_point;
+          }),
 
-      row(num(F, "lift", "N/m", "lift F_y per unit span, numeric", [](const FlowResult& r) { return opt(r.forces.lift); },
+      row(num(
+              F, "lift", "N/m", "lift F_y per unit span, numeric",
+              [](const FlowResult& r) { return opt(r.forces.lift); },
               [](FlowResult& r, double v) { r.forces.lift = v; }),
           "lift F_y (N/m)", "lift_N_m", "{:.10g}"),
-      row(num(F, "drag", "N/m", "drag F_x per unit span, numeric", [](const FlowResult& r) { return opt(r.forces.drag); },
+      row(num(
+              F, "drag", "N/m", "drag F_x per unit span, numeric",
+              [](const FlowResult& r) { return opt(r.forces.drag); },
               [](FlowResult& r, double v) { r.forces.drag = v; }),
           "drag F_x (N/m)", "drag_N_m", "{:.3g}"),
-      row(num(F, "cl", "1", "lift coefficient F_y/(½ρU²·2a) (undefined when U = 0)",
-              [](const FlowResult& r) { return r.forces.cl; }, [](FlowResult& r, double v) { r.forces.cl = v; }),
+      row(num(
+              F, "cl", "1", "lift coefficient F_y/(½ρU²·2a) (undefined when U = 0)",
+              [](const FlowResult& r) { return r.forces.cl; },
+              [](FlowResult& r, double v) { r.forces.cl = v; }),
           "C_L numeric", "cl", "{:.10g}"),
-      row(num(F, "cd", "1", "drag coefficient F_x/(½ρU²·2a) (undefined when U = 0)",
-              [](const FlowResult& r) { return r.forces.cd; }, [](FlowResult& r, double v) { r.forces.cd = v; }),
+      row(num(
+              F, "cd", "1", "drag coefficient F_x/(½ρU²·2a) (undefined when U = 0)",
+              [](const FlowResult& r) { return r.forces.cd; },
+              [](FlowResult& r, double v) { r.forces.cd = v; }),
           "C_D", "cd", "{:.3e}"),
-      row(num(F, "cl_kutta_joukowski", "1", "Kutta–Joukowski lift coefficient −Γ/(Ua)",
+      row(num(
+              F, "cl_kutta_joukowski", "1", "Kutta–Joukowski lift coefficient −Γ/(Ua)",
               [](const FlowResult& r) { return r.forces.cl_kutta_joukowski; },
               [](FlowResult& r, double v) { r.forces.cl_kutta_joukowski = v; }),
           "C_L Kutta–Joukowski", "cl_kutta_joukowski", "{:.10g}"),
-      row(num(F, "cl_seed_estimate", "1", "seed estimate of the lift coefficient −4aω/U",
+      row(num(
+              F, "cl_seed_estimate", "1", "seed estimate of the lift coefficient −4aω/U",
               [](const FlowResult& r) { return r.forces.cl_seed_estimate; },
               [](FlowResult& r, double v) { r.forces.cl_seed_estimate = v; }),
           "C_L seed estimate", "cl_seed_estimate", "{:.10g}"),
-      num(F, "lift_kutta_joukowski", "N/m", "Kutta–Joukowski lift −ρUΓ",
+      num(
+          F, "lift_kutta_joukowski", "N/m", "Kutta–Joukowski lift −ρUΓ",
           [](const FlowResult& r) { return opt(r.forces.lift_kutta_joukowski); },
           [](FlowResult& r, double v) { r.forces.lift_kutta_joukowski = v; }),
-      row(num(F, "delta_p_top_bottom", "Pa", "p(a, 90°) − p(a, 270°), numeric",
+      row(num(
+              F, "delta_p_top_bottom", "Pa", "p(a, 90°) − p(a, 270°), numeric",
               [](const FlowResult& r) { return opt(r.forces.delta_p_top_bottom); },
               [](FlowResult& r, double v) { r.forces.delta_p_top_bottom = v; }),
           "ΔP top−bottom (Pa)", "delta_p_top_bottom_Pa", "{:.8g}"),
-      num(F, "delta_p_top_bottom_exact", "Pa", "exact top − bottom pressure difference 4ρUΓ/(2πa)",
+      num(
+          F, "delta_p_top_bottom_exact", "Pa", "exact top − bottom pressure difference 4ρUΓ/(2πa)",
           [](const FlowResult& r) { return opt(r.forces.delta_p_top_bottom_exact); },
           [](FlowResult& r, double v) { r.forces.delta_p_top_bottom_exact = v; }),
-      row(num(F, "delta_p_seed_estimate", "Pa", "seed estimate of the pressure difference 2ρUaω",
+      row(num(
+              F, "delta_p_seed_estimate", "Pa", "seed estimate of the pressure difference 2ρUaω",
               [](const FlowResult& r) { return opt(r.forces.delta_p_seed_estimate); },
               [](FlowResult& r, double v) { r.forces.delta_p_seed_estimate = v; }),
           "ΔP seed 2ρUaω (Pa)", "delta_p_seed_estimate_Pa", "{:.8g}"),
-      num(F, "circulation_measured", "m^2/s", "∮ u_θ a dθ on the body, numeric",
+      num(
+          F, "circulation_measured", "m^2/s", "∮ u_θ a dθ on the body, numeric",
           [](const FlowResult& r) { return opt(r.forces.circulation_measured); },
           [](FlowResult& r, double v) { r.forces.circulation_measured = v; }),
-      num(F, "magnus_S", "kg/m", "Magnus coefficient S = −F_y/(Uω) (undefined when U = 0 or ω = 0)",
-          [](const FlowResult& r) { return r.forces.magnus_S; }, [](FlowResult& r, double v) { r.forces.magnus_S = v; }),
-      num(F, "magnus_S_exact", "kg/m",
+      num(
+          F, "magnus_S", "kg/m", "Magnus coefficient S = −F_y/(Uω) (undefined when U = 0 or ω = 0)",
+          [](const FlowResult& r) { return r.forces.magnus_S; },
+          [](FlowResult& r, double v) { r.forces.magnus_S = v; }),
+      num(
+          F, "magnus_S_exact", "kg/m",
           "exact Magnus coefficient: 2πρa² (spin model), ρΓ/ω (given Γ; undefined when ω = 0)",
           [](const FlowResult& r) { return r.forces.magnus_S_exact; },
           [](FlowResult& r, double v) { r.forces.magnus_S_exact = v; }),
 
-      row(num(E, "psi_max_rel", "1", "max|ψ − ψ_exact| / max|ψ_exact|", [](const FlowResult& r) { return opt(r.errors.psi_max_rel); },
+      row(num(
+              E, "psi_max_rel", "1", "max|ψ − ψ_exact| / max|ψ_exact|",
+              [](const FlowResult& r) { return opt(r.errors.psi_max_rel); },
               [](FlowResult& r, double v) { r.errors.psi_max_rel = v; }),
           "error ψ max rel", "psi_max_rel", "{:.3e}"),
-      row(num(E, "cp_surface_max_abs", "1", "max|Cp − Cp_exact| on r = a (undefined when U = 0)",
+      row(num(
+              E, "cp_surface_max_abs", "1", "max|Cp − Cp_exact| on r = a (undefined when U = 0)",
               [](const FlowResult& r) { return r.errors.cp_surface_max_abs; },
               [](FlowResult& r, double v) { r.errors.cp_surface_max_abs = v; }),
           "error Cp surface max abs", "cp_surface_max_abs", "{:.3e}"),
-      row(num(E, "cl_rel", "1", "|F_y − F_y,KJ| / |F_y,KJ| (undefined when U = 0)",
+      row(num(
+              E, "cl_rel", "1", "|F_y − F_y,KJ| / |F_y,KJ| (undefined when U = 0)",
               [](const FlowResult& r) { return r.errors.cl_rel; },
               [](FlowResult& r, double v) { r.errors.cl_rel = v; }),
           "error C_L rel", "cl_rel", "{:.3e}"),
-      num(E, "circulation_rel", "1", "|Γ_measured − Γ| / |Γ| (over 2πaU when Γ = 0)",
+      num(
+          E, "circulation_rel", "1", "|Γ_measured − Γ| / |Γ| (over 2πaU when Γ = 0)",
           [](const FlowResult& r) { return opt(r.errors.circulation_rel); },
           [](FlowResult& r, double v) { r.errors.circulation_rel = v; }),
-      num(E, "cl_rel_estimated", "1", "a-posteriori estimate of cl_rel (tolerance mode only)",
-          [](const FlowResult& r) { return r.info.estimated_cl_rel >= 0.0 ? opt(r.info.estimated_cl_rel) : std::nullopt; },
+      num(
+          E, "cl_rel_estimated", "1", "a-posteriori estimate of cl_rel (tolerance mode only)",
+          [](const FlowResult& r) {
+            return r.info.estimated_cl_rel >= 0.0 ? opt(r.info.estimated_cl_rel) : std::nullopt;
+          },
           [](FlowResult& r, double v) { r.info.estimated_cl_rel = v; }),
 
-      row(num(T, "total_s", "s", "wall clock, whole run", [](const FlowResult& r) { return opt(r.timing.total_s); },
+      row(num(
+              T, "total_s", "s", "wall clock, whole run",
+              [](const FlowResult& r) { return opt(r.timing.total_s); },
               [](FlowResult& r, double v) { r.timing.total_s = v; }),
           "time total (s)", "total_s", "{:.3g}"),
-      num(T, "assemble_s", "s", "wall clock, assembling", [](const FlowResult& r) { return opt(r.timing.assemble_s); },
+      num(
+          T, "assemble_s", "s", "wall clock, assembling",
+          [](const FlowResult& r) { return opt(r.timing.assemble_s); },
           [](FlowResult& r, double v) { r.timing.assemble_s = v; }),
-      num(T, "factor_s", "s", "wall clock, factorization", [](const FlowResult& r) { return opt(r.timing.factor_s); },
+      num(
+          T, "factor_s", "s", "wall clock, factorization",
+          [](const FlowResult& r) { return opt(r.timing.factor_s); },
           [](FlowResult& r, double v) { r.timing.factor_s = v; }),
-      num(T, "solve_s", "s", "wall clock, solving", [](const FlowResult& r) { return opt(r.timing.solve_s); },
+      num(
+          T, "solve_s", "s", "wall clock, solving", [](const FlowResult& r) { return opt(r.timing.solve_s); },
           [](FlowResult& r, double v) { r.timing.solve_s = v; }),
-      num(T, "postproc_s", "s", "wall clock, post-processing", [](const FlowResult& r) { return opt(r.timing.postproc_s); },
+      num(
+          T, "postproc_s", "s", "wall clock, post-processing",
+          [](const FlowResult& r) { return opt(r.timing.postproc_s); },
           [](FlowResult& r, double v) { r.timing.postproc_s = v; }),
   };
 }
@@ -172,14 +232,21 @@ std::vector<AttrSpec> make_attributes() {
 using Member = std::vector<double> Fields::*;
 
 DatasetSpec field(const char* name, const char* units, const char* description, Member m) {
-  return {std::string("/fields/") + name, units, description, DataShape::grid,
-          [m](const FlowResult& r) { return r.fields.*m; }, [m](FlowResult& r, std::vector<double> v) { r.fields.*m = std::move(v); }};
+  return {std::string("/fields/") + name,
+          units,
+          description,
+          DataShape::grid,
+          [m](const FlowResult& r) { return r.fields.*m; },
+          [m](FlowResult& r, std::vector<double> v) { r.fields.*m = std::move(v); }};
 }
 
 using SurfaceMember = std::vector<double> Surface::*;
 
 DatasetSpec surface(const char* name, const char* units, const char* description, SurfaceMember m) {
-  return {std::string("/surface/") + name, units, description, DataShape::n_theta,
+  return {std::string("/surface/") + name,
+          units,
+          description,
+          DataShape::n_theta,
           [m](const FlowResult& r) { return r.surface.*m; },
           [m](FlowResult& r, std::vector<double> v) { r.surface.*m = std::move(v); }};
 }
@@ -194,10 +261,14 @@ std::vector<double> coordinate(const PolarGrid& g, bool y) {
 }
 
 DatasetSpec stagnation(const char* name, const char* units, const char* description, bool exact, bool theta) {
-  return {std::string("/stagnation/") + name, units, description, DataShape::points,
+  return {std::string("/stagnation/") + name,
+          units,
+          description,
+          DataShape::points,
           [exact, theta](const FlowResult& r) {
             std::vector<double> v;
-            for (const auto& p : exact ? r.stagnation_exact : r.stagnation) v.push_back(theta ? p.theta : p.r);
+            for (const auto& p : exact ? r.stagnation_exact : r.stagnation)
+              v.push_back(theta ? p.theta : p.r);
             return v;
           },
           {}};
@@ -205,13 +276,24 @@ DatasetSpec stagnation(const char* name, const char* units, const char* descript
 
 std::vector<DatasetSpec> make_datasets() {
   return {
-      {"/grid/r", "m", "radius r_i of grid row i (dimension scale of every field's first axis)", DataShape::n_r,
-       [](const FlowResult& r) { return r.grid.r; }, [](FlowResult& r, std::vector<double> v) { r.grid.r = std::move(v); }},
+      {"/grid/r", "m", "radius r_i of grid row i (dimension scale of every field's first axis)",
+       DataShape::n_r, [](const FlowResult& r) { return r.grid.r; },
+       [](FlowResult& r, std::vector<double> v) { r.grid.r = std::move(v); }},
       {"/grid/theta", "rad", "angle θ_j of grid column j from +x, counter-clockwise (dimension scale)",
        DataShape::n_theta, [](const FlowResult& r) { return r.grid.theta; },
        [](FlowResult& r, std::vector<double> v) { r.grid.theta = std::move(v); }},
-      {"/grid/x", "m", "x = r cos θ of each node", DataShape::grid, [](const FlowResult& r) { return coordinate(r.grid, false); }, {}},
-      {"/grid/y", "m", "y = r sin θ of each node", DataShape::grid, [](const FlowResult& r) { return coordinate(r.grid, true); }, {}},
+      {"/grid/x",
+       "m",
+       "x = r cos θ of each node",
+       DataShape::grid,
+       [](const FlowResult& r) { return coordinate(r.grid, false); },
+       {}},
+      {"/grid/y",
+       "m",
+       "y = r sin θ of each node",
+       DataShape::grid,
+       [](const FlowResult& r) { return coordinate(r.grid, true); },
+       {}},
       field("psi", "m^2/s", "stream function ψ", &Fields::psi),
       field("u_r", "m/s", "radial velocity u_r = (1/r) ∂ψ/∂θ", &Fields::u_r),
       field("u_theta", "m/s", "angular velocity u_θ = −∂ψ/∂r", &Fields::u_theta),
@@ -225,7 +307,8 @@ std::vector<DatasetSpec> make_datasets() {
       surface("u_theta", "m/s", "velocity on the body r = a", &Surface::u_theta),
       surface("pressure", "Pa", "pressure on the body", &Surface::pressure),
       surface("cp", "1", "pressure coefficient on the body (undefined when U = 0)", &Surface::cp),
-      surface("cp_exact", "1", "exact pressure coefficient on the body (undefined when U = 0)", &Surface::cp_exact),
+      surface("cp_exact", "1", "exact pressure coefficient on the body (undefined when U = 0)",
+              &Surface::cp_exact),
       stagnation("r", "m", "radius of each stagnation point, numeric (sorted by θ)", false, false),
       stagnation("theta", "rad", "angle of each stagnation point, numeric, in [0, 2π)", false, true),
       stagnation("r_exact", "m", "radius of each stagnation point, exact", true, false),

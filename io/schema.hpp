@@ -25,8 +25,8 @@ enum class AttrKind { number, integer, text };
 
 /// One attribute of a magnus-flow file.
 struct AttrSpec {
-  const char* group;        ///< "/", "/parameters", "/forces", "/errors", "/timing"
-  const char* name;         ///< attribute name
+  const char* group;  ///< "/", "/parameters", "/forces", "/errors", "/timing"
+  const char* name;   ///< attribute name
   AttrKind kind;
   const char* units;        ///< UDUNITS string; "" for text
   const char* description;  ///< one line
@@ -37,9 +37,9 @@ struct AttrSpec {
   /// Put a value read from a file back into a result (read_result); may be empty.
   std::function<void(FlowResult&, double)> set_number;
   std::function<void(FlowResult&, const std::string&)> set_text;
-  const char* compare_label = nullptr;  ///< row label in `magnus compare` (nullptr: not a row)
-  const char* compare_csv = nullptr;    ///< its CSV column name
-  const char* compare_format = nullptr; ///< its fmt spec in the table
+  const char* compare_label = nullptr;   ///< row label in `magnus compare` (nullptr: not a row)
+  const char* compare_csv = nullptr;     ///< its CSV column name
+  const char* compare_format = nullptr;  ///< its fmt spec in the table
 };
 
 /// What a dataset's shape follows.

@@ -21,14 +21,15 @@ namespace magnus {
 
 namespace {
 
-double parse_number(const std::string& s, const std::string& option, const std::string& text, const char* which) {
+double parse_number(const std::string& s, const std::string& option, const std::string& text,
+                    const char* which) {
   const char* begin = s.c_str();
   char* end = nullptr;
   errno = 0;
   const double v = std::strtod(begin, &end);
   if (s.empty() || end != begin + s.size() || errno == ERANGE || !std::isfinite(v))
-    throw std::invalid_argument(fmt::format("{} '{}': {} '{}' is not a finite number (expected A:B:STEP, e.g. 0:4:0.5)",
-                                            option, text, which, s));
+    throw std::invalid_argument(fmt::format(
+        "{} '{}': {} '{}' is not a finite number (expected A:B:STEP, e.g. 0:4:0.5)", option, text, which, s));
   return v;
 }
 
@@ -43,19 +44,20 @@ SweepRange parse_sweep_range(const std::string& text, const std::string& option)
       start = k + 1;
     }
   if (parts.size() != 3)
-    throw std::invalid_argument(
-        fmt::format("{} '{}': expected A:B:STEP (from A to B inclusive in steps of STEP), e.g. 0:4:0.5", option, text));
+    throw std::invalid_argument(fmt::format(
+        "{} '{}': expected A:B:STEP (from A to B inclusive in steps of STEP), e.g. 0:4:0.5", option, text));
   SweepRange r;
   r.first = parse_number(parts[0], option, text, "A");
   r.last = parse_number(parts[1], option, text, "B");
   r.step = parse_number(parts[2], option, text, "STEP");
   if (!(r.step > 0.0)) throw std::invalid_argument(fmt::format("{} '{}': STEP must be > 0", option, text));
-  if (r.first > r.last) throw std::invalid_argument(fmt::format("{} '{}': A must not exceed B", option, text));
+  if (r.first > r.last)
+    throw std::invalid_argument(fmt::format("{} '{}': A must not exceed B", option, text));
   const double span = (r.last - r.first) / r.step;
   if (!std::isfinite(span) || span + 1.0 > double(kMaxSweepPoints))
-    throw std::invalid_argument(fmt::format("{} '{}': {:.3g} points, more than the {} a sweep accepts", option, text,
-                                            std::isfinite(span) ? std::floor(span * (1 + 1e-12) + 1e-9) + 1 : span,
-                                            kMaxSweepPoints));
+    throw std::invalid_argument(
+        fmt::format("{} '{}': {:.3g} points, more than the {} a sweep accepts", option, text,
+                    std::isfinite(span) ? std::floor(span * (1 + 1e-12) + 1e-9) + 1 : span, kMaxSweepPoints));
   const long n = long(std::floor(span * (1.0 + 1e-12) + 1e-9)) + 1;
   for (long k = 0; k < n; ++k) {
     // A + k·STEP rounded to 15 significant digits: 0.1·3 becomes 0.3, not 0.30000000000000004.
@@ -75,12 +77,12 @@ std::string pressure_cell(double v, double q) { return cell(std::fabs(v) < 1e-10
 std::string stagnation_text(const SweepPoint& p) {
   if (p.stagnation.empty()) return "none";
   const std::vector<StagnationPoint> pts = sorted_stagnation_points(p.stagnation);
-  if (!pts[0].on_surface) return fmt::format("{:.2f}° at r = {:.4f}a (free)", deg(pts[0].theta), pts[0].r / p.scene.radius);
+  if (!pts[0].on_surface)
+    return fmt::format("{:.2f}° at r = {:.4f}a (free)", deg(pts[0].theta), pts[0].r / p.scene.radius);
   std::string s;
   for (const auto& q : pts) s += (s.empty() ? "" : ", ") + fmt::format("{:.2f}°", deg(q.theta));
   return s + " (surface)";
 }
-
 
 std::string range_text(const std::vector<SweepPoint>& pts, const SweepResult& s) {
   if (pts.empty()) return "no points";
@@ -97,9 +99,12 @@ std::string sweep_table(const SweepResult& s) {
   const PolarGrid& g = s.grid;
   const bool by_spin = s.variable == SweepVariable::spin_ratio;
   std::string out;
-  auto line = [&out](const std::string& label, const std::string& text) { out += fmt::format("{:<13}{}\n", label, text); };
+  auto line = [&out](const std::string& label, const std::string& text) {
+    out += fmt::format("{:<13}{}\n", label, text);
+  };
   out += fmt::format("magnus {} — sweep: {}\n", MAGNUS_VERSION, c.title);
-  line("case", fmt::format("a = {:.6g} m, U = {:.6g} m/s, ρ = {:.6g} kg/m³", c.scene.radius, c.scene.speed, c.scene.density));
+  line("case", fmt::format("a = {:.6g} m, U = {:.6g} m/s, ρ = {:.6g} kg/m³", c.scene.radius, c.scene.speed,
+                           c.scene.density));
   if (by_spin)
     line("sweep", fmt::format("spin ratio α = aω/U = {}, spin model Γ = 2πa²ω", range_text(s.points, s)));
   else
@@ -109,18 +114,21 @@ std::string sweep_table(const SweepResult& s) {
   line("grid", fmt::format("n_θ × n_r = {} × {}, {} spacing, R/a = {:.6g}, far field {}", g.n_theta, g.n_r,
                            to_string(g.spacing), g.outer_radius() / g.a, to_string(c.grid.far_field)));
   if (!s.grid_choice.empty()) line("", s.grid_choice);
-  line("solver", fmt::format("{}, {} stencil; superposition ψ = U·ψ_U + Γ·ψ_Γ: one factorization, {} linear solves "
-                             "for {} points",
-                             s.method, to_string(c.solver.stencil), s.linear_solves, s.points.size()));
+  line("solver",
+       fmt::format("{}, {} stencil; superposition ψ = U·ψ_U + Γ·ψ_Γ: one factorization, {} linear solves "
+                   "for {} points",
+                   s.method, to_string(c.solver.stencil), s.linear_solves, s.points.size()));
   line("timing", fmt::format("assemble {}, factor {}, solve {}, evaluate {}; total {}", ms(s.assemble_s),
                              ms(s.factor_s), ms(s.solve_s), ms(s.evaluate_s), ms(s.total_s)));
   line("columns", "C_L K–J = −Γ/(Ua) (Kutta–Joukowski; −2πα with the spin model), C_L seed = −4aω/U,");
-  line("", "ΔP = p(a, 90°) − p(a, 270°) (top − bottom), seed ΔP = 2ρUaω; stagnation θ from +x, counter-clockwise");
+  line(
+      "",
+      "ΔP = p(a, 90°) − p(a, 270°) (top − bottom), seed ΔP = 2ρUaω; stagnation θ from +x, counter-clockwise");
   out += "\n";
   const std::string head =
-      fmt::format("{:>8} {:>10} {:>12} {:>12} {:>12} {:>12} {:>9} {:>10} {:>13} {:>13}  {}", by_spin ? "α" : "α_Γ", "Γ (m²/s)",
-                  "C_L numeric", "C_L K–J", "C_L seed", "num/K–J − 1", "K–J/seed", "C_D", "ΔP (Pa)", "seed ΔP (Pa)",
-                  "stagnation points");
+      fmt::format("{:>8} {:>10} {:>12} {:>12} {:>12} {:>12} {:>9} {:>10} {:>13} {:>13}  {}",
+                  by_spin ? "α" : "α_Γ", "Γ (m²/s)", "C_L numeric", "C_L K–J", "C_L seed", "num/K–J − 1",
+                  "K–J/seed", "C_D", "ΔP (Pa)", "seed ΔP (Pa)", "stagnation points");
   out += head + "\n";
   const double q = 0.5 * c.scene.density * c.scene.speed * c.scene.speed;
   for (const auto& p : s.points) {
@@ -137,15 +145,16 @@ std::string sweep_table(const SweepResult& s) {
 std::string sweep_csv(const SweepResult& s) {
   std::string out =
       "alpha,circulation_m2_s,lift_N_m,drag_N_m,cl,cl_kutta_joukowski,cl_seed_estimate,cl_over_kj_minus_1,"
-      "kj_over_seed,cd,delta_p_top_bottom_Pa,delta_p_seed_estimate_Pa,stagnation_theta1_deg,stagnation_theta2_deg,"
+      "kj_over_seed,cd,delta_p_top_bottom_Pa,delta_p_seed_estimate_Pa,stagnation_theta1_deg,stagnation_"
+      "theta2_deg,"
       "stagnation_r_over_a\n";
   auto v = [](double x) { return std::isfinite(x) ? fmt::format("{:.17g}", x) : std::string(); };
   for (const auto& p : s.points) {
     const SweepRow w = sweep_row(s, p);
-    out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", v(w.alpha), v(w.circulation), v(w.lift),
-                       v(w.drag), v(w.cl), v(w.cl_kj), v(w.cl_seed), v(w.cl_rel_kj), v(w.kj_over_seed), v(w.cd),
-                       v(w.delta_p), v(w.delta_p_seed), v(w.stag_theta1_deg), v(w.stag_theta2_deg),
-                       v(w.stag_r_over_a));
+    out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", v(w.alpha), v(w.circulation),
+                       v(w.lift), v(w.drag), v(w.cl), v(w.cl_kj), v(w.cl_seed), v(w.cl_rel_kj),
+                       v(w.kj_over_seed), v(w.cd), v(w.delta_p), v(w.delta_p_seed), v(w.stag_theta1_deg),
+                       v(w.stag_theta2_deg), v(w.stag_r_over_a));
   }
   return out;
 }
@@ -224,24 +233,43 @@ void write_sweep_file(const SweepResult& s, H5Writer& w) {
     w.dataset(G, name, {v.size()}, v.data(), units, what);
     if (defined < v.size()) w.attr(w.open(std::string("/sweep/") + name), "_FillValue", kSweepFillValue);
   };
-  column("alpha", [](const SweepRow& r) { return r.alpha; }, "1", by_spin ? "spin ratio aω/U" : "equivalent spin ratio Γ/(2πaU)");
-  column("circulation", [](const SweepRow& r) { return r.circulation; }, "m^2/s", "circulation Γ");
-  column("lift", [](const SweepRow& r) { return r.lift; }, "N/m", "lift F_y per unit span, numeric");
-  column("drag", [](const SweepRow& r) { return r.drag; }, "N/m", "drag F_x per unit span, numeric");
-  column("cl", [](const SweepRow& r) { return r.cl; }, "1", "lift coefficient, numeric");
-  column("cl_kutta_joukowski", [](const SweepRow& r) { return r.cl_kj; }, "1", "Kutta–Joukowski −Γ/(Ua)");
-  column("cl_seed_estimate", [](const SweepRow& r) { return r.cl_seed; }, "1", "seed estimate −4aω/U");
-  column("cl_over_kj_minus_1", [](const SweepRow& r) { return r.cl_rel_kj; }, "1", "numeric / Kutta–Joukowski − 1");
-  column("kj_over_seed", [](const SweepRow& r) { return r.kj_over_seed; }, "1", "Kutta–Joukowski / seed estimate");
-  column("cd", [](const SweepRow& r) { return r.cd; }, "1", "drag coefficient, numeric");
-  column("delta_p_top_bottom", [](const SweepRow& r) { return r.delta_p; }, "Pa", "p(a, π/2) − p(a, 3π/2), numeric");
-  column("delta_p_seed_estimate", [](const SweepRow& r) { return r.delta_p_seed; }, "Pa", "seed estimate 2ρUaω");
-  column("stagnation_theta1", [](const SweepRow& r) { return rad(r.stag_theta1_deg); }, "rad",
-         "first stagnation point (smallest θ in [0, 2π)), counter-clockwise from +x");
-  column("stagnation_theta2", [](const SweepRow& r) { return rad(r.stag_theta2_deg); }, "rad",
-         "second surface stagnation point; undefined (fill value) when there is one (free) point");
-  column("stagnation_r_over_a", [](const SweepRow& r) { return r.stag_r_over_a; }, "1",
-         "radius of the first stagnation point over a: 1 on the surface, > 1 for a free point");
+  column(
+      "alpha", [](const SweepRow& r) { return r.alpha; }, "1",
+      by_spin ? "spin ratio aω/U" : "equivalent spin ratio Γ/(2πaU)");
+  column(
+      "circulation", [](const SweepRow& r) { return r.circulation; }, "m^2/s", "circulation Γ");
+  column(
+      "lift", [](const SweepRow& r) { return r.lift; }, "N/m", "lift F_y per unit span, numeric");
+  column(
+      "drag", [](const SweepRow& r) { return r.drag; }, "N/m", "drag F_x per unit span, numeric");
+  column(
+      "cl", [](const SweepRow& r) { return r.cl; }, "1", "lift coefficient, numeric");
+  column(
+      "cl_kutta_joukowski", [](const SweepRow& r) { return r.cl_kj; }, "1", "Kutta–Joukowski −Γ/(Ua)");
+  column(
+      "cl_seed_estimate", [](const SweepRow& r) { return r.cl_seed; }, "1", "seed estimate −4aω/U");
+  column(
+      "cl_over_kj_minus_1", [](const SweepRow& r) { return r.cl_rel_kj; }, "1",
+      "numeric / Kutta–Joukowski − 1");
+  column(
+      "kj_over_seed", [](const SweepRow& r) { return r.kj_over_seed; }, "1",
+      "Kutta–Joukowski / seed estimate");
+  column(
+      "cd", [](const SweepRow& r) { return r.cd; }, "1", "drag coefficient, numeric");
+  column(
+      "delta_p_top_bottom", [](const SweepRow& r) { return r.delta_p; }, "Pa",
+      "p(a, π/2) − p(a, 3π/2), numeric");
+  column(
+      "delta_p_seed_estimate", [](const SweepRow& r) { return r.delta_p_seed; }, "Pa", "seed estimate 2ρUaω");
+  column(
+      "stagnation_theta1", [](const SweepRow& r) { return rad(r.stag_theta1_deg); }, "rad",
+      "first stagnation point (smallest θ in [0, 2π)), counter-clockwise from +x");
+  column(
+      "stagnation_theta2", [](const SweepRow& r) { return rad(r.stag_theta2_deg); }, "rad",
+      "second surface stagnation point; undefined (fill value) when there is one (free) point");
+  column(
+      "stagnation_r_over_a", [](const SweepRow& r) { return r.stag_r_over_a; }, "1",
+      "radius of the first stagnation point over a: 1 on the surface, > 1 for a free point");
   if (!undefined.empty()) {
     std::string list;
     for (const auto& n : undefined) list += (list.empty() ? "" : ", ") + n;
@@ -263,15 +291,16 @@ std::string sweep_reference_text(const SweepResult& s, const ViscousReference& r
   for (const auto& d : ref.datasets)
     for (const auto& p : d.points) {
       if (p.alpha < lo - 1e-9 || p.alpha > hi + 1e-9) continue;
-      rows += fmt::format("{:>8} {:>12} {:>12} {:>12}  {}, {}\n", cell(p.alpha, "{:.4g}"), cell(p.cl, "{:.4f}"),
-                          p.cd ? cell(*p.cd, "{:.4f}") : std::string("—"), cell(-2 * M_PI * p.alpha, "{:.4f}"),
-                          d.label, d.source);
+      rows += fmt::format("{:>8} {:>12} {:>12} {:>12}  {}, {}\n", cell(p.alpha, "{:.4g}"),
+                          cell(p.cl, "{:.4f}"), p.cd ? cell(*p.cd, "{:.4f}") : std::string("—"),
+                          cell(-2 * M_PI * p.alpha, "{:.4f}"), d.label, d.source);
     }
   if (rows.empty()) return {};
-  return fmt::format("\nviscous reference, 2D Navier–Stokes (C_L in magnus's sign; {})\n{:>8} {:>12} {:>12} {:>12}  {}\n",
-                     "data/viscous_lift_reference.toml", "α", "C_L viscous", "C_D viscous", "C_L −2πα", "source") +
+  return fmt::format(
+             "\nviscous reference, 2D Navier–Stokes (C_L in magnus's sign; {})\n{:>8} {:>12} {:>12} {:>12}  "
+             "{}\n",
+             "data/viscous_lift_reference.toml", "α", "C_L viscous", "C_D viscous", "C_L −2πα", "source") +
          rows;
 }
-
 
 }  // namespace magnus

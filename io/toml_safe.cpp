@@ -8,14 +8,16 @@ namespace magnus::toml_safe {
 
 namespace {
 
-// toml++ 3.3 (Debian 12) reaches __builtin_unreachable() — undefined behaviour — when its whitespace test meets
-// some non-ASCII code points outside a string or comment ("title = Über", "[Ü]", "a = [ψ]", "\Ü" in a """
-// string: https://github.com/marzer/tomlplusplus/issues/190, fixed upstream after 3.4). The parser never sees
-// them: each is swapped for a private-use code point that toml++ treats the same way (a non-ASCII character
-// that is neither whitespace nor allowed in a bare key), and swapped back in what the parse returns.
+// toml++ 3.3 (Debian 12) reaches __builtin_unreachable() — undefined behaviour — when its whitespace test
+// meets some non-ASCII code points outside a string or comment ("title = Über", "[Ü]", "a = [ψ]", "\Ü" in a
+// """ string: https://github.com/marzer/tomlplusplus/issues/190, fixed upstream after 3.4). The parser never
+// sees them: each is swapped for a private-use code point that toml++ treats the same way (a non-ASCII
+// character that is neither whitespace nor allowed in a bare key), and swapped back in what the parse
+// returns.
 bool toml_ub_codepoint(char32_t c) {
   // The ranges where toml++'s is_non_ascii_horizontal_whitespace() has no case (blocks 0, 11, 63 of 0x3FA).
-  return (c >= 0xA1 && c <= 0x499) || (c >= 0x2D1E && c <= 0x3117 && c != 0x3000) || (c >= 0xFAC6 && c <= 0xFEFE);
+  return (c >= 0xA1 && c <= 0x499) || (c >= 0x2D1E && c <= 0x3117 && c != 0x3000) ||
+         (c >= 0xFAC6 && c <= 0xFEFE);
 }
 constexpr char32_t shield_offset = 0xF0000;  // plane 15, private use: 0xF00A1 ... 0xFFEFE
 
@@ -37,7 +39,8 @@ char32_t decode_utf8(std::string_view s, size_t i, size_t* len) {
     return c;
   }
   if (c0 >= 0xF0 && c0 <= 0xF4 && cont(1) && cont(2) && cont(3)) {
-    const char32_t c = char32_t(((c0 & 0x07) << 18) | ((b(1) & 0x3F) << 12) | ((b(2) & 0x3F) << 6) | (b(3) & 0x3F));
+    const char32_t c =
+        char32_t(((c0 & 0x07) << 18) | ((b(1) & 0x3F) << 12) | ((b(2) & 0x3F) << 6) | (b(3) & 0x3F));
     if (c < 0x10000 || c > 0x10FFFF) return 0;
     *len = 4;
     return c;
@@ -87,8 +90,9 @@ std::string map_codepoints(std::string_view s, From from, To to, bool* changed =
 }  // namespace
 
 std::string unshield(std::string_view s) {
-  return map_codepoints(s, [](char32_t c) { return c > shield_offset && toml_ub_codepoint(c - shield_offset); },
-                        [](char32_t c) { return c - shield_offset; });
+  return map_codepoints(
+      s, [](char32_t c) { return c > shield_offset && toml_ub_codepoint(c - shield_offset); },
+      [](char32_t c) { return c - shield_offset; });
 }
 
 namespace {
@@ -99,24 +103,30 @@ toml::table unshield_table(const toml::table& t) {
   toml::table out;
   for (auto&& [k, v] : t) {
     const std::string key = unshield(k.str());
-    if (const auto* sub = v.as_table()) out.insert(key, unshield_table(*sub));
+    if (const auto* sub = v.as_table())
+      out.insert(key, unshield_table(*sub));
     else if (const auto* arr = v.as_array()) {
       toml::array a;
       for (const auto& e : *arr) unshield_into(e, a);
       out.insert(key, std::move(a));
-    } else if (const auto* str = v.as_string()) out.insert(key, unshield(str->get()));
-    else v.visit([&](const auto& value) { out.insert(key, value); });
+    } else if (const auto* str = v.as_string())
+      out.insert(key, unshield(str->get()));
+    else
+      v.visit([&](const auto& value) { out.insert(key, value); });
   }
   return out;
 }
 void unshield_into(const toml::node& n, toml::array& out) {
-  if (const auto* sub = n.as_table()) out.push_back(unshield_table(*sub));
+  if (const auto* sub = n.as_table())
+    out.push_back(unshield_table(*sub));
   else if (const auto* arr = n.as_array()) {
     toml::array a;
     for (const auto& e : *arr) unshield_into(e, a);
     out.push_back(std::move(a));
-  } else if (const auto* str = n.as_string()) out.push_back(unshield(str->get()));
-  else n.visit([&](const auto& value) { out.push_back(value); });
+  } else if (const auto* str = n.as_string())
+    out.push_back(unshield(str->get()));
+  else
+    n.visit([&](const auto& value) { out.push_back(value); });
 }
 
 }  // namespace
@@ -124,12 +134,13 @@ void unshield_into(const toml::node& n, toml::array& out) {
 toml::table parse_toml(const std::string& text, const std::string& origin) {
   bool changed = false;
   // Private-use code points of the swap range cannot be told apart from swapped ones: refuse them.
-  map_codepoints(text, [](char32_t c) { return c > shield_offset && toml_ub_codepoint(c - shield_offset); },
-                 [&](char32_t c) -> char32_t {
-                   throw CaseError(fmt::format("{}: unsupported character U+{:X} (private use)", origin, uint32_t(c)));
-                 });
-  const std::string safe = map_codepoints(text, toml_ub_codepoint, [](char32_t c) { return c + shield_offset; },
-                                          &changed);
+  map_codepoints(
+      text, [](char32_t c) { return c > shield_offset && toml_ub_codepoint(c - shield_offset); },
+      [&](char32_t c) -> char32_t {
+        throw CaseError(fmt::format("{}: unsupported character U+{:X} (private use)", origin, uint32_t(c)));
+      });
+  const std::string safe = map_codepoints(
+      text, toml_ub_codepoint, [](char32_t c) { return c + shield_offset; }, &changed);
   toml::table t = toml::parse(safe, origin);
   return changed ? unshield_table(t) : t;
 }

@@ -1,9 +1,9 @@
 #pragma once
-// toml::parse without toml++ 3.3's undefined behaviour on some non-ASCII code points (marzer/tomlplusplus#190),
-// and the UTF-8 helpers it needs. Used by the case-file parser only.
+// toml::parse without toml++ 3.3's undefined behaviour on some non-ASCII code points
+// (marzer/tomlplusplus#190), and the UTF-8 helpers it needs. Used by the case-file parser only.
+#include <toml++/toml.h>
 #include <string>
 #include <string_view>
-#include <toml++/toml.h>
 
 namespace magnus::toml_safe {
 

@@ -18,11 +18,20 @@ std::string xml_escape(const std::string& s) {
   std::string out;
   for (char ch : s) {
     switch (ch) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += ch;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += ch;
     }
   }
   return out;
@@ -46,34 +55,47 @@ std::vector<int> quad_connectivity(size_t n_r, size_t n_theta) {
 void write_mesh(const FlowResult& r, H5Writer& w) {
   const size_t nr = r.grid.n_r, nt = r.grid.n_theta, n = nr * nt;
   const H5Writer::id m = w.group("/mesh");
-  w.attr(m, "note", "for the .xmf sidecar: virtual datasets (views, no storage) of /grid and /fields flattened "
-                    "to n_r·n_theta nodes, and the quadrilateral connectivity (periodic in theta)");
-  w.view(m, "points", {n, 3}, {{"/grid/x", 0}, {"/grid/y", 1}}, "m", "node coordinates (x, y, 0), node i·n_theta + j");
+  w.attr(m, "note",
+         "for the .xmf sidecar: virtual datasets (views, no storage) of /grid and /fields flattened "
+         "to n_r·n_theta nodes, and the quadrilateral connectivity (periodic in theta)");
+  w.view(m, "points", {n, 3}, {{"/grid/x", 0}, {"/grid/y", 1}}, "m",
+         "node coordinates (x, y, 0), node i·n_theta + j");
   const std::vector<int> q = quad_connectivity(nr, nt);
-  w.int_dataset(m, "quads", {q.size() / 4, 4}, q.data(), "1",
-                "node indices of each quadrilateral, counter-clockwise; column n_theta − 1 wraps to column 0");
+  w.int_dataset(
+      m, "quads", {q.size() / 4, 4}, q.data(), "1",
+      "node indices of each quadrilateral, counter-clockwise; column n_theta − 1 wraps to column 0");
   for (const DatasetSpec* d : field_datasets())
     if (!d->values(r).empty()) w.view(m, field_name(*d), {n}, {{d->path, 0}}, d->units, "view of " + d->path);
   if (has_velocity(r))
-    w.view(m, "velocity", {n, 3}, {{"/fields/u_x", 0}, {"/fields/u_y", 1}}, "m/s", "(u_x, u_y, 0): view of /fields");
+    w.view(m, "velocity", {n, 3}, {{"/fields/u_x", 0}, {"/fields/u_y", 1}}, "m/s",
+           "(u_x, u_y, 0): view of /fields");
 }
 
 std::string xdmf_text(const FlowResult& r, const std::string& h5_name) {
   const size_t nr = r.grid.n_r, nt = r.grid.n_theta, n = nr * nt, cells = (nr - 1) * nt;
   const std::string file = xml_escape(h5_name);
-  auto item = [&](const std::string& name, const std::string& dims, const char* type = "Float", int prec = 8) {
-    return fmt::format("        <DataItem Dimensions=\"{}\" NumberType=\"{}\" Precision=\"{}\" Format=\"HDF\">"
-                       "{}:/mesh/{}</DataItem>\n", dims, type, prec, file, name);
+  auto item = [&](const std::string& name, const std::string& dims, const char* type = "Float",
+                  int prec = 8) {
+    return fmt::format(
+        "        <DataItem Dimensions=\"{}\" NumberType=\"{}\" Precision=\"{}\" Format=\"HDF\">"
+        "{}:/mesh/{}</DataItem>\n",
+        dims, type, prec, file, name);
   };
-  std::string s = "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
-                  "<Xdmf Version=\"3.0\">\n  <Domain>\n";
-  s += fmt::format("    <Grid Name=\"{}\" GridType=\"Uniform\">\n", xml_escape(r.c.title.empty() ? "magnus" : r.c.title));
-  s += fmt::format("      <Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"{}\" NodesPerElement=\"4\">\n",
-                   cells) + item("quads", fmt::format("{} 4", cells), "Int", 4) + "      </Topology>\n";
-  s += "      <Geometry GeometryType=\"XYZ\">\n" + item("points", fmt::format("{} 3", n)) + "      </Geometry>\n";
+  std::string s =
+      "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+      "<Xdmf Version=\"3.0\">\n  <Domain>\n";
+  s += fmt::format("    <Grid Name=\"{}\" GridType=\"Uniform\">\n",
+                   xml_escape(r.c.title.empty() ? "magnus" : r.c.title));
+  s += fmt::format(
+           "      <Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"{}\" NodesPerElement=\"4\">\n",
+           cells) +
+       item("quads", fmt::format("{} 4", cells), "Int", 4) + "      </Topology>\n";
+  s += "      <Geometry GeometryType=\"XYZ\">\n" + item("points", fmt::format("{} 3", n)) +
+       "      </Geometry>\n";
   for (const DatasetSpec* d : field_datasets())
     if (!d->values(r).empty())
-      s += fmt::format("      <Attribute Name=\"{}\" AttributeType=\"Scalar\" Center=\"Node\">\n", field_name(*d)) +
+      s += fmt::format("      <Attribute Name=\"{}\" AttributeType=\"Scalar\" Center=\"Node\">\n",
+                       field_name(*d)) +
            item(field_name(*d), std::to_string(n)) + "      </Attribute>\n";
   if (has_velocity(r))
     s += "      <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n" +

@@ -14,8 +14,8 @@
 namespace magnus {
 
 /// Node index of grid point (i, j): i·n_θ + j (row-major, as the fields).
-/// Quadrilateral k = i·n_θ + j (i < n_r − 1) has nodes (i, j), (i+1, j), (i+1, j+1 mod n_θ), (i, j+1 mod n_θ):
-/// counter-clockwise in the (x, y) plane. Returns 4·(n_r − 1)·n_θ indices.
+/// Quadrilateral k = i·n_θ + j (i < n_r − 1) has nodes (i, j), (i+1, j), (i+1, j+1 mod n_θ), (i, j+1 mod
+/// n_θ): counter-clockwise in the (x, y) plane. Returns 4·(n_r − 1)·n_θ indices.
 std::vector<int> quad_connectivity(size_t n_r, size_t n_theta);
 
 /// Write /mesh: points (n_r·n_θ, 3) = view of (x, y, 0), quads ((n_r−1)·n_θ, 4) int32, and one view

@@ -61,7 +61,8 @@ GridShape grid_shape(const GridRequest& c) {
 PolarGrid make_grid(const GridRequest& c, double a) {
   const GridShape s = grid_shape(c);
   if (s.n_r > (1L << 24))
-    throw std::invalid_argument("make_grid: " + std::to_string(s.n_r) + " rings is more than magnus builds (2^24)");
+    throw std::invalid_argument("make_grid: " + std::to_string(s.n_r) +
+                                " rings is more than magnus builds (2^24)");
   return make_grid(a, s.outer_over_a, int(s.n_r), c.n_theta, c.spacing);
 }
 

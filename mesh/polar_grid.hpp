@@ -6,13 +6,13 @@
 namespace magnus {
 
 struct PolarGrid {
-  double a = 1.0;              ///< body radius, m
+  double a = 1.0;  ///< body radius, m
   int n_r = 0, n_theta = 0;
   Spacing spacing = Spacing::geometric;
-  std::vector<double> r;       ///< radii, m (n_r)
-  std::vector<double> xi;      ///< ξ_i = ln(r_i/a) (n_r)
-  std::vector<double> theta;   ///< angles, rad (n_θ)
-  double d_theta = 0.0;        ///< Δθ = 2π/n_θ
+  std::vector<double> r;      ///< radii, m (n_r)
+  std::vector<double> xi;     ///< ξ_i = ln(r_i/a) (n_r)
+  std::vector<double> theta;  ///< angles, rad (n_θ)
+  double d_theta = 0.0;       ///< Δθ = 2π/n_θ
 
   double outer_radius() const { return r.back(); }
   /// Δξ_{i+1/2} = ξ_{i+1} − ξ_i.
@@ -37,8 +37,8 @@ struct GridShape {
 };
 GridShape grid_shape(const GridRequest& c);
 
-/// The grid a request asks for, for a body of radius a (m). n_r = 0: geometric spacing gets exactly square cells (Δξ = Δθ, R rounded
-/// up to a whole cell, so R ≥ the R asked for); uniform spacing gets default_n_r.
+/// The grid a request asks for, for a body of radius a (m). n_r = 0: geometric spacing gets exactly square
+/// cells (Δξ = Δθ, R rounded up to a whole cell, so R ≥ the R asked for); uniform spacing gets default_n_r.
 PolarGrid make_grid(const GridRequest& c, double a);
 
 }  // namespace magnus

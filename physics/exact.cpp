@@ -9,9 +9,7 @@ double ExactFlow::psi(double r, double theta) const {
   return U * (r - a * a / r) * std::sin(theta) - Gamma / (2.0 * M_PI) * std::log(r / a);
 }
 
-double ExactFlow::u_r(double r, double theta) const {
-  return U * (1.0 - a * a / (r * r)) * std::cos(theta);
-}
+double ExactFlow::u_r(double r, double theta) const { return U * (1.0 - a * a / (r * r)) * std::cos(theta); }
 
 double ExactFlow::u_theta(double r, double theta) const {
   return -U * (1.0 + a * a / (r * r)) * std::sin(theta) + Gamma / (2.0 * M_PI * r);
@@ -22,9 +20,7 @@ double ExactFlow::cp(double r, double theta) const {
   return 1.0 - (ur * ur + ut * ut) / (U * U);
 }
 
-double ExactFlow::delta_p_top_bottom(double rho) const {
-  return 4.0 * rho * U * Gamma / (2.0 * M_PI * a);
-}
+double ExactFlow::delta_p_top_bottom(double rho) const { return 4.0 * rho * U * Gamma / (2.0 * M_PI * a); }
 
 std::vector<StagnationPoint> ExactFlow::stagnation_points() const {
   if (U <= 0.0) return {};
@@ -43,7 +39,8 @@ std::vector<StagnationPoint> ExactFlow::stagnation_points() const {
   return {{rs, s > 0 ? M_PI / 2 : 3 * M_PI / 2, false}};
 }
 
-std::vector<double> ExactFlow::psi_field(const std::vector<double>& r, const std::vector<double>& theta) const {
+std::vector<double> ExactFlow::psi_field(const std::vector<double>& r,
+                                         const std::vector<double>& theta) const {
   const size_t n_theta = theta.size();
   std::vector<double> out(r.size() * n_theta);
   std::vector<double> sn(n_theta);

@@ -32,8 +32,8 @@ struct ExactFlow {
   double cl() const { return -Gamma / (U * a); }
   /// p(a, π/2) − p(a, 3π/2) = 4ρU·Γ/(2πa), Pa.
   double delta_p_top_bottom(double rho) const;
-  /// Stagnation points, sorted by θ in [0, 2π): two on the surface (sinθ_s = Γ/(4πaU)), one on the surface at θ = ±π/2 when
-  /// |sinθ_s| = 1 (to within 1e-12), or one free on the y axis.
+  /// Stagnation points, sorted by θ in [0, 2π): two on the surface (sinθ_s = Γ/(4πaU)), one on the surface at
+  /// θ = ±π/2 when |sinθ_s| = 1 (to within 1e-12), or one free on the y axis.
   std::vector<StagnationPoint> stagnation_points() const;
   /// ψ on every node (r_i, θ_j) of a polar grid, row-major (n_r, n_θ), m²/s.
   std::vector<double> psi_field(const std::vector<double>& r, const std::vector<double>& theta) const;

@@ -10,20 +10,20 @@ namespace magnus {
 
 /// One tabulated point; C_L in magnus's sign (CCW spin, flow towards +x: C_L < 0 for α > 0).
 struct ReferencePoint {
-  double alpha = 0.0;          ///< spin ratio aω/U
-  double cl = 0.0;             ///< lift coefficient, magnus's sign
-  std::optional<double> cd;    ///< drag coefficient
+  double alpha = 0.0;        ///< spin ratio aω/U
+  double cl = 0.0;           ///< lift coefficient, magnus's sign
+  std::optional<double> cd;  ///< drag coefficient
 };
 
 /// One publication's table.
 struct ViscousDataset {
-  std::string id;              ///< short key, e.g. "stojkovic2002"
-  std::string label;           ///< legend text, e.g. "viscous, Re = 100 (Stojković et al. 2002)"
-  std::string citation;        ///< authors, title, journal, volume, pages, year
-  std::string source;          ///< where in the publication, e.g. "Table II"
-  std::string method;          ///< how the values were obtained
-  double reynolds = 0.0;       ///< Re = U·2a/ν
-  std::string cl_sign;         ///< as tabulated: "magnitude" (|C_L|) or "magnus" (already our sign)
+  std::string id;         ///< short key, e.g. "stojkovic2002"
+  std::string label;      ///< legend text, e.g. "viscous, Re = 100 (Stojković et al. 2002)"
+  std::string citation;   ///< authors, title, journal, volume, pages, year
+  std::string source;     ///< where in the publication, e.g. "Table II"
+  std::string method;     ///< how the values were obtained
+  double reynolds = 0.0;  ///< Re = U·2a/ν
+  std::string cl_sign;    ///< as tabulated: "magnitude" (|C_L|) or "magnus" (already our sign)
   std::vector<ReferencePoint> points;
 };
 

@@ -20,8 +20,9 @@ std::optional<Overflow> find_overflow(const Scene& s, double outer_radius, const
     double value;
   };
   // Γ's own inputs: the given value, or a and ω (Γ = 2πa²ω).
-  const std::vector<Factor> gamma = s.circulation_given ? std::vector<Factor>{{&k.circulation, s.circulation_value}}
-                                                        : std::vector<Factor>{{&k.radius, a}, {&k.spin, w}};
+  const std::vector<Factor> gamma = s.circulation_given
+                                        ? std::vector<Factor>{{&k.circulation, s.circulation_value}}
+                                        : std::vector<Factor>{{&k.radius, a}, {&k.spin, w}};
   auto with = [](std::vector<Factor> f, const std::vector<Factor>& more) {
     f.insert(f.end(), more.begin(), more.end());
     return f;
@@ -40,7 +41,8 @@ std::optional<Overflow> find_overflow(const Scene& s, double outer_radius, const
       {"the seed force 4ρUa²ω", 4.0 * rho * U * a * a * w, {frho, fU, fa, fw}},
       {"the Magnus S = 2πρa²", 2.0 * M_PI * rho * a * a, {frho, fa}},
       {"the surface speed 2U + |Γ|/(2πa)", u_max, with({fU, fa}, gamma)},
-      {"the surface pressure p∞ − ½ρ(2U + |Γ|/(2πa))²", p - 0.5 * rho * u_max * u_max, with({fp, frho, fU, fa}, gamma)},
+      {"the surface pressure p∞ − ½ρ(2U + |Γ|/(2πa))²", p - 0.5 * rho * u_max * u_max,
+       with({fp, frho, fU, fa}, gamma)},
       {"C_L = −Γ/(Ua)", U > 0.0 ? G / (U * a) : 0.0, with({fU, fa}, gamma)},
       {"the free stagnation radius |Γ|/(2πU)", U > 0.0 ? G / (2.0 * M_PI * U) : 0.0, with({fU}, gamma)},
       {"the streamfunction at the outer boundary U·R + |Γ|/(2π)·ln(R/a)",
@@ -74,8 +76,8 @@ const char* to_string(Method m) {
 const char* to_string(StencilKind s) { return s == StencilKind::five_point ? "5-point" : "9-point"; }
 
 const std::vector<std::string>& field_names() {
-  static const std::vector<std::string> names = {"psi", "u_r", "u_theta", "u_x", "u_y",
-                                                 "pressure", "cp", "psi_exact", "psi_error"};
+  static const std::vector<std::string> names = {"psi",      "u_r", "u_theta",   "u_x",      "u_y",
+                                                 "pressure", "cp",  "psi_exact", "psi_error"};
   return names;
 }
 

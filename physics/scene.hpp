@@ -35,7 +35,7 @@ struct GridRequest {
   double outer_radius = 20.0;  ///< R/a, dimensionless
   FarField far_field = FarField::exact;
   int n_theta = 256;
-  int n_r = 0;                 ///< 0: chosen from the spacing (square cells)
+  int n_r = 0;  ///< 0: chosen from the spacing (square cells)
   Spacing spacing = Spacing::geometric;
   bool spacing_given = false;  ///< grid.spacing was stated (file or --set): a tolerance search keeps it
   double tolerance = 0.0;      ///< target relative lift error; 0: the grid as given
@@ -79,10 +79,10 @@ struct SceneKeys {
   double spin_value = 0.0;  ///< the value given for `spin` in its own units (α, rev/min); 0: ω itself
 };
 
-/// The first of Γ, α = aω/U, U², ρU², ½ρU²·2a, Γ, ρUΓ, the seed ΔP = 2ρUaω, 4ρUΓ/(2πa), F_seed = 4ρUa²ω, S = 2πρa²,
-/// the surface speed 2U + |Γ|/(2πa) and pressure p∞ ± ½ρ(2U + |Γ|/(2πa))², and ψ(R) ≈ U·R + |Γ|/(2π)·ln(R/a)
-/// (R = outer_radius·a), C_L = −Γ/(Ua) and the free stagnation radius |Γ|/(2πU) that is not finite, or that a
-/// product of non-zero inputs underflows below the smallest normal double; empty if none.
+/// The first of Γ, α = aω/U, U², ρU², ½ρU²·2a, Γ, ρUΓ, the seed ΔP = 2ρUaω, 4ρUΓ/(2πa), F_seed = 4ρUa²ω, S =
+/// 2πρa², the surface speed 2U + |Γ|/(2πa) and pressure p∞ ± ½ρ(2U + |Γ|/(2πa))², and ψ(R) ≈ U·R +
+/// |Γ|/(2π)·ln(R/a) (R = outer_radius·a), C_L = −Γ/(Ua) and the free stagnation radius |Γ|/(2πU) that is not
+/// finite, or that a product of non-zero inputs underflows below the smallest normal double; empty if none.
 std::optional<Overflow> find_overflow(const Scene& s, double outer_radius, const SceneKeys& keys = {});
 
 const char* to_string(Spacing);

@@ -17,8 +17,8 @@ PLINT style_of(LineStyle s) { return s == LineStyle::dashed ? 2 : s == LineStyle
 
 }  // namespace
 
-PlotFrame plot_curves(const CurvePage& pg, const std::vector<LineCurve>& lines, const std::vector<PointSet>& points,
-                      const std::string& png, PlotSize size) {
+PlotFrame plot_curves(const CurvePage& pg, const std::vector<LineCurve>& lines,
+                      const std::vector<PointSet>& points, const std::string& png, PlotSize size) {
   using namespace page;
   const bool lx = pg.log_x, ly = pg.log_y;
   auto tx = [lx](double v) { return lx ? std::log10(v) : v; };
@@ -56,10 +56,12 @@ PlotFrame plot_curves(const CurvePage& pg, const std::vector<LineCurve>& lines, 
 
   std::vector<LegendEntry> legend;
   for (const auto& l : lines)
-    if (!l.label.empty()) legend.push_back(line_entry(plplot_text(l.label), pen(l.colour), style_of(l.style), l.width));
+    if (!l.label.empty())
+      legend.push_back(line_entry(plplot_text(l.label), pen(l.colour), style_of(l.style), l.width));
   for (const auto& s : points) {
     if (s.label.empty()) continue;
-    LegendEntry e = symbol_entry(plplot_text(s.label), pen(s.colour), kMarkers[s.marker % std::size(kMarkers)], 0.6);
+    LegendEntry e =
+        symbol_entry(plplot_text(s.label), pen(s.colour), kMarkers[s.marker % std::size(kMarkers)], 0.6);
     if (s.joined) {
       e.line = true;
       e.line_width = 1.6;

@@ -23,8 +23,8 @@ struct PointSet {
   std::string label;  ///< legend text (plplot_text markup)
   std::vector<CurvePoint> points;
   Colour colour = Colour::red;
-  int marker = 0;      ///< 0 ●, 1 ■, 2 ▲, 3 ◆, 4 ▼, 5 ○, 6 □, 7 △ …
-  bool joined = false; ///< draw a line through the points in order
+  int marker = 0;       ///< 0 ●, 1 ■, 2 ▲, 3 ◆, 4 ▼, 5 ○, 6 □, 7 △ …
+  bool joined = false;  ///< draw a line through the points in order
 };
 
 /// The page of a curve plot: texts (plplot_text markup, units in the labels) and axes.
@@ -35,7 +35,7 @@ struct CurvePage {
   int x_subticks = 0;                 ///< minor ticks per major tick (0: PLplot's choice)
   bool fixed_x = false;               ///< use [x_min, x_max] as the x range instead of the data's
   double x_min = 0.0, x_max = 1.0;
-  bool zero_line = true;              ///< a thin line at y = 0 when it is inside the window
+  bool zero_line = true;  ///< a thin line at y = 0 when it is inside the window
 };
 
 /// Draws the lines (in order, under the points) and the point sets; the window fits every usable

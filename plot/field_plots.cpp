@@ -1,8 +1,8 @@
 #include "plot/field_plots.hpp"
 
+#include <fmt/core.h>
 #include <algorithm>
 #include <cmath>
-#include <fmt/core.h>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -100,7 +100,8 @@ void sequential_cmap1(plstream& pls) {
 /// The centred square box: top 4 lines for the title, bottom `bottom_lines` for tick labels and the x
 /// label (and `extra_bottom`, a page fraction, for a legend below), side margins at least `side`
 /// (page fraction) each. Sets the viewport and window.
-void square_box(plstream& pls, PlotSize size, double w, double bottom_lines, double extra_bottom, double side) {
+void square_box(plstream& pls, PlotSize size, double w, double bottom_lines, double extra_bottom,
+                double side) {
   const double ly = line_fraction_y(pls);
   const double top = 1.0 - 4.0 * ly, bottom = bottom_lines * ly + extra_bottom;
   const double W = size.width, H = size.height;
@@ -153,15 +154,16 @@ PlotFrame plot_streamlines(const StreamlinePicture& pic, const std::string& png,
   }
 
   std::vector<LegendEntry> legend;
-  legend.push_back(line_entry(plplot_text(fmt::format("ψ contours, Δψ = {} {}", num(step), pic.psi_unit)), kBlue,
-                              1, 1.2));
+  legend.push_back(
+      line_entry(plplot_text(fmt::format("ψ contours, Δψ = {} {}", num(step), pic.psi_unit)), kBlue, 1, 1.2));
   if (pic.has_saddle) {
     legend.push_back(line_entry(plplot_text("separatrix ψ = ψ_s"), kBlack, 1, 2.4));
     legend.push_back(line_entry("closed streamlines", kPurple, 1, 1.4));
   } else {
     legend.push_back(line_entry("dividing streamline ψ = 0", kBlack, 1, 2.4));
   }
-  if (!pic.numeric_points.empty()) legend.push_back(symbol_entry("stagnation point, numeric", kRed, "●", 0.75));
+  if (!pic.numeric_points.empty())
+    legend.push_back(symbol_entry("stagnation point, numeric", kRed, "●", 0.75));
   if (!pic.exact_points.empty()) legend.push_back(symbol_entry("stagnation point, exact", kBlack, "○", 1.3));
   for (const auto& n : pic.notes) legend.push_back(text_entry(plplot_text(n)));
 
@@ -237,8 +239,9 @@ PlotFrame plot_contour_field(const ContourFieldPicture& pic, const std::string& 
     PLFLT vx0 = 0, vx1 = 0, vy0 = 0, vy1 = 0;
     pls.gvpd(vx0, vx1, vy0, vy1);
     pls.psty(0);
-    pls.shades(patch.z(), patch.nx, patch.ny, nullptr, -w, w, -w, w, fill_edges.data(), PLINT(fill_edges.size()),
-               1.0, 0, 0.0, plcallback::fill, false, plcallback::tr2, patch.pltr_data());
+    pls.shades(patch.z(), patch.nx, patch.ny, nullptr, -w, w, -w, w, fill_edges.data(),
+               PLINT(fill_edges.size()), 1.0, 0, 0.0, plcallback::fill, false, plcallback::tr2,
+               patch.pltr_data());
     if (pic.zero_contour && lo < 0.0 && hi > 0.0) contour(pls, patch, {0.0}, kBlack, 1.0, 2);
     disc(pls, 0.0, 0.0, v.body_radius, kGrey, kBlack, 2.0);
     for (const auto& s : pic.points) disc(pls, s.x, s.y, w / 70.0, kRed, kBlack, 1.0);
@@ -261,11 +264,12 @@ PlotFrame plot_contour_field(const ContourFieldPicture& pic, const std::string& 
     PLINT n_values[] = {PLINT(edges.size())};
     const PLFLT* values[] = {edges.data()};
     PLFLT cw = 0.0, ch = 0.0;
-    pls.colorbar(&cw, &ch, PL_COLORBAR_SHADE, PL_POSITION_RIGHT | PL_POSITION_OUTSIDE | PL_POSITION_VIEWPORT, bx,
-                 0.0, bw, bh, kWhite, kBlack, 1, 0, 0.0, 0, 0.0, 1, label_opts, labels, 1, axis_opts, ticks,
-                 sub_ticks, n_values, values);
+    pls.colorbar(&cw, &ch, PL_COLORBAR_SHADE, PL_POSITION_RIGHT | PL_POSITION_OUTSIDE | PL_POSITION_VIEWPORT,
+                 bx, 0.0, bw, bh, kWhite, kBlack, 1, 0, 0.0, 0, 0.0, 1, label_opts, labels, 1, axis_opts,
+                 ticks, sub_ticks, n_values, values);
     const double dx = vx1 - vx0, dy = vy1 - vy0, ymid = 0.5 * (vy0 + vy1);
-    frame.colour_bar = to_pixels(size, vx1 + bx * dx, vx1 + (bx + bw) * dx, ymid - 0.5 * bh * dy, ymid + 0.5 * bh * dy);
+    frame.colour_bar =
+        to_pixels(size, vx1 + bx * dx, vx1 + (bx + bw) * dx, ymid - 0.5 * bh * dy, ymid + 0.5 * bh * dy);
     frame.bar_lo = lo;
     frame.bar_hi = hi;
   });

@@ -12,11 +12,11 @@ namespace magnus {
 
 /// The square view of a field plot; lengths in axis units (a field's r is divided by `unit`).
 struct FieldView {
-  std::string title;              ///< plplot_text markup
+  std::string title;  ///< plplot_text markup
   std::string xlabel = "x/a", ylabel = "y/a";
-  double unit = 1.0;              ///< one axis unit in the field's length unit (the radius: axes in x/a)
-  double half_width = 4.0;        ///< window |x|, |y| ≤ half_width (axis units)
-  double body_radius = 1.0;       ///< the body, a grey disc at the origin (axis units)
+  double unit = 1.0;         ///< one axis unit in the field's length unit (the radius: axes in x/a)
+  double half_width = 4.0;   ///< window |x|, |y| ≤ half_width (axis units)
+  double body_radius = 1.0;  ///< the body, a grey disc at the origin (axis units)
 };
 
 /// What a streamline picture shows.
@@ -40,11 +40,11 @@ PlotFrame plot_streamlines(const StreamlinePicture& pic, const std::string& png,
 /// What a filled-contour field picture shows.
 struct ContourFieldPicture {
   FieldView view;
-  PolarField field;                    ///< the field (r in the field's length unit)
-  std::string bar_label = "Cp";        ///< colour bar label (plplot_text markup)
-  bool zero_contour = true;            ///< a dashed contour at 0
-  std::vector<CurvePoint> points;      ///< points marked with red dots (axis units)
-  std::string footnote;                ///< one line under the plot (plplot_text markup)
+  PolarField field;                ///< the field (r in the field's length unit)
+  std::string bar_label = "Cp";    ///< colour bar label (plplot_text markup)
+  bool zero_contour = true;        ///< a dashed contour at 0
+  std::vector<CurvePoint> points;  ///< points marked with red dots (axis units)
+  std::string footnote;            ///< one line under the plot (plplot_text markup)
 };
 
 /// The field as filled contours whose colour range is the field's range inside the window (no

@@ -9,10 +9,10 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "io/hdf5_io.hpp"
 #include "io/reference_file.hpp"
 #include "io/result_reader.hpp"
 #include "physics/exact.hpp"
-#include "io/hdf5_io.hpp"
 
 namespace magnus {
 
@@ -25,7 +25,8 @@ PlotSize parse_plot_size(const std::string& text) {
   const int w = x == std::string::npos ? -1 : part(text.substr(0, x));
   const int h = x == std::string::npos ? -1 : part(text.substr(x + 1));
   if (w < 0 || h < 0)
-    throw std::invalid_argument(fmt::format("--size '{}': expected WIDTHxHEIGHT in pixels, e.g. 900x700", text));
+    throw std::invalid_argument(
+        fmt::format("--size '{}': expected WIDTHxHEIGHT in pixels, e.g. 900x700", text));
   if (w < 16 || h < 16 || w > 16384 || h > 16384)
     throw std::invalid_argument(fmt::format("--size '{}': each side must be 16 to 16384 pixels", text));
   return {w, h};
@@ -92,7 +93,8 @@ StreamlinePicture streamline_picture(const FlowResult& r) {
         p.saddle = q;
       }
     } else {
-      p.notes.push_back(fmt::format("numeric stagnation point at r = {}a: outside the window", num(s.r / g.a)));
+      p.notes.push_back(
+          fmt::format("numeric stagnation point at r = {}a: outside the window", num(s.r / g.a)));
     }
   }
   for (const auto& s : r.stagnation_exact) {
@@ -108,7 +110,8 @@ StreamlinePicture streamline_picture(const FlowResult& r) {
 ContourFieldPicture cp_picture(const FlowResult& r) {
   const PolarGrid& g = r.grid;
   if (r.fields.cp.empty()) throw std::runtime_error("plot: the result has no cp field");
-  if (r.fields.cp.size() != size_t(g.nodes())) throw std::runtime_error("plot: the cp field does not match the grid");
+  if (r.fields.cp.size() != size_t(g.nodes()))
+    throw std::runtime_error("plot: the cp field does not match the grid");
   ContourFieldPicture p;
   p.view = view_of(r, "pressure coefficient");
   p.field = polar(g, r.fields.cp);
@@ -195,8 +198,11 @@ CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference) {
   const double x_merge = by_gamma ? merge.Gamma() : merge.spin_ratio();
   const double bound = std::fabs(exact_flow(merge).cl());
 
-  LineCurve kj{by_gamma ? "Kutta–Joukowski, C_L = −Γ/(Ua)" : "Kutta–Joukowski, C_L = −2πα", {}, Colour::blue,
-               LineStyle::solid, 2.0};
+  LineCurve kj{by_gamma ? "Kutta–Joukowski, C_L = −Γ/(Ua)" : "Kutta–Joukowski, C_L = −2πα",
+               {},
+               Colour::blue,
+               LineStyle::solid,
+               2.0};
   for (double x : {xlo, xhi}) kj.points.push_back({x, exact_flow(scene_at(x)).cl()});
   f.lines.push_back(kj);
   if (!by_gamma) {
@@ -205,8 +211,12 @@ CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference) {
     f.lines.push_back(seed);
   } else if (s.base.spin != 0.0) {
     const double c = seed_cl(s.base);
-    LineCurve seed{fmt::format("seed estimate −4aω/U = {} (spin ω = {} rad/s, fixed)", num(c), num(s.base.spin)),
-                   {{xlo, c}, {xhi, c}}, Colour::green, LineStyle::dashed, 2.0};
+    LineCurve seed{
+        fmt::format("seed estimate −4aω/U = {} (spin ω = {} rad/s, fixed)", num(c), num(s.base.spin)),
+        {{xlo, c}, {xhi, c}},
+        Colour::green,
+        LineStyle::dashed,
+        2.0};
     f.lines.push_back(seed);
   }
   // The bound on the side of the data, and where it is reached.
@@ -217,7 +227,10 @@ CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference) {
     if (std::isfinite(c)) ylo = std::min(ylo, c), yhi = std::max(yhi, c);
   LineCurve prandtl{by_gamma ? fmt::format("Prandtl's bound |C_L| = 4π (Γ = ±{} m^2/s)", num(x_merge))
                              : std::string("Prandtl's bound |C_L| = 4π (α = ±2)"),
-                    {}, Colour::orange, LineStyle::dotted, 1.8};
+                    {},
+                    Colour::orange,
+                    LineStyle::dotted,
+                    1.8};
   bool labelled = false;
   for (double sign : {-1.0, 1.0}) {
     const bool side = sign < 0 ? ylo < 0.0 : yhi > 0.0;
@@ -233,7 +246,8 @@ CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference) {
       LineCurve vline = prandtl;
       vline.label.clear();
       vline.points = {{xm, std::min(ylo, -bound)}, {xm, std::max(yhi, bound)}};
-      vline.points = {{xm, sign < 0 ? std::min(ylo, -bound) : 0.0}, {xm, sign < 0 ? 0.0 : std::max(yhi, bound)}};
+      vline.points = {{xm, sign < 0 ? std::min(ylo, -bound) : 0.0},
+                      {xm, sign < 0 ? 0.0 : std::max(yhi, bound)}};
       f.lines.push_back(vline);
     }
   }
@@ -264,7 +278,8 @@ LiftSweep read_lift_sweep(const std::string& path) {
   const std::string xcol = s.by_circulation ? "/sweep/circulation" : "/sweep/alpha";
   s.x = f.dataset(xcol);
   s.cl = f.dataset("/sweep/cl");
-  if (s.x.size() != s.cl.size()) throw std::runtime_error(fmt::format("'{}': /sweep columns differ in length", path));
+  if (s.x.size() != s.cl.size())
+    throw std::runtime_error(fmt::format("'{}': /sweep columns differ in length", path));
   auto param = [&](const char* name, double dflt) {
     return f.has_attr("/parameters", name) ? f.attr_double("/parameters", name) : dflt;
   };
@@ -295,7 +310,8 @@ std::string output_base(const std::string& path, const std::string& dir_in) {
     if (!fs::is_directory(dir, ec)) {
       if (fs::exists(dir, ec)) throw std::runtime_error(fmt::format("-o '{}': not a directory", dir));
       fs::create_directories(dir, ec);
-      if (ec) throw std::runtime_error(fmt::format("-o '{}': cannot create the directory: {}", dir, ec.message()));
+      if (ec)
+        throw std::runtime_error(fmt::format("-o '{}': cannot create the directory: {}", dir, ec.message()));
     }
   }
   return (fs::path(dir) / stem_of(path)).string();
@@ -330,14 +346,16 @@ PlotOutcome plot_result_file(const std::string& path, const std::string& dir, Pl
   const std::string base = output_base(path, dir);
   const double U = r.c.scene.speed;
   if (r.fields.psi.empty()) {
-    out.skipped.push_back(fmt::format("streamlines skipped: '{}' has no /fields/psi (see output.fields)", path));
+    out.skipped.push_back(
+        fmt::format("streamlines skipped: '{}' has no /fields/psi (see output.fields)", path));
   } else {
     plot_streamlines(streamline_picture(r), base + "_streamlines.png", size);
     out.written.push_back(base + "_streamlines.png");
   }
   if (r.fields.cp.empty()) {
-    out.skipped.push_back(U > 0.0 ? fmt::format("Cp field skipped: '{}' has no /fields/cp (see output.fields)", path)
-                                  : std::string("Cp field skipped: Cp is undefined when U = 0"));
+    out.skipped.push_back(
+        U > 0.0 ? fmt::format("Cp field skipped: '{}' has no /fields/cp (see output.fields)", path)
+                : std::string("Cp field skipped: Cp is undefined when U = 0"));
   } else {
     plot_contour_field(cp_picture(r), base + "_cp.png", size);
     out.written.push_back(base + "_cp.png");

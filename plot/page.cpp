@@ -2,12 +2,12 @@
 
 #include <plplot.h>
 
+#include <fmt/core.h>
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fmt/core.h>
 #include <fstream>
 #include <iterator>
 #include <memory>
@@ -91,7 +91,8 @@ std::string check_png(const std::string& path, PlotSize size) {
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   static const unsigned char iend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
-  if (bytes.size() < 8 + 25 + 12 || std::memcmp(bytes.data(), sig, 8) != 0 || bytes.compare(12, 4, "IHDR") != 0)
+  if (bytes.size() < 8 + 25 + 12 || std::memcmp(bytes.data(), sig, 8) != 0 ||
+      bytes.compare(12, 4, "IHDR") != 0)
     return "PLplot produced no PNG image";
   auto be32 = [&](size_t at) {
     const auto* b = reinterpret_cast<const unsigned char*>(bytes.data()) + at;
@@ -100,7 +101,8 @@ std::string check_png(const std::string& path, PlotSize size) {
   if (be32(16) != (unsigned long)size.width || be32(20) != (unsigned long)size.height)
     return fmt::format("PLplot produced a {}x{} image instead of {}x{}", be32(16), be32(20), size.width,
                        size.height);
-  if (std::memcmp(bytes.data() + bytes.size() - 12, iend, 12) != 0) return "the PNG is truncated (disk full?)";
+  if (std::memcmp(bytes.data() + bytes.size() - 12, iend, 12) != 0)
+    return "the PNG is truncated (disk full?)";
   return {};
 }
 
@@ -126,17 +128,28 @@ double display_length(const std::string& t) {
 
 PLINT pen(Colour c) {
   switch (c) {
-    case Colour::blue: return kBlue;
-    case Colour::red: return kRed;
-    case Colour::green: return kGreen;
-    case Colour::purple: return kPurple;
-    case Colour::orange: return kOrange;
-    case Colour::teal: return kTeal;
-    case Colour::brown: return kBrown;
-    case Colour::magenta: return kMagenta;
-    case Colour::olive: return kOlive;
-    case Colour::black: return kBlack;
-    case Colour::grey: return kDarkGrey;
+    case Colour::blue:
+      return kBlue;
+    case Colour::red:
+      return kRed;
+    case Colour::green:
+      return kGreen;
+    case Colour::purple:
+      return kPurple;
+    case Colour::orange:
+      return kOrange;
+    case Colour::teal:
+      return kTeal;
+    case Colour::brown:
+      return kBrown;
+    case Colour::magenta:
+      return kMagenta;
+    case Colour::olive:
+      return kOlive;
+    case Colour::black:
+      return kBlack;
+    case Colour::grey:
+      return kDarkGrey;
   }
   return kBlack;
 }
@@ -157,7 +170,8 @@ double nice_step(double x) {
 void render_png(const std::string& png, PlotSize size, const std::function<void(plstream&)>& draw) {
   if (png.empty()) throw std::runtime_error("plot: empty output file name");
   if (size.width < 16 || size.height < 16 || size.width > 16384 || size.height > 16384)
-    fail(png, fmt::format("image size {}x{} out of range (16 to 16384 pixels a side)", size.width, size.height));
+    fail(png,
+         fmt::format("image size {}x{} out of range (16 to 16384 pixels a side)", size.width, size.height));
 
   std::lock_guard<std::mutex> lock(plplot_mutex());
   std::unique_ptr<AtomicFile> out;
@@ -173,7 +187,8 @@ void render_png(const std::string& png, PlotSize size, const std::function<void(
   bool file_owned = true;
   try {
     // An unknown device would make plinit prompt on stdin: check first.
-    if (!have_device("pngcairo")) fail(png, "the PLplot pngcairo driver is not installed (plplot-driver-cairo)");
+    if (!have_device("pngcairo"))
+      fail(png, "the PLplot pngcairo driver is not installed (plplot-driver-cairo)");
     PLINT errcode = 0;
     char errmsg[1024] = {0};
     {
@@ -181,7 +196,8 @@ void render_png(const std::string& png, PlotSize size, const std::function<void(
       pls.sError(&errcode, errmsg);  // plabort messages go here instead of stderr
       pls.sdev("pngcairo");
       const std::string geometry = fmt::format("{}x{}", size.width, size.height);
-      if (pls.setopt("geometry", geometry.c_str()) != 0) fail(png, "PLplot rejected the geometry " + geometry);
+      if (pls.setopt("geometry", geometry.c_str()) != 0)
+        fail(png, "PLplot rejected the geometry " + geometry);
       pls.scmap0(kPalR, kPalG, kPalB, 16);
       pls.scolbg(255, 255, 255);
       pls.sfile(file);
@@ -371,7 +387,8 @@ bool usable(const CurvePoint& p, bool logx, bool logy) {
   return std::isfinite(p.x) && std::isfinite(p.y) && (!logx || p.x > 0) && (!logy || p.y > 0);
 }
 
-void markers(plstream& pls, const std::vector<CurvePoint>& pts, const char* glyph, PLINT p, bool logx, bool logy) {
+void markers(plstream& pls, const std::vector<CurvePoint>& pts, const char* glyph, PLINT p, bool logx,
+             bool logy) {
   std::vector<PLFLT> x, y;
   for (const auto& q : pts)
     if (usable(q, logx, logy)) {

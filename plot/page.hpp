@@ -13,8 +13,21 @@ namespace magnus::page {
 
 /// Palette (cmap0). Index 0 is the background; every pen is dark enough to read on white.
 enum Pen : PLINT {
-  kWhite = 0, kBlack = 1, kRed = 2, kBlue = 3, kGreen = 4, kGrey = 5, kOrange = 6, kPurple = 7,
-  kLightGrey = 8, kBrown = 9, kTeal = 10, kMagenta = 11, kOlive = 12, kNavy = 13, kDarkGrey = 14,
+  kWhite = 0,
+  kBlack = 1,
+  kRed = 2,
+  kBlue = 3,
+  kGreen = 4,
+  kGrey = 5,
+  kOrange = 6,
+  kPurple = 7,
+  kLightGrey = 8,
+  kBrown = 9,
+  kTeal = 10,
+  kMagenta = 11,
+  kOlive = 12,
+  kNavy = 13,
+  kDarkGrey = 14,
   kPaleGrey = 15
 };
 
@@ -61,7 +74,8 @@ LegendEntry symbol_entry(std::string text, PLINT pen, const char* glyph, double 
 LegendEntry text_entry(std::string text);
 
 /// Estimated legend size (width, height) as fractions of the page at the current text height.
-std::pair<double, double> legend_size(plstream& pls, const std::vector<LegendEntry>& entries, int columns = 1);
+std::pair<double, double> legend_size(plstream& pls, const std::vector<LegendEntry>& entries,
+                                      int columns = 1);
 
 /// Draws a boxed legend with its top-left corner at (x, y), fractions of the page (y upwards); returns
 /// the box drawn (fractions: x0, x1, y0, y1). Leaves the whole page as the viewport.
@@ -83,8 +97,8 @@ void frame_axes(plstream& pls, const char* xopt, const char* yopt, const std::st
 void disc(plstream& pls, double x, double y, double rad, PLINT fill_pen, PLINT edge_pen, double edge_width);
 
 /// Markers (a UTF-8 glyph, centred) at the points (log10 taken on log axes); size from the text height.
-void markers(plstream& pls, const std::vector<CurvePoint>& pts, const char* glyph, PLINT pen, bool logx = false,
-             bool logy = false);
+void markers(plstream& pls, const std::vector<CurvePoint>& pts, const char* glyph, PLINT pen,
+             bool logx = false, bool logy = false);
 
 /// True when the point can be drawn (finite, positive on a log axis).
 bool usable(const CurvePoint& p, bool logx, bool logy);

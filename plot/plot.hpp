@@ -36,12 +36,12 @@ struct PixelRect {
 /// Where a picture was drawn: the plot box, the window (axis units) it shows, and the boxes of the
 /// legend and the colour bar (empty when there is none).
 struct PlotFrame {
-  PixelRect box;                       ///< the plot box (its frame lines)
+  PixelRect box;                          ///< the plot box (its frame lines)
   double x0 = 0, x1 = 0, y0 = 0, y1 = 0;  ///< axis range shown in the box (log10 on a log axis)
-  PixelRect legend;                    ///< the legend's box
-  PixelRect colour_bar;                ///< the colour bar's shaded strip
-  double bar_lo = 0, bar_hi = 0;       ///< the values at the bottom and top of the colour bar
-  std::vector<double> levels;          ///< contour levels drawn (field plots)
+  PixelRect legend;                       ///< the legend's box
+  PixelRect colour_bar;                   ///< the colour bar's shaded strip
+  double bar_lo = 0, bar_hi = 0;          ///< the values at the bottom and top of the colour bar
+  std::vector<double> levels;             ///< contour levels drawn (field plots)
   /// Pixel column of axis value x (inside the box when x0 ≤ x ≤ x1).
   double px(double x) const { return box.x0 + (x - x0) / (x1 - x0) * (box.x1 - box.x0); }
   /// Pixel row of axis value y.

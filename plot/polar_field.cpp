@@ -35,7 +35,8 @@ double trig_eval(const std::vector<double>& a, const std::vector<double>& b, siz
   double s = 0.5 * a[0];
   for (size_t k = 1; k <= m; ++k) {
     const double w = (n % 2 == 0 && k == m) ? 0.5 : 1.0;
-    s += w * (a[k] * std::cos(double(k) * th) + (k == m && n % 2 == 0 ? 0.0 : b[k] * std::sin(double(k) * th)));
+    s += w *
+         (a[k] * std::cos(double(k) * th) + (k == m && n % 2 == 0 ? 0.0 : b[k] * std::sin(double(k) * th)));
   }
   return s;
 }

@@ -27,7 +27,7 @@ BenchRow run_rung(const Case& c, const BenchOptions& opt) {
   const int repeats = std::max(1, opt.repeats);
   for (int rep = 0; rep < repeats; ++rep) {
     const double t0 = now_s();
-    const Discretization d = discretize(c, opt.threads);                 // grid, operator, factor
+    const Discretization d = discretize(c, opt.threads);  // grid, operator, factor
     const double t1 = now_s();
     const std::vector<double> psi = d.solver->solve(c.scene.speed, c.scene.Gamma());
     const double t2 = now_s();
@@ -41,7 +41,8 @@ BenchRow run_rung(const Case& c, const BenchOptions& opt) {
     solve.push_back(t2 - t1);
     post.push_back(t3 - t2);
     if (rep == 0) {
-      const Errors e = compute_errors(c.scene, psi, exact_flow(c.scene).psi_field(d.grid.r, d.grid.theta), s, f);
+      const Errors e =
+          compute_errors(c.scene, psi, exact_flow(c.scene).psi_field(d.grid.r, d.grid.theta), s, f);
       row.n_r = d.grid.n_r;
       row.unknowns = d.solver->op().unknowns();
       row.cl_rel = *e.cl_rel;  // U > 0: run_bench refuses U = 0
@@ -57,14 +58,14 @@ BenchRow run_rung(const Case& c, const BenchOptions& opt) {
   return row;
 }
 
-
 }  // namespace
 
 std::vector<BenchRow> run_bench(const Case& base, const BenchOptions& opt,
                                 const std::function<void(const std::string&)>& progress) {
   if (!(base.scene.speed > 0.0))
-    throw std::runtime_error("bench: flow.speed = 0: C_L and its error are undefined without a freestream; "
-                             "bench needs flow.speed > 0");
+    throw std::runtime_error(
+        "bench: flow.speed = 0: C_L and its error are undefined without a freestream; "
+        "bench needs flow.speed > 0");
   std::vector<BenchRow> rows;
   size_t total = opt.methods.size() * opt.stencils.size() * opt.ladder.size(), done = 0;
   for (Method m : opt.methods)
@@ -92,7 +93,8 @@ std::vector<BenchRow> run_bench(const Case& base, const BenchOptions& opt,
         if (prev) {
           const double ratio = std::log(double(row.n_theta) / prev->n_theta);
           if (row.cl_rel > 0 && prev->cl_rel > 0) row.order_cl = std::log(prev->cl_rel / row.cl_rel) / ratio;
-          if (row.psi_rel > 0 && prev->psi_rel > 0) row.order_psi = std::log(prev->psi_rel / row.psi_rel) / ratio;
+          if (row.psi_rel > 0 && prev->psi_rel > 0)
+            row.order_psi = std::log(prev->psi_rel / row.psi_rel) / ratio;
         }
         rows.push_back(row);
         prev = &rows.back();

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "physics/exact.hpp"
 #include "mesh/fd_weights.hpp"
+#include "physics/exact.hpp"
 
 namespace magnus {
 
@@ -34,8 +34,8 @@ FieldSelection select_fields(const std::optional<std::vector<std::string>>& name
 }
 
 const std::vector<double>& Fields::get(const std::string& name) const {
-  const std::vector<double>* all[] = {&psi, &u_r, &u_theta, &u_x, &u_y,
-                                      &pressure, &cp, &psi_exact, &psi_error};
+  const std::vector<double>* all[] = {&psi,      &u_r, &u_theta,   &u_x,      &u_y,
+                                      &pressure, &cp,  &psi_exact, &psi_error};
   return *all[field_index(name)];
 }
 
@@ -85,8 +85,7 @@ Fields compute_fields(const PolarGrid& g, const Scene& scene, const std::vector<
     double* uri = &ur[size_t(i) * n];
     for (int j = 0; j < n; ++j) {
       double d = 0.0;
-      for (size_t m = 0; m < cw.size(); ++m)
-        d += cw[m] * (row[(j + m + 1) % n] - row[(j + n - (m + 1)) % n]);
+      for (size_t m = 0; m < cw.size(); ++m) d += cw[m] * (row[(j + m + 1) % n] - row[(j + n - (m + 1)) % n]);
       uri[j] = d * inv_r;  // u_r = (1/r) ∂ψ/∂θ
       uti[j] *= -inv_r;    // u_θ = −∂ψ/∂r = −(1/r) ∂ψ/∂ξ
     }

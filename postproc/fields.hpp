@@ -26,11 +26,11 @@ struct Fields {
 
 /// Values on the body r = a (n_θ).
 struct Surface {
-  std::vector<double> theta;     ///< rad
-  std::vector<double> u_theta;   ///< m/s, = u_mean + u_fluct
-  double u_mean = 0.0;           ///< ū, the mean of u_θ (the circulation's part, Γ/(2πa)), m/s
-  std::vector<double> u_fluct;   ///< u' = u_θ − ū, m/s
-  std::vector<double> pressure;  ///< Pa
+  std::vector<double> theta;         ///< rad
+  std::vector<double> u_theta;       ///< m/s, = u_mean + u_fluct
+  double u_mean = 0.0;               ///< ū, the mean of u_θ (the circulation's part, Γ/(2πa)), m/s
+  std::vector<double> u_fluct;       ///< u' = u_θ − ū, m/s
+  std::vector<double> pressure;      ///< Pa
   std::vector<double> cp, cp_exact;  ///< empty when U = 0 (undefined)
 };
 

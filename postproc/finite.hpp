@@ -6,7 +6,8 @@
 namespace magnus {
 
 /// The first reported figure or field of a result that is not finite, by name ("lift F_y", "field pressure
-/// at (i, j) = (3, 7)"); "" if every one is. Undefined figures (empty optionals) are not reported, so not checked.
+/// at (i, j) = (3, 7)"); "" if every one is. Undefined figures (empty optionals) are not reported, so not
+/// checked.
 std::string first_non_finite(const FlowResult& r);
 
 /// Throws std::runtime_error with one line naming the quantity if first_non_finite(r) is not empty.

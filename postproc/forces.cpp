@@ -28,8 +28,10 @@ Forces compute_forces(const Scene& scene, const Surface& s) {
   f.delta_p_top_bottom = 0.5 * rho * (bottom - top) * (bottom + top);
   f.delta_p_top_bottom_exact = ex.delta_p_top_bottom(rho);
   f.delta_p_seed_estimate = seed_delta_p(scene);
-  if (!scene.circulation_given) f.magnus_S_exact = 2.0 * M_PI * rho * a * a;
-  else if (omega != 0.0) f.magnus_S_exact = rho * scene.Gamma() / omega;
+  if (!scene.circulation_given)
+    f.magnus_S_exact = 2.0 * M_PI * rho * a * a;
+  else if (omega != 0.0)
+    f.magnus_S_exact = rho * scene.Gamma() / omega;
   if (U > 0.0) {
     const double q_ref = 0.5 * rho * U * U * 2.0 * a;
     f.cl = f.lift / q_ref;
@@ -89,7 +91,9 @@ Errors compute_errors(const Scene& scene, const std::vector<double>& psi, const 
   }
   if (scene.speed > 0.0) e.cl_rel = lift_error(scene, f);  // U = 0: C_L, and so its error, is undefined
   const double G = scene.Gamma();
-  const double scale = G != 0.0 ? std::fabs(G) : scene.speed > 0.0 ? 2.0 * M_PI * scene.radius * scene.speed : 1.0;
+  const double scale = G != 0.0            ? std::fabs(G)
+                       : scene.speed > 0.0 ? 2.0 * M_PI * scene.radius * scene.speed
+                                           : 1.0;
   e.circulation_rel = std::fabs(f.circulation_measured - G) / scale;
   return e;
 }

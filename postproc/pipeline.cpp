@@ -14,17 +14,19 @@ Discretization discretize(const Case& c, int threads, size_t max_bytes, int fiel
   check_grid_memory(c.grid, c.solver.stencil, method, fields, max_bytes);
   const double t0 = now_s();
   Discretization d;
-  d.grid = make_grid(c.grid, c.scene.radius);                                     // make grid
-  const DiscreteOperator op = make_operator(d.grid, c.solver.stencil, c.grid.far_field);  // stencils, closures
+  d.grid = make_grid(c.grid, c.scene.radius);  // make grid
+  const DiscreteOperator op =
+      make_operator(d.grid, c.solver.stencil, c.grid.far_field);  // stencils, closures
   d.setup_s = now_s() - t0;
-  d.solver = make_solver(d.grid, op, method, threads, max_bytes);                 // assemble and factor
+  d.solver = make_solver(d.grid, op, method, threads, max_bytes);  // assemble and factor
   return d;
 }
 
 std::optional<double> lift_coefficient(const Case& c, int threads) {
   const Discretization d = discretize(c, threads);
   const std::vector<double> psi = d.solver->solve(c.scene.speed, c.scene.Gamma());
-  return compute_forces(c.scene, compute_surface(d.grid, c.scene, psi, derivative_order(c.solver.stencil))).cl;
+  return compute_forces(c.scene, compute_surface(d.grid, c.scene, psi, derivative_order(c.solver.stencil)))
+      .cl;
 }
 
 RunPlan plan_run(const Case& requested, int threads, size_t max_bytes) {
@@ -48,8 +50,8 @@ FlowResult run_planned(const RunPlan& plan, int threads, size_t max_bytes) {
   const FieldSelection sel = select_fields(c.output.fields);
   int fields = 0;
   for (bool on : sel.on) fields += on;
-  const Discretization d = discretize(c, threads, max_bytes, fields);          // the memory guard, then factor
-  const PsiBasis basis = solve_basis(*d.solver);                               // solve ψ_U, ψ_Γ
+  const Discretization d = discretize(c, threads, max_bytes, fields);  // the memory guard, then factor
+  const PsiBasis basis = solve_basis(*d.solver);                       // solve ψ_U, ψ_Γ
   const double t1 = now_s();
   FlowResult r = postprocess(d.grid, c, basis.psi_U, basis.psi_Gamma, sel);
   r.timing.assemble_s = d.setup_s + d.solver->timing.assemble_s;
@@ -63,8 +65,8 @@ FlowResult run_planned(const RunPlan& plan, int threads, size_t max_bytes) {
     r.info.estimated_cl_rel = plan.choice.estimated_cl_rel;
     r.info.grid_choice = fmt::format(
         "chosen for C_L tolerance {:.3g}: n_θ = {}, {} spacing, {} stencil (grids tried {}, {:.3g} ms)",
-        c.grid.tolerance, c.grid.n_theta, to_string(c.grid.spacing), to_string(c.solver.stencil), plan.choice.trail,
-        plan.choice_s * 1e3);
+        c.grid.tolerance, c.grid.n_theta, to_string(c.grid.spacing), to_string(c.solver.stencil),
+        plan.choice.trail, plan.choice_s * 1e3);
   }
   check_finite(r);  // the last line of defence: nothing not finite is printed or written
   return r;

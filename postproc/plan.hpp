@@ -9,8 +9,8 @@ namespace magnus {
 
 /// The case with its grid and stencil resolved, and how they were chosen.
 struct RunPlan {
-  Case c;             ///< grid.n_theta, n_r, spacing and solver.stencil as they will run
-  GridChoice choice;  ///< the tolerance search's result (n_theta = 0: no search)
+  Case c;                 ///< grid.n_theta, n_r, spacing and solver.stencil as they will run
+  GridChoice choice;      ///< the tolerance search's result (n_theta = 0: no search)
   double choice_s = 0.0;  ///< wall seconds of the search
 };
 

@@ -12,12 +12,14 @@ FlowResult postprocess(const PolarGrid& g, const Case& c, const std::vector<doub
   FlowResult r;
   r.c = c;
   r.grid = g;
-  const std::vector<double> psi_exact = exact_flow(scene).psi_field(g.r, g.theta);  // once: fields and error norms
+  const std::vector<double> psi_exact =
+      exact_flow(scene).psi_field(g.r, g.theta);  // once: fields and error norms
   r.fields = compute_fields(g, scene, psi, psi_exact, sel, order);
-  r.surface = surface_from_basis(g, scene, surface_u_theta(g, psi_U, order), surface_u_theta(g, psi_Gamma, order));
+  r.surface =
+      surface_from_basis(g, scene, surface_u_theta(g, psi_U, order), surface_u_theta(g, psi_Gamma, order));
   r.forces = compute_forces(scene, r.surface);
   r.stagnation = find_stagnation_points(g, scene, r.surface.u_theta,
-                                       [&](double theta) { return u_theta_on_ray(g, psi, theta, order); });
+                                        [&](double theta) { return u_theta_on_ray(g, psi, theta, order); });
   r.stagnation_exact = exact_flow(scene).stagnation_points();
   r.errors = compute_errors(scene, psi, psi_exact, r.surface, r.forces);
   return r;

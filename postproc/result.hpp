@@ -15,8 +15,8 @@ struct Timing {
 /// What a run reports besides the fields: which method ran, the grid choice, the error estimate.
 struct RunInfo {
   std::string method = "fft";
-  std::string grid_choice;                 ///< how the grid was chosen (tolerance mode)
-  double estimated_cl_rel = -1.0;          ///< a-posteriori estimate, < 0 if none
+  std::string grid_choice;         ///< how the grid was chosen (tolerance mode)
+  double estimated_cl_rel = -1.0;  ///< a-posteriori estimate, < 0 if none
   int threads = 1;
 };
 

@@ -6,8 +6,8 @@
 
 namespace magnus {
 
-FlowBasis flow_basis(const PolarGrid& g, const std::vector<double>& psi_U, const std::vector<double>& psi_Gamma,
-                     int order) {
+FlowBasis flow_basis(const PolarGrid& g, const std::vector<double>& psi_U,
+                     const std::vector<double>& psi_Gamma, int order) {
   FlowBasis b;
   b.grid = g;
   b.surface_U = surface_u_theta(g, psi_U, order);
@@ -19,7 +19,6 @@ FlowBasis flow_basis(const PolarGrid& g, const std::vector<double>& psi_U, const
   return b;
 }
 
-
 SweepPoint evaluate(const FlowBasis& b, const Scene& scene) {
   const double U = scene.speed, Gamma = scene.Gamma();
   SweepPoint p;
@@ -27,7 +26,8 @@ SweepPoint evaluate(const FlowBasis& b, const Scene& scene) {
   const Surface s = surface_from_basis(b.grid, scene, b.surface_U, b.surface_Gamma);
   p.forces = compute_forces(scene, s);
   p.stagnation = find_stagnation_points(b.grid, scene, s.u_theta, [&](double theta) {
-    return theta < M_PI ? superpose(U, b.up_U, Gamma, b.up_Gamma) : superpose(U, b.down_U, Gamma, b.down_Gamma);
+    return theta < M_PI ? superpose(U, b.up_U, Gamma, b.up_Gamma)
+                        : superpose(U, b.down_U, Gamma, b.down_Gamma);
   });
   p.stagnation_exact = exact_flow(scene).stagnation_points();
   p.cl_rel = lift_error(scene, p.forces);

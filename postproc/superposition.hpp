@@ -15,8 +15,8 @@ struct FlowBasis {
 };
 
 /// Basis from ψ_U (U = 1 m/s, Γ = 0) and ψ_Γ (U = 0, Γ = 1 m²/s) with derivatives of the given order.
-FlowBasis flow_basis(const PolarGrid& g, const std::vector<double>& psi_U, const std::vector<double>& psi_Gamma,
-                     int order);
+FlowBasis flow_basis(const PolarGrid& g, const std::vector<double>& psi_U,
+                     const std::vector<double>& psi_Gamma, int order);
 
 /// One (U, Γ) point: forces, stagnation points and the lift error against Kutta–Joukowski.
 struct SweepPoint {

@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <thread>
 
-#include "postproc/tolerance.hpp"
 #include "postproc/pipeline.hpp"
+#include "postproc/tolerance.hpp"
 
 namespace magnus {
 
@@ -41,7 +41,8 @@ class CountingSolver : public PsiSolver {
 };
 
 /// Evaluate every point's scene from the two solves of the base case's discretization.
-SweepResult sweep_scenes(const Case& base, const std::vector<Scene>& scenes, SweepVariable variable, int threads) {
+SweepResult sweep_scenes(const Case& base, const std::vector<Scene>& scenes, SweepVariable variable,
+                         int threads) {
   const double t0 = now_s();
   SweepResult s;
   s.base = base;
@@ -86,22 +87,25 @@ Case sweep_case(const Case& c, SweepVariable variable, int threads, std::string&
   Case p = c;
   if (c.grid.tolerance > 0.0) {
     Case probe = p;
-    if (variable == SweepVariable::spin_ratio) probe.scene.spin = c.scene.speed / c.scene.radius;
-    else probe.scene.circulation_value = 2.0 * M_PI * c.scene.radius * c.scene.speed;
+    if (variable == SweepVariable::spin_ratio)
+      probe.scene.spin = c.scene.speed / c.scene.radius;
+    else
+      probe.scene.circulation_value = 2.0 * M_PI * c.scene.radius * c.scene.speed;
     const GridChoice g = choose_grid(probe, std::max(1, threads));
     p.grid.n_theta = g.n_theta;
     p.grid.n_r = 0;
     p.solver.stencil = g.stencil;
-    choice = fmt::format("chosen for C_L tolerance {:.3g}: n_θ = {}, {} stencil (estimate {:.3g}; grids tried {})",
-                         c.grid.tolerance, g.n_theta, to_string(g.stencil), g.estimated_cl_rel, g.trail);
+    choice =
+        fmt::format("chosen for C_L tolerance {:.3g}: n_θ = {}, {} stencil (estimate {:.3g}; grids tried {})",
+                    c.grid.tolerance, g.n_theta, to_string(g.stencil), g.estimated_cl_rel, g.trail);
   }
   return p;
 }
 
 /// Sweep: one scene per value, set(scene, value) varies it; the result records the grid and stencil that ran.
 template <class Set>
-SweepResult sweep_values(const Case& c, const std::vector<double>& values, SweepVariable variable, int threads,
-                         const Set& set) {
+SweepResult sweep_values(const Case& c, const std::vector<double>& values, SweepVariable variable,
+                         int threads, const Set& set) {
   std::string choice;
   const Case solved = sweep_case(c, variable, threads, choice);
   std::vector<Scene> scenes(values.size(), solved.scene);
@@ -115,20 +119,24 @@ SweepResult sweep_values(const Case& c, const std::vector<double>& values, Sweep
 
 SweepResult sweep_spin_ratio(const Case& c, const std::vector<double>& alphas, int threads) {
   if (!(c.scene.speed > 0.0))
-    throw std::invalid_argument("a spin-ratio sweep needs flow.speed > 0: with U = 0 the spin ratio α = aω/U is undefined");
+    throw std::invalid_argument(
+        "a spin-ratio sweep needs flow.speed > 0: with U = 0 the spin ratio α = aω/U is undefined");
   if (c.scene.circulation_given)
     throw std::invalid_argument(
-        "--spin-ratio varies the spin, but circulation.model = \"given\" fixes Γ: use --circulation A:B:STEP instead");
+        "--spin-ratio varies the spin, but circulation.model = \"given\" fixes Γ: use --circulation A:B:STEP "
+        "instead");
   return sweep_values(c, alphas, SweepVariable::spin_ratio, threads,
                       [](Scene& s, double alpha) { s.spin = alpha * s.speed / s.radius; });
 }
 
 SweepResult sweep_circulation(const Case& c, const std::vector<double>& circulations, int threads) {
   if (!(c.scene.speed > 0.0))
-    throw std::invalid_argument("a circulation sweep needs flow.speed > 0: with U = 0 the lift coefficients are undefined");
+    throw std::invalid_argument(
+        "a circulation sweep needs flow.speed > 0: with U = 0 the lift coefficients are undefined");
   if (!c.scene.circulation_given)
     throw std::invalid_argument(
-        "--circulation needs circulation.model = \"given\" (add --set circulation.model=given), or use --spin-ratio");
+        "--circulation needs circulation.model = \"given\" (add --set circulation.model=given), or use "
+        "--spin-ratio");
   return sweep_values(c, circulations, SweepVariable::circulation, threads,
                       [](Scene& s, double Gamma) { s.circulation_value = Gamma; });
 }
@@ -146,14 +154,17 @@ SweepRow sweep_row(const SweepResult& s, const SweepPoint& p) {
   const Forces& f = p.forces;
   SweepRow w{};
   w.circulation = scene.Gamma();
-  w.alpha = s.variable == SweepVariable::spin_ratio ? scene.spin_ratio()
-                                                    : w.circulation / (2.0 * M_PI * scene.radius * scene.speed);
+  w.alpha = s.variable == SweepVariable::spin_ratio
+                ? scene.spin_ratio()
+                : w.circulation / (2.0 * M_PI * scene.radius * scene.speed);
   w.lift = f.lift;
   w.drag = f.drag;
   w.cl = f.cl.value_or(kNaN);
   w.cl_kj = f.cl_kutta_joukowski.value_or(kNaN);
   w.cl_seed = f.cl_seed_estimate.value_or(kNaN);
-  w.cl_rel_kj = f.cl && f.cl_kutta_joukowski && *f.cl_kutta_joukowski != 0.0 ? *f.cl / *f.cl_kutta_joukowski - 1.0 : kNaN;
+  w.cl_rel_kj = f.cl && f.cl_kutta_joukowski && *f.cl_kutta_joukowski != 0.0
+                    ? *f.cl / *f.cl_kutta_joukowski - 1.0
+                    : kNaN;
   w.kj_over_seed = f.cl_kutta_joukowski && f.cl_seed_estimate && *f.cl_seed_estimate != 0.0
                        ? *f.cl_kutta_joukowski / *f.cl_seed_estimate
                        : kNaN;

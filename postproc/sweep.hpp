@@ -15,13 +15,13 @@ enum class SweepVariable { spin_ratio, circulation };
 /// A whole sweep: the base case, the points (each with its case: speed, spin, circulation), and
 /// what solving cost.
 struct SweepResult {
-  Case base;                      ///< the resolved case the sweep starts from
+  Case base;  ///< the resolved case the sweep starts from
   SweepVariable variable = SweepVariable::spin_ratio;
   PolarGrid grid;
-  std::string method;             ///< the linear solver that ran ("fft" | "cholmod")
-  std::string grid_choice;        ///< how grid.tolerance chose the grid ("" without a tolerance)
+  std::string method;       ///< the linear solver that ran ("fft" | "cholmod")
+  std::string grid_choice;  ///< how grid.tolerance chose the grid ("" without a tolerance)
   std::vector<SweepPoint> points;
-  int linear_solves = 0;          ///< right-hand sides solved with the factorization: 2
+  int linear_solves = 0;  ///< right-hand sides solved with the factorization: 2
   double assemble_s = 0.0, factor_s = 0.0, solve_s = 0.0, evaluate_s = 0.0, total_s = 0.0;
 };
 
@@ -36,11 +36,11 @@ SweepResult sweep_circulation(const Case& c, const std::vector<double>& circulat
 
 /// One row of the table, derived from a point; undefined values are NaN.
 struct SweepRow {
-  double alpha;          ///< spin ratio aω/U (spin sweep) or Γ/(2πaU) (circulation sweep)
-  double circulation;    ///< Γ, m²/s
-  double lift, drag;     ///< N/m
+  double alpha;        ///< spin ratio aω/U (spin sweep) or Γ/(2πaU) (circulation sweep)
+  double circulation;  ///< Γ, m²/s
+  double lift, drag;   ///< N/m
   double cl, cl_kj, cl_seed, cl_rel_kj, kj_over_seed, cd;
-  double delta_p, delta_p_seed;  ///< Pa
+  double delta_p, delta_p_seed;                            ///< Pa
   double stag_theta1_deg, stag_theta2_deg, stag_r_over_a;  ///< free point: θ1 = 90 or 270, θ2 = NaN
 };
 SweepRow sweep_row(const SweepResult& s, const SweepPoint& p);

@@ -18,7 +18,8 @@ double lift_on(Case c, int n_theta, int threads, size_t max_bytes) {
   c.grid.n_r = 0;
   const Discretization d = discretize(c, threads, max_bytes);
   const std::vector<double> psi = d.solver->solve(c.scene.speed, c.scene.Gamma());
-  return *compute_forces(c.scene, compute_surface(d.grid, c.scene, psi, derivative_order(c.solver.stencil))).cl;
+  return *compute_forces(c.scene, compute_surface(d.grid, c.scene, psi, derivative_order(c.solver.stencil)))
+              .cl;
 }
 
 /// n_r·n_θ of the grid with n_θ = n and square cells.
@@ -29,7 +30,9 @@ long nodes_of(Case c, int n) {
   return g.n_r * g.n_theta;
 }
 
-double relative(double diff, double cl) { return std::fabs(cl) > 1e-12 ? std::fabs(diff / cl) : std::fabs(diff); }
+double relative(double diff, double cl) {
+  return std::fabs(cl) > 1e-12 ? std::fabs(diff / cl) : std::fabs(diff);
+}
 
 /// Round-off in C_L on an n_θ grid, which Richardson cannot see: about 0.25·ε·n_θ² (measured by the
 /// stability suite: the discrete Laplacian's conditioning times the wall derivative's 1/h).
@@ -40,13 +43,16 @@ double roundoff(int n) { return 0.25 * 2.220446049250313e-16 * double(n) * n; }
 GridChoice choose_grid(const Case& base, int threads, size_t max_bytes, long max_nodes) {
   const double tol = base.grid.tolerance;
   if (!(base.scene.speed > 0.0))
-    throw std::runtime_error("grid.tolerance needs flow.speed > 0: the lift coefficient is undefined at U = 0");
+    throw std::runtime_error(
+        "grid.tolerance needs flow.speed > 0: the lift coefficient is undefined at U = 0");
   if (base.grid.far_field == FarField::freestream) {
     const double floor = 1.0 / (base.grid.outer_radius * base.grid.outer_radius);
     if (tol < 2.0 * floor)
-      throw std::runtime_error(fmt::format(
-          "grid.tolerance = {:.3g} cannot be met with domain.far_field = \"freestream\" at R/a = {:.6g}: its error "
-          "floor is (a/R)² = {:.3g}; use far_field = \"exact\" (no floor)", tol, base.grid.outer_radius, floor));
+      throw std::runtime_error(
+          fmt::format("grid.tolerance = {:.3g} cannot be met with domain.far_field = \"freestream\" at R/a = "
+                      "{:.6g}: its error "
+                      "floor is (a/R)² = {:.3g}; use far_field = \"exact\" (no floor)",
+                      tol, base.grid.outer_radius, floor));
   }
   Case c = base;
   if (!base.grid.spacing_given) c.grid.spacing = Spacing::geometric;  // 6th order: the smallest grid
@@ -63,8 +69,8 @@ GridChoice choose_grid(const Case& base, int threads, size_t max_bytes, long max
   for (;;) {
     const int n2 = 2 * n;
     if (n2 > n_max)
-      throw std::runtime_error(fmt::format("grid.tolerance = {:.3g} needs n_theta > {} (estimate {:.3g} at {})", tol,
-                                           n_max, est_prev, n));
+      throw std::runtime_error(fmt::format(
+          "grid.tolerance = {:.3g} needs n_theta > {} (estimate {:.3g} at {})", tol, n_max, est_prev, n));
     const double cl2 = lift_on(c, n2, threads, max_bytes);
     const double est = relative(cl2 - cl, cl2) / (std::pow(2.0, p) - 1.0) + roundoff(n2);
     choice.trail += " → " + std::to_string(n2);
@@ -102,25 +108,28 @@ GridChoice choose_grid(const Case& base, int threads, size_t max_bytes, long max
           geo.grid.n_theta = gc.n_theta;
           geo.grid.n_r = 0;
           const GridShape gg = grid_shape(geo.grid);
-          alternative = fmt::format("; grid.spacing = \"geometric\" (9-point stencil, order 6) meets it with {} × {}",
-                                    gg.n_theta, gg.n_r);
+          alternative =
+              fmt::format("; grid.spacing = \"geometric\" (9-point stencil, order 6) meets it with {} × {}",
+                          gg.n_theta, gg.n_r);
         } catch (const std::runtime_error&) {
           alternative = "; try grid.spacing = \"geometric\" (9-point stencil, order 6)";
         }
       } else {
         alternative = "; ask for a larger tolerance";
       }
-      throw std::runtime_error(fmt::format(
-          "grid.tolerance = {:g} with grid.spacing = \"{}\" needs about n_θ × n_r = {} × {} ({:.3g} nodes, {} per "
-          "field), more than the limit of {} nodes{}",
-          tol, to_string(c.grid.spacing), g.n_theta, g.n_r, double(g.n_r) * g.n_theta,
-          format_bytes(size_t(8 * g.n_r * g.n_theta)), max_nodes, alternative));
+      throw std::runtime_error(
+          fmt::format("grid.tolerance = {:g} with grid.spacing = \"{}\" needs about n_θ × n_r = {} × {} "
+                      "({:.3g} nodes, {} per "
+                      "field), more than the limit of {} nodes{}",
+                      tol, to_string(c.grid.spacing), g.n_theta, g.n_r, double(g.n_r) * g.n_theta,
+                      format_bytes(size_t(8 * g.n_r * g.n_theta)), max_nodes, alternative));
     }
     if (est < est_best) est_best = est, n_best = n2;
     if (est > 0.5 * est_prev && est_prev < 1e-8)
       throw std::runtime_error(fmt::format(
           "grid.tolerance = {:.3g} is below the round-off floor: the best estimated C_L error is {:.3g} "
-          "(n_theta = {}); ask for {:.1g} or more", tol, est_best, n_best, est_best * 1.5));
+          "(n_theta = {}); ask for {:.1g} or more",
+          tol, est_best, n_best, est_best * 1.5));
     est_prev = est;
     n = n2;
     cl = cl2;

@@ -155,15 +155,18 @@ class CholmodSolver final : public PsiSolver {
     chol_.c.postorder = 1;
     chol_.c.print = 0;
     chol_.L = cholmod_l_analyze_p(&a, perm.data(), nullptr, 0, &chol_.c);
-    if (!chol_.L) throw std::runtime_error("CHOLMOD analysis failed (status " + std::to_string(chol_.c.status) + ")");
+    if (!chol_.L)
+      throw std::runtime_error("CHOLMOD analysis failed (status " + std::to_string(chol_.c.status) + ")");
     // The symbolic factor knows the fill exactly: refuse before the numeric factorization allocates it.
-    const size_t factor_bytes = chol_.L->is_super ? 8 * (chol_.L->xsize + chol_.L->ssize) : 16 * chol_.L->nzmax;
+    const size_t factor_bytes =
+        chol_.L->is_super ? 8 * (chol_.L->xsize + chol_.L->ssize) : 16 * chol_.L->nzmax;
     check_memory(factor_bytes, max_bytes, "the cholmod factor");
     cholmod_l_factorize(&a, chol_.L, &chol_.c);
     if (chol_.c.status != CHOLMOD_OK || chol_.L->minor < chol_.L->n)
-      throw std::runtime_error("CHOLMOD factorization failed: the matrix is not positive definite "
-                               "(status " + std::to_string(chol_.c.status) + ", column " +
-                               std::to_string(chol_.L->minor) + ")");
+      throw std::runtime_error(
+          "CHOLMOD factorization failed: the matrix is not positive definite "
+          "(status " +
+          std::to_string(chol_.c.status) + ", column " + std::to_string(chol_.L->minor) + ")");
     timing.factor_s = now_s() - t1;
   }
 

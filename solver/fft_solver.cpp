@@ -30,8 +30,14 @@ using cplx = std::complex<double>;
 class FftSolver final : public PsiSolver {
  public:
   FftSolver(const PolarGrid& grid, const DiscreteOperator& op, int threads)
-      : PsiSolver(grid, op), threads_(std::max(1, threads)), n_(op.n_theta), m_(n_ / 2 + 1),
-        L_(op.last_ring()), spec_(size_t(L_) * m_), ring_real_(size_t(n_)), ring_spec_(size_t(m_)) {
+      : PsiSolver(grid, op),
+        threads_(std::max(1, threads)),
+        n_(op.n_theta),
+        m_(n_ / 2 + 1),
+        L_(op.last_ring()),
+        spec_(size_t(L_) * m_),
+        ring_real_(size_t(n_)),
+        ring_spec_(size_t(m_)) {
     const double t0 = now_s();
     factor();
     plan();
@@ -143,8 +149,8 @@ class FftSolver final : public PsiSolver {
     auto* real = reinterpret_cast<double*>(spec_.p);
     forward_ = fftw_plan_many_dft_r2c(1, &n_, L_, real, nullptr, 1, n_, spec, nullptr, 1, m_, flags);
     inverse_ = fftw_plan_many_dft_c2r(1, &n_, L_, spec, nullptr, 1, m_, real, nullptr, 1, n_, flags);
-    ring_forward_ = fftw_plan_dft_r2c_1d(n_, ring_real_.p, reinterpret_cast<fftw_complex*>(ring_spec_.p),
-                                         FFTW_ESTIMATE);
+    ring_forward_ =
+        fftw_plan_dft_r2c_1d(n_, ring_real_.p, reinterpret_cast<fftw_complex*>(ring_spec_.p), FFTW_ESTIMATE);
     if (!forward_ || !inverse_ || !ring_forward_) throw std::runtime_error("FFTW planning failed");
   }
 

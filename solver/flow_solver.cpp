@@ -9,12 +9,10 @@ double now_s() {
   return std::chrono::duration<double>(clock::now().time_since_epoch()).count();
 }
 
-Method resolve_method(Method requested) {
-  return requested == Method::automatic ? Method::fft : requested;
-}
+Method resolve_method(Method requested) { return requested == Method::automatic ? Method::fft : requested; }
 
-std::unique_ptr<PsiSolver> make_solver(const PolarGrid& grid, const DiscreteOperator& op,
-                                       Method method, int threads, size_t max_bytes) {
+std::unique_ptr<PsiSolver> make_solver(const PolarGrid& grid, const DiscreteOperator& op, Method method,
+                                       int threads, size_t max_bytes) {
   if (resolve_method(method) == Method::cholmod) return make_cholmod_solver(grid, op, max_bytes);
   return make_fft_solver(grid, op, threads);
 }
@@ -37,7 +35,9 @@ std::vector<double> superpose(double U, const std::vector<double>& f_U, double G
   return f;
 }
 
-std::vector<double> PsiBasis::combine(double U, double Gamma) const { return superpose(U, psi_U, Gamma, psi_Gamma); }
+std::vector<double> PsiBasis::combine(double U, double Gamma) const {
+  return superpose(U, psi_U, Gamma, psi_Gamma);
+}
 
 PsiBasis solve_basis(PsiSolver& solver) {
   PsiBasis b;

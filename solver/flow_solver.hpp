@@ -39,8 +39,8 @@ Method resolve_method(Method requested);
 
 /// Factor the operator with the chosen method. threads ≥ 1; max_bytes > 0 refuses a CHOLMOD factor
 /// larger than that (checked after the symbolic analysis, before the numeric factorization).
-std::unique_ptr<PsiSolver> make_solver(const PolarGrid& grid, const DiscreteOperator& op,
-                                       Method method, int threads = 1, size_t max_bytes = 0);
+std::unique_ptr<PsiSolver> make_solver(const PolarGrid& grid, const DiscreteOperator& op, Method method,
+                                       int threads = 1, size_t max_bytes = 0);
 
 std::unique_ptr<PsiSolver> make_cholmod_solver(const PolarGrid& grid, const DiscreteOperator& op,
                                                size_t max_bytes = 0);

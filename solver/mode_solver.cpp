@@ -69,7 +69,8 @@ ModeSolver::ModeSolver(const PolarGrid& grid, const std::vector<double>& sigma, 
   }
   const int i_outer = n_r_ - 1;
   h_.assign(size_t(L_) + 1, 0.0);
-  for (int i = 1; i <= L_; ++i) h_[i] = i < i_outer ? 0.5 * (d_xi_[i - 1] + d_xi_[i]) : 0.5 * d_xi_[i_outer - 1];
+  for (int i = 1; i <= L_; ++i)
+    h_[i] = i < i_outer ? 0.5 * (d_xi_[i - 1] + d_xi_[i]) : 0.5 * d_xi_[i_outer - 1];
   factor(sigma);
 
   plans_ = std::make_unique<Plans>();

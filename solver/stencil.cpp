@@ -11,9 +11,7 @@ double DiscreteOperator::symbol(int i, int d, int k) const {
   return s.a[d + 1] + 2.0 * std::cos(k * d_theta) * s.b[d + 1];
 }
 
-double DiscreteOperator::exterior(int k) const {
-  return symbol(n_r - 1, +1, k) * mu[k];
-}
+double DiscreteOperator::exterior(int k) const { return symbol(n_r - 1, +1, k) * mu[k]; }
 
 namespace {
 
@@ -72,12 +70,12 @@ DiscreteOperator make_operator(const PolarGrid& grid, StencilKind stencil, FarFi
   op.ring.resize(grid.n_r);
   for (int i = 1; i <= i_outer; ++i) {
     const double dm = grid.d_xi(i - 1), dp = i < i_outer ? grid.d_xi(i) : dxi_ext;
-    op.ring[i] = stencil == StencilKind::nine_point ? nine_point(dp, grid.d_theta)
-                                                   : five_point(dm, dp, grid.d_theta);
+    op.ring[i] =
+        stencil == StencilKind::nine_point ? nine_point(dp, grid.d_theta) : five_point(dm, dp, grid.d_theta);
   }
   // Ring 0 (the body, not an unknown) only defines the flux weight w_{1/2}.
   op.ring[0] = stencil == StencilKind::nine_point ? nine_point(grid.d_xi(0), grid.d_theta)
-                                                 : five_point(grid.d_xi(0), grid.d_xi(0), grid.d_theta);
+                                                  : five_point(grid.d_xi(0), grid.d_xi(0), grid.d_theta);
   op.w.resize(grid.n_r);
   for (int i = 0; i <= i_outer; ++i) op.w[i] = -(op.ring[i].a[2] + 2.0 * op.ring[i].b[2]);
   if (far_field == FarField::exact) {
@@ -114,8 +112,7 @@ BoundaryData boundary_data(const DiscreteOperator& op, const PolarGrid& grid, do
     // growing freestream g = U r sinθ plus a decaying remainder: ψ_{N+1} − g_{N+1} = μ_1 (ψ_N − g_N).
     const double t1 = op.symbol(L, +1, 1);
     const double growth = op.r_ghost - op.mu[1] * op.r_outer;
-    for (int j = 0; j < n; ++j)
-      bd.outer[j] = -Gamma / n - t1 * U * std::sin(grid.theta[j]) * growth;
+    for (int j = 0; j < n; ++j) bd.outer[j] = -Gamma / n - t1 * U * std::sin(grid.theta[j]) * growth;
   }
   return bd;
 }

@@ -30,9 +30,7 @@ struct DiscreteOperator {
   /// Index of the outermost unknown ring: n_r−2 (freestream) or n_r−1 (exact).
   int last_ring() const { return far_field == FarField::exact ? n_r - 1 : n_r - 2; }
   /// Unknowns: rings 1…last_ring × n_θ, plus C for the freestream far field.
-  long unknowns() const {
-    return long(last_ring()) * n_theta + (far_field == FarField::freestream ? 1 : 0);
-  }
+  long unknowns() const { return long(last_ring()) * n_theta + (far_field == FarField::freestream ? 1 : 0); }
   /// Mode-k symbol T_k(i, i+d) = a[d+1] + 2cos(kΔθ)·b[d+1].
   double symbol(int i, int d, int k) const;
   /// Exterior coupling of the outer ring in mode k after the ghost ring is eliminated:

@@ -1,11 +1,11 @@
 // The magnus command as a user runs it: exit codes, one-line errors, no partial or clobbered files,
 // and every shipped case against its expected figures.
+#include <toml++/toml.h>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <toml++/toml.h>
 
 #include "io/hdf5_io.hpp"
 #include "support.hpp"
@@ -32,7 +32,8 @@ std::vector<std::string> stray_files(const std::string& dir, const std::vector<s
 
 }  // namespace
 
-TEST_CASE("bad input: non-zero exit, one line naming the key or file, no output, old output intact", "[app][cli]") {
+TEST_CASE("bad input: non-zero exit, one line naming the key or file, no output, old output intact",
+          "[app][cli]") {
   struct Bad {
     const char* what;
     std::string toml;
@@ -52,7 +53,8 @@ TEST_CASE("bad input: non-zero exit, one line naming the key or file, no output,
       {"R/a <= 1", scene + "[domain]\nouter_radius = 0.5\n", "domain.outer_radius"},
       {"empty case: radius required", "", "cylinder.radius: required key is missing"},
       {"no speed", "[cylinder]\nradius = 0.1\nspin = 1.0\n", "flow.speed: required key is missing"},
-      {"no spin", "[cylinder]\nradius = 0.1\n[flow]\nspeed = 10.0\n", "cylinder.spin: required key is missing"},
+      {"no spin", "[cylinder]\nradius = 0.1\n[flow]\nspeed = 10.0\n",
+       "cylinder.spin: required key is missing"},
   };
   for (const auto& b : bad) {
     SECTION(b.what) {
@@ -99,7 +101,8 @@ TEST_CASE("bad input: non-zero exit, one line naming the key or file, no output,
     std::ofstream(dir + "/case.toml") << "";
     for (const std::vector<std::string>& args :
          {std::vector<std::string>{"run", dir + "/case.toml", "--set", "grid.ntheta=64", "-o", dir + "/r.h5"},
-          std::vector<std::string>{"run", dir + "/case.toml", "--bogus"}, std::vector<std::string>{"frobnicate"}}) {
+          std::vector<std::string>{"run", dir + "/case.toml", "--bogus"},
+          std::vector<std::string>{"frobnicate"}}) {
       const Outcome o = magnus_cmd(args, dir);
       CAPTURE(o.err);
       REQUIRE(o.status != 0);
@@ -114,17 +117,23 @@ TEST_CASE("a case without its scene keys is refused in one exact line, nothing w
   std::ofstream(dir + "/case.toml") << "[cylinder]\nradius = 0.1\n[flow]\nspeed = 10.0\n";
   const Outcome o = magnus_cmd({"run", dir + "/case.toml", "-o", dir + "/r.h5"}, dir);
   CHECK(o.status == 1);
-  CHECK(o.err == "magnus: error: " + dir + "/case.toml: cylinder.spin: required key is missing: give one of "
-                 "cylinder.spin (rad/s), cylinder.spin_ratio or cylinder.rpm, or circulation.model = \"given\" with "
-                 "circulation.value\n");
-  const Outcome e = magnus_cmd({"run", dir + "/case.toml", "--set", "cylinder.radius=1", "--set", "flow.speed=0",
-                                "--set", "circulation.model=given", "-o", dir + "/r.h5"}, dir);
-  CHECK(e.err == "magnus: error: " + dir + "/case.toml: circulation.value: is required with circulation.model = "
-                 "\"given\"\n");
+  CHECK(
+      o.err ==
+      "magnus: error: " + dir +
+          "/case.toml: cylinder.spin: required key is missing: give one of "
+          "cylinder.spin (rad/s), cylinder.spin_ratio or cylinder.rpm, or circulation.model = \"given\" with "
+          "circulation.value\n");
+  const Outcome e = magnus_cmd({"run", dir + "/case.toml", "--set", "cylinder.radius=1", "--set",
+                                "flow.speed=0", "--set", "circulation.model=given", "-o", dir + "/r.h5"},
+                               dir);
+  CHECK(e.err == "magnus: error: " + dir +
+                     "/case.toml: circulation.value: is required with circulation.model = "
+                     "\"given\"\n");
   CHECK(stray_files(dir, {"case.toml"}).empty());
 }
 
-TEST_CASE("finite inputs whose derived quantities overflow are refused in one line naming the key", "[app][cli]") {
+TEST_CASE("finite inputs whose derived quantities overflow are refused in one line naming the key",
+          "[app][cli]") {
   const std::string dir = test::temp_dir("cli-overflow");
   const std::string demo = std::string(MAGNUS_SOURCE_DIR) + "/cases/spin_ratio_1.toml";
   struct Bad {
@@ -134,10 +143,12 @@ TEST_CASE("finite inputs whose derived quantities overflow are refused in one li
   const std::vector<Bad> bad = {
       {{"flow.speed=1e160"}, "flow.speed: 1e+160 is too large: U² is not finite"},
       {{"flow.density=1e300", "flow.speed=1e5"}, "flow.density: 1e+300 is too large: ρU² is not finite"},
-      {{"cylinder.radius=1e3", "cylinder.spin=1e306"}, "cylinder.spin: 1e+306 is too large: the circulation Γ is not finite"},
+      {{"cylinder.radius=1e3", "cylinder.spin=1e306"},
+       "cylinder.spin: 1e+306 is too large: the circulation Γ is not finite"},
       {{"cylinder.radius=1e150", "flow.speed=1e-150"},
        "flow.speed: 1e-150 is too small: the free stagnation radius |Γ|/(2πU) is not finite"},
-      {{"cylinder.radius=1e-160"}, "cylinder.radius: 1e-160 is too small: the circulation Γ underflows double precision"},
+      {{"cylinder.radius=1e-160"},
+       "cylinder.radius: 1e-160 is too small: the circulation Γ underflows double precision"},
   };
   for (const auto& b : bad) {
     std::vector<std::string> args = {"run", demo, "-o", dir + "/r.h5"};
@@ -149,8 +160,8 @@ TEST_CASE("finite inputs whose derived quantities overflow are refused in one li
   }
   CHECK(stray_files(dir, {}).empty());
   // A large density alone keeps every figure finite: it runs, and nothing prints inf or nan.
-  const Outcome ok = magnus_cmd({"run", demo, "-o", dir + "/r.h5", "--set", "flow.density=1e300", "--set",
-                                 "grid.n_theta=32"}, dir);
+  const Outcome ok = magnus_cmd(
+      {"run", demo, "-o", dir + "/r.h5", "--set", "flow.density=1e300", "--set", "grid.n_theta=32"}, dir);
   CHECK(ok.status == 0);
   CHECK(ok.out.find("inf") == std::string::npos);
   CHECK(ok.out.find("nan") == std::string::npos);
@@ -163,8 +174,8 @@ TEST_CASE("a successful run replaces the old result and prints the summary", "[a
   const Outcome o = magnus_cmd({"run", dir + "/case.toml", "-o", dir + "/r.h5"}, dir);
   REQUIRE(o.status == 0);
   REQUIRE(o.err.empty());
-  for (const char* s : {"C_L", "Kutta–Joukowski", "seed estimate", "C_D", "ΔP top−bottom", "Magnus S", "stagnation",
-                        "errors", "timing"})
+  for (const char* s : {"C_L", "Kutta–Joukowski", "seed estimate", "C_D", "ΔP top−bottom", "Magnus S",
+                        "stagnation", "errors", "timing"})
     REQUIRE(o.out.find(s) != std::string::npos);
   REQUIRE(ResultFile(dir + "/r.h5").attr_string("/", "format") == "magnus-flow");
   REQUIRE(stray_files(dir, {"case.toml", "r.h5", "r.xmf"}).empty());
@@ -184,10 +195,19 @@ TEST_CASE("a successful run replaces the old result and prints the summary", "[a
 /// circulation_abs_max), the stagnation points (stagnation_deg, [] for none, with stagnation_tol_deg) and a
 /// free point's radius (stagnation_free_r_over_a with stagnation_r_rel_tol).
 std::string expect_problem(const toml::table& ex) {
-  static const std::vector<std::string> known = {
-      "set", "cl", "cl_rel_max", "cl_abs_max", "cd_abs_max", "lift_abs_max", "circulation", "circulation_rel_max",
-      "circulation_abs_max", "stagnation_deg", "stagnation_tol_deg", "stagnation_free_r_over_a",
-      "stagnation_r_rel_tol"};
+  static const std::vector<std::string> known = {"set",
+                                                 "cl",
+                                                 "cl_rel_max",
+                                                 "cl_abs_max",
+                                                 "cd_abs_max",
+                                                 "lift_abs_max",
+                                                 "circulation",
+                                                 "circulation_rel_max",
+                                                 "circulation_abs_max",
+                                                 "stagnation_deg",
+                                                 "stagnation_tol_deg",
+                                                 "stagnation_free_r_over_a",
+                                                 "stagnation_r_rel_tol"};
   for (auto&& [k, v] : ex) {
     (void)v;
     if (std::find(known.begin(), known.end(), std::string(k.str())) == known.end())
@@ -197,8 +217,9 @@ std::string expect_problem(const toml::table& ex) {
   auto number = [&](const char* k) { return ex[k].value<double>().has_value(); };
   for (const char* k : {"cl", "circulation", "stagnation_deg", "stagnation_tol_deg"})
     if (!has(k)) return std::string("missing key ") + k;
-  for (const char* k : {"cl_rel_max", "cl_abs_max", "cd_abs_max", "lift_abs_max", "circulation", "circulation_rel_max",
-                        "circulation_abs_max", "stagnation_tol_deg", "stagnation_free_r_over_a", "stagnation_r_rel_tol"})
+  for (const char* k :
+       {"cl_rel_max", "cl_abs_max", "cd_abs_max", "lift_abs_max", "circulation", "circulation_rel_max",
+        "circulation_abs_max", "stagnation_tol_deg", "stagnation_free_r_over_a", "stagnation_r_rel_tol"})
     if (has(k) && !number(k)) return std::string(k) + " must be a number";
   if (!ex["stagnation_deg"].is_array()) return "stagnation_deg must be an array of angles (deg)";
   if (ex["cl"].is_string()) {
@@ -219,13 +240,15 @@ std::string expect_problem(const toml::table& ex) {
 }
 
 TEST_CASE(".expect files: an unknown, missing or unpaired key is refused by name", "[app][cases]") {
-  const std::string ok = "cl = -6.0\ncl_rel_max = 1e-3\ncd_abs_max = 1e-12\ncirculation = 6.0\n"
-                         "circulation_rel_max = 1e-10\nstagnation_deg = [30.0, 150.0]\nstagnation_tol_deg = 0.5\n";
+  const std::string ok =
+      "cl = -6.0\ncl_rel_max = 1e-3\ncd_abs_max = 1e-12\ncirculation = 6.0\n"
+      "circulation_rel_max = 1e-10\nstagnation_deg = [30.0, 150.0]\nstagnation_tol_deg = 0.5\n";
   CHECK(expect_problem(toml::parse(ok)) == "");
   CHECK(expect_problem(toml::parse(ok + "cl_rel_mx = 1e-3\n")) == "unknown key cl_rel_mx");
   CHECK(expect_problem(toml::parse(ok + "stagnation_free_r_over_a = 3.7\n")) ==
         "stagnation_free_r_over_a and stagnation_r_rel_tol go together");
-  CHECK(expect_problem(toml::parse(ok + "cl_abs_max = 1e-3\n")) == "cl needs exactly one of cl_rel_max, cl_abs_max");
+  CHECK(expect_problem(toml::parse(ok + "cl_abs_max = 1e-3\n")) ==
+        "cl needs exactly one of cl_rel_max, cl_abs_max");
   toml::table no_tol = toml::parse(ok);
   no_tol.erase("stagnation_tol_deg");
   CHECK(expect_problem(no_tol) == "missing key stagnation_tol_deg");
@@ -261,13 +284,17 @@ TEST_CASE("every shipped case runs and meets the expected figures beside it", "[
         REQUIRE(std::fabs(f.attr_double("/forces", "lift")) <= num("lift_abs_max"));
       } else {
         const double cl = num("cl"), got = f.attr_double("/forces", "cl");
-        if (ex.contains("cl_rel_max")) REQUIRE(std::fabs(got / cl - 1) <= num("cl_rel_max"));
-        else REQUIRE(std::fabs(got - cl) <= num("cl_abs_max"));
+        if (ex.contains("cl_rel_max"))
+          REQUIRE(std::fabs(got / cl - 1) <= num("cl_rel_max"));
+        else
+          REQUIRE(std::fabs(got - cl) <= num("cl_abs_max"));
         REQUIRE(std::fabs(f.attr_double("/forces", "cd")) <= num("cd_abs_max"));
       }
       const double g = num("circulation"), g_got = f.attr_double("/forces", "circulation_measured");
-      if (ex.contains("circulation_rel_max")) REQUIRE(std::fabs(g_got / g - 1) <= num("circulation_rel_max"));
-      else REQUIRE(std::fabs(g_got - g) <= num("circulation_abs_max"));
+      if (ex.contains("circulation_rel_max"))
+        REQUIRE(std::fabs(g_got / g - 1) <= num("circulation_rel_max"));
+      else
+        REQUIRE(std::fabs(g_got - g) <= num("circulation_abs_max"));
       const toml::array& deg = *ex["stagnation_deg"].as_array();
       const auto st_r = f.dataset("/stagnation/r"), st_theta = f.dataset("/stagnation/theta");
       REQUIRE(st_r.size() == st_theta.size());
@@ -283,7 +310,8 @@ TEST_CASE("every shipped case runs and meets the expected figures beside it", "[
       }
       for (const auto& d : deg) {
         bool found = false;
-        for (size_t k = 0; k < n_points; ++k) found = found || near(st_theta[k] * 180 / M_PI, *d.value<double>());
+        for (size_t k = 0; k < n_points; ++k)
+          found = found || near(st_theta[k] * 180 / M_PI, *d.value<double>());
         REQUIRE(found);
       }
       if (ex.contains("stagnation_free_r_over_a")) {
@@ -295,7 +323,8 @@ TEST_CASE("every shipped case runs and meets the expected figures beside it", "[
   }
 }
 
-TEST_CASE("outputs never overwrite inputs, each other or a directory; a directory is not a case file", "[app][cli]") {
+TEST_CASE("outputs never overwrite inputs, each other or a directory; a directory is not a case file",
+          "[app][cli]") {
   const std::string dir = test::temp_dir("cli-clobber");
   std::ofstream(dir + "/case.toml") << scene + "[grid]\nn_theta = 16\n";
   std::ofstream(dir + "/keep.xmf") << "KEEP";
@@ -305,12 +334,14 @@ TEST_CASE("outputs never overwrite inputs, each other or a directory; a director
     const char* needle;
   };
   const std::vector<Bad> bad = {
-      {{"run", dir + "/case.toml", "-o", dir + "/keep.xmf"}, "same name"},         // result = its own sidecar
-      {{"run", dir + "/case.toml", "-o", dir + "/r.h5"}, "is a directory"},        // sidecar r.xmf is a directory
+      {{"run", dir + "/case.toml", "-o", dir + "/keep.xmf"}, "same name"},   // result = its own sidecar
+      {{"run", dir + "/case.toml", "-o", dir + "/r.h5"}, "is a directory"},  // sidecar r.xmf is a directory
       {{"run", dir + "/case.toml", "-o", dir + "/case.toml"}, "overwrite the input"},
       {{"run", dir}, "not a regular file"},
-      {{"sweep", dir + "/case.toml", "--spin-ratio", "0:1:0.5", "--csv", dir + "/case.toml"}, "overwrite the input"},
-      {{"sweep", dir + "/case.toml", "--spin-ratio", "0:1:0.5", "--csv", dir + "/s.out", "-o", dir + "/s.out"},
+      {{"sweep", dir + "/case.toml", "--spin-ratio", "0:1:0.5", "--csv", dir + "/case.toml"},
+       "overwrite the input"},
+      {{"sweep", dir + "/case.toml", "--spin-ratio", "0:1:0.5", "--csv", dir + "/s.out", "-o",
+        dir + "/s.out"},
        "same name"},
       {{"bench", dir + "/case.toml", "--ladder", "16", "--csv", dir + "/case.toml"}, "overwrite the input"},
   };
@@ -338,7 +369,8 @@ TEST_CASE("run: output.compression writes a smaller file with the same figures",
   const std::string cs = std::string(MAGNUS_SOURCE_DIR) + "/cases/spin_ratio_1.toml";
   const auto plain = test::magnus_cmd({"run", cs, "-o", dir + "/plain.h5", "--set", "grid.n_theta=128"}, dir);
   const auto packed = test::magnus_cmd(
-      {"run", cs, "-o", dir + "/packed.h5", "--set", "grid.n_theta=128", "--set", "output.compression=6"}, dir);
+      {"run", cs, "-o", dir + "/packed.h5", "--set", "grid.n_theta=128", "--set", "output.compression=6"},
+      dir);
   REQUIRE(plain.status == 0);
   REQUIRE(packed.status == 0);
   REQUIRE(test::slurp(dir + "/packed.h5").size() < 0.9 * test::slurp(dir + "/plain.h5").size());

@@ -1,5 +1,5 @@
-// What `magnus` says, line for line: the run summary of the given-circulation model, stagnation points, U = 0,
-// and the one-line messages for bad command lines (each with its exit status).
+// What `magnus` says, line for line: the run summary of the given-circulation model, stagnation points, U =
+// 0, and the one-line messages for bad command lines (each with its exit status).
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <fstream>
@@ -46,24 +46,29 @@ TEST_CASE("summary: the given-circulation model labels each figure by its model"
                                     "[circulation]\nmodel = \"given\"\nvalue = -3.0\n[grid]\nn_theta = 32\n";
   const Outcome o = magnus_cmd({"run", dir + "/g.toml", "-o", dir + "/g.h5"}, dir);
   REQUIRE(o.status == 0);
-  CHECK(line_of(o.out, "case") == "case           a = 0.1 m, ω = 100 rad/s, U = 10 m/s, α = aω/U = 1, α_Γ = Γ/(2πaU) = "
-                                  "-0.477465 (the given Γ sets the flow), ρ = 1.225 kg/m³");
+  CHECK(line_of(o.out, "case") ==
+        "case           a = 0.1 m, ω = 100 rad/s, U = 10 m/s, α = aω/U = 1, α_Γ = Γ/(2πaU) = "
+        "-0.477465 (the given Γ sets the flow), ρ = 1.225 kg/m³");
   CHECK(line_of(o.out, "circulation") == "circulation    Γ = -3 m²/s (given, not from the spin)");
-  CHECK(line_of(o.out, "C_L  ").find("seed estimate -4 (−4α: from ω, not from the given Γ)") != std::string::npos);
+  CHECK(line_of(o.out, "C_L  ").find("seed estimate -4 (−4α: from ω, not from the given Γ)") !=
+        std::string::npos);
   CHECK(line_after(o.out, "C_L  ").find("KJ/seed = -0.750000 (= α_Γ·π/(2α): π/2 only when Γ = 2πa²ω)") !=
         std::string::npos);
   CHECK(line_after(o.out, "ΔP top−bottom").find(": the given Γ, not the spin, sets ΔP (exact 2α_Γ/α)") !=
         std::string::npos);
-  CHECK(line_of(o.out, "Magnus S").find("exact ρΓ/ω = -0.03675 kg/m (the given Γ)   seed 4ρa² = 0.049 kg/m") !=
-        std::string::npos);
+  CHECK(
+      line_of(o.out, "Magnus S").find("exact ρΓ/ω = -0.03675 kg/m (the given Γ)   seed 4ρa² = 0.049 kg/m") !=
+      std::string::npos);
   CHECK(o.out.find("potential flow doubles") == std::string::npos);
   CHECK(o.out.find("2πρa²") == std::string::npos);
 
-  const Outcome z = magnus_cmd({"run", dir + "/g.toml", "-o", dir + "/g.h5", "--set", "cylinder.spin=0"}, dir);
+  const Outcome z =
+      magnus_cmd({"run", dir + "/g.toml", "-o", dir + "/g.h5", "--set", "cylinder.spin=0"}, dir);
   REQUIRE(z.status == 0);
   CHECK(line_of(z.out, "case").find("α = aω/U = 0, α_Γ = Γ/(2πaU) = -0.477465 (the given Γ sets the flow)") !=
         std::string::npos);
-  CHECK(line_of(z.out, "C_L  ") == "C_L            numeric 2.987288752   Kutta–Joukowski 3   seed estimate undefined (ω = 0)");
+  CHECK(line_of(z.out, "C_L  ") ==
+        "C_L            numeric 2.987288752   Kutta–Joukowski 3   seed estimate undefined (ω = 0)");
   CHECK(line_after(z.out, "C_L  ").find("KJ/seed = undefined (ω = 0)") != std::string::npos);
   CHECK(line_of(z.out, "ΔP top−bottom").find("seed 2ρUaω = undefined (ω = 0)") != std::string::npos);
   CHECK(line_of(z.out, "Magnus S") ==
@@ -71,17 +76,21 @@ TEST_CASE("summary: the given-circulation model labels each figure by its model"
   CHECK_FALSE(has_negative_zero(z.out));
   CAPTURE(z.out);
   // The spin model without spin: the seed's estimate is a plain 0, never "-0".
-  const Outcome n = magnus_cmd({"run", std::string(MAGNUS_SOURCE_DIR) + "/cases/no_spin.toml", "-o", dir + "/n.h5",
-                                "--set", "grid.n_theta=32"}, dir);
+  const Outcome n = magnus_cmd({"run", std::string(MAGNUS_SOURCE_DIR) + "/cases/no_spin.toml", "-o",
+                                dir + "/n.h5", "--set", "grid.n_theta=32"},
+                               dir);
   REQUIRE(n.status == 0);
   CHECK(line_of(n.out, "C_L  ").find("seed estimate 0") != std::string::npos);
   CHECK_FALSE(has_negative_zero(n.out));
 }
 
-TEST_CASE("summary: stagnation points on the surface at α = 2, in one order, and outside the grid", "[app][cli][report]") {
+TEST_CASE("summary: stagnation points on the surface at α = 2, in one order, and outside the grid",
+          "[app][cli][report]") {
   const std::string dir = temp_dir("cli-stagnation");
   auto run = [&](const std::string& alpha, const std::vector<std::string>& more = {}) {
-    std::vector<std::string> args = {"run", demo, "-o", dir + "/r.h5", "--set", "cylinder.spin_ratio=" + alpha,
+    std::vector<std::string> args = {"run",   demo,
+                                     "-o",    dir + "/r.h5",
+                                     "--set", "cylinder.spin_ratio=" + alpha,
                                      "--set", "grid.n_theta=64"};
     for (const auto& m : more) args.insert(args.end(), {"--set", m});
     const Outcome o = magnus_cmd(args, dir);
@@ -93,10 +102,12 @@ TEST_CASE("summary: stagnation points on the surface at α = 2, in one order, an
   const std::string back = run("-1");
   CHECK(line_of(back, "stagnation") ==
         "stagnation     numeric θ = 210.075° on the surface, θ = 329.925° on the surface");
-  CHECK(line_after(back, "stagnation") == "               exact   θ = 210.000° on the surface, θ = 330.000° on the surface");
+  CHECK(line_after(back, "stagnation") ==
+        "               exact   θ = 210.000° on the surface, θ = 330.000° on the surface");
   const std::string far = run("100");
-  CHECK(line_of(far, "stagnation") == "stagnation     numeric none: the free point lies outside the grid (exact r_s/a = "
-                                      "99.99, grid R/a = 20.9768)");
+  CHECK(line_of(far, "stagnation") ==
+        "stagnation     numeric none: the free point lies outside the grid (exact r_s/a = "
+        "99.99, grid R/a = 20.9768)");
 }
 
 TEST_CASE("U = 0: the C_L error is undefined, in the summary, the file and bench", "[app][cli][report]") {
@@ -108,8 +119,9 @@ TEST_CASE("U = 0: the C_L error is undefined, in the summary, the file and bench
   CHECK_FALSE(ResultFile(dir + "/r.h5").has_attr("/errors", "cl_rel"));
   const Outcome b = magnus_cmd({"bench", still, "--ladder", "16"}, dir);
   CHECK(b.status == 1);
-  CHECK(b.err == "magnus: error: bench: flow.speed = 0: C_L and its error are undefined without a freestream; "
-                 "bench needs flow.speed > 0\n");
+  CHECK(b.err ==
+        "magnus: error: bench: flow.speed = 0: C_L and its error are undefined without a freestream; "
+        "bench needs flow.speed > 0\n");
   CHECK(b.out.empty());
 }
 
@@ -121,22 +133,32 @@ TEST_CASE("command-line messages: one exact line each, with the exit status", "[
     std::string err;
   };
   const std::vector<Case_> cases = {
-      {{"run", demo, "--set", "cylinder.radius=", "-o", dir + "/r.h5"}, 1,
+      {{"run", demo, "--set", "cylinder.radius=", "-o", dir + "/r.h5"},
+       1,
        "magnus: error: --set cylinder.radius=: no value\n"},
-      {{"run", demo, "--set", "flow.velocity=2", "-o", dir + "/r.h5"}, 1,
+      {{"run", demo, "--set", "flow.velocity=2", "-o", dir + "/r.h5"},
+       1,
        "magnus: error: --set flow.velocity=2: unknown key flow.velocity (did you mean flow.speed?)\n"},
-      {{"run", demo, "--set", "cylinder.span=2", "-o", dir + "/r.h5"}, 1,
+      {{"run", demo, "--set", "cylinder.span=2", "-o", dir + "/r.h5"},
+       1,
        "magnus: error: --set cylinder.span=2: unknown key cylinder.span (keys of [cylinder]: radius, spin, "
        "spin_ratio, rpm)\n"},
-      {{"run", demo, "--set", "flow.sped=2", "-o", dir + "/r.h5"}, 1,
+      {{"run", demo, "--set", "flow.sped=2", "-o", dir + "/r.h5"},
+       1,
        "magnus: error: --set flow.sped=2: unknown key flow.sped (did you mean flow.speed?)\n"},
-      {{"run", demo, "--tolerance", "1e-15", "-o", dir + "/r.h5"}, 1,
+      {{"run", demo, "--tolerance", "1e-15", "-o", dir + "/r.h5"},
+       1,
        "magnus: error: --tolerance 1e-15: must be between 1e-14 and 0.1\n"},
-      {{"frobnicate"}, 2,
-       "magnus: unknown command 'frobnicate' (commands: run, inspect, sweep, compare, plot, bench; see magnus --help)\n"},
-      {{"run", demo, "--tolerance", "1e-6", "--set", "grid.spacing=uniform", "-o", dir + "/r.h5"}, 1,
-       "magnus: error: grid.tolerance = 1e-06 with grid.spacing = \"uniform\" needs about n_θ × n_r = 3136 × 9484 "
-       "(2.97e+07 nodes, 226.9 MiB per field), more than the limit of 4194304 nodes; grid.spacing = \"geometric\" "
+      {{"frobnicate"},
+       2,
+       "magnus: unknown command 'frobnicate' (commands: run, inspect, sweep, compare, plot, bench; see "
+       "magnus --help)\n"},
+      {{"run", demo, "--tolerance", "1e-6", "--set", "grid.spacing=uniform", "-o", dir + "/r.h5"},
+       1,
+       "magnus: error: grid.tolerance = 1e-06 with grid.spacing = \"uniform\" needs about n_θ × n_r = 3136 × "
+       "9484 "
+       "(2.97e+07 nodes, 226.9 MiB per field), more than the limit of 4194304 nodes; grid.spacing = "
+       "\"geometric\" "
        "(9-point stencil, order 6) meets it with 32 × 17\n"},
   };
   for (const auto& c : cases) {
@@ -147,21 +169,24 @@ TEST_CASE("command-line messages: one exact line each, with the exit status", "[
     CHECK(o.out.empty());
   }
   // Spaces around '=' and the key are allowed.
-  const Outcome sp = magnus_cmd({"run", demo, "--set", " cylinder.radius = 2 ", "--set", "grid.n_theta=16", "-o",
-                                 dir + "/r.h5", "-q"}, dir);
+  const Outcome sp = magnus_cmd(
+      {"run", demo, "--set", " cylinder.radius = 2 ", "--set", "grid.n_theta=16", "-o", dir + "/r.h5", "-q"},
+      dir);
   CHECK(sp.status == 0);
   CHECK(sp.err.empty());
   CHECK(ResultFile(dir + "/r.h5").attr_double("/parameters", "radius") == 2.0);
   // An HDF5 result is not a case.
   const Outcome h5 = magnus_cmd({"run", dir + "/r.h5", "-o", dir + "/s.h5"}, dir);
   CHECK(h5.status == 1);
-  CHECK(h5.err == "magnus: error: " + dir + "/r.h5: an HDF5 result file, not a case file (TOML); to see what it "
-                  "holds: magnus inspect " + dir + "/r.h5\n");
+  CHECK(h5.err == "magnus: error: " + dir +
+                      "/r.h5: an HDF5 result file, not a case file (TOML); to see what it "
+                      "holds: magnus inspect " +
+                      dir + "/r.h5\n");
   // More threads than cores: a note, and the run uses the cores there are.
   const unsigned cores = std::thread::hardware_concurrency();
   if (cores > 0 && cores < 64) {
-    const Outcome t = magnus_cmd({"run", demo, "--threads", "64", "--set", "grid.n_theta=16", "-o", dir + "/r.h5",
-                                  "-q"}, dir);
+    const Outcome t = magnus_cmd(
+        {"run", demo, "--threads", "64", "--set", "grid.n_theta=16", "-o", dir + "/r.h5", "-q"}, dir);
     CHECK(t.status == 0);
     CHECK(t.err == "magnus: note: --threads 64 is more than the " + std::to_string(cores) +
                        " cores of this machine: using " + std::to_string(cores) + "\n");
@@ -170,7 +195,8 @@ TEST_CASE("command-line messages: one exact line each, with the exit status", "[
 
 TEST_CASE("the result file must fit on the disk: estimate against the free space", "[app][cli]") {
   CHECK(estimated_output_bytes(10, 16, 9) == 8 * 160 * 11 + 8 * (10 + 6 * 16));
-  CHECK_THROWS_WITH(check_disk_space("x.h5", 2048, 1024), "x.h5: the result needs about 2 KiB, but only 1 KiB is free there");
+  CHECK_THROWS_WITH(check_disk_space("x.h5", 2048, 1024),
+                    "x.h5: the result needs about 2 KiB, but only 1 KiB is free there");
   CHECK_NOTHROW(check_disk_space("x.h5", 1024, 1024));
   // The refusal end to end, with the free space injected (MAGNUS_TEST_FREE_BYTES, see io/output_size.hpp).
   const std::string dir = temp_dir("cli-disk");
@@ -182,7 +208,8 @@ TEST_CASE("the result file must fit on the disk: estimate against the free space
   const GridShape g = grid_shape(c.grid);
   CHECK(o.status == 1);
   CHECK(o.err == "magnus: error: " + dir + "/r.h5: the result needs about " +
-                     format_bytes(estimated_output_bytes(g.n_r, g.n_theta, 9)) + ", but only " + format_bytes(1000) + " is free there\n");
+                     format_bytes(estimated_output_bytes(g.n_r, g.n_theta, 9)) + ", but only " +
+                     format_bytes(1000) + " is free there\n");
   CHECK(o.out.empty());
   CHECK_FALSE(std::ifstream(dir + "/r.h5").good());
 }

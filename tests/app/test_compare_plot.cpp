@@ -9,8 +9,8 @@
 #include <sstream>
 
 #include "io/compare.hpp"
-#include "plot/figures.hpp"
 #include "io/hdf5_io.hpp"
+#include "plot/figures.hpp"
 #include "plot/png_image.hpp"
 #include "support.hpp"
 
@@ -20,13 +20,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-
 std::vector<std::string> split(const std::string& s, char sep) {
   std::vector<std::string> out;
   std::string cur;
   bool quoted = false;
   for (char ch : s) {
-    if (ch == '"') quoted = !quoted;
+    if (ch == '"')
+      quoted = !quoted;
     else if (ch == sep && !quoted) {
       out.push_back(cur);
       cur.clear();
@@ -53,9 +53,12 @@ std::pair<unsigned long, unsigned long> png_size(const std::string& path) {
 
 TEST_CASE("magnus compare reads back exactly what magnus run wrote", "[app][compare]") {
   const std::string dir = test::temp_dir("compare");
-  std::ofstream(dir + "/a.toml") << "title = \"A\"\n[cylinder]\nradius = 0.1\nspin_ratio = 1.0\n[flow]\nspeed = 10.0\n[grid]\nn_theta = 32\n";
-  std::ofstream(dir + "/b.toml") << "title = \"B\"\n[cylinder]\nradius = 0.1\nspin_ratio = 1.0\n[flow]\nspeed = 10.0\n[grid]\nn_theta = 64\n";
-  std::ofstream(dir + "/c.toml") << "title = \"C, no wind\"\n[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = 0.0\n[grid]\nn_theta = 32\n";
+  std::ofstream(dir + "/a.toml") << "title = \"A\"\n[cylinder]\nradius = 0.1\nspin_ratio = "
+                                    "1.0\n[flow]\nspeed = 10.0\n[grid]\nn_theta = 32\n";
+  std::ofstream(dir + "/b.toml") << "title = \"B\"\n[cylinder]\nradius = 0.1\nspin_ratio = "
+                                    "1.0\n[flow]\nspeed = 10.0\n[grid]\nn_theta = 64\n";
+  std::ofstream(dir + "/c.toml") << "title = \"C, no wind\"\n[cylinder]\nradius = 0.1\nspin = "
+                                    "100.0\n[flow]\nspeed = 0.0\n[grid]\nn_theta = 32\n";
   for (const char* n : {"a", "b", "c"})
     REQUIRE(magnus_cmd({"run", dir + "/" + n + ".toml", "-o", dir + "/" + n + ".h5", "-q"}, dir).status == 0);
   const std::vector<std::string> files = {dir + "/a.h5", dir + "/b.h5", dir + "/c.h5"};
@@ -90,8 +93,13 @@ TEST_CASE("magnus compare reads back exactly what magnus run wrote", "[app][comp
     return size_t(it - head.begin());
   };
   const std::vector<std::pair<std::string, std::string>> attrs = {
-      {"lift_N_m", "lift"}, {"drag_N_m", "drag"}, {"cl", "cl"}, {"cl_kutta_joukowski", "cl_kutta_joukowski"},
-      {"cl_seed_estimate", "cl_seed_estimate"}, {"cd", "cd"}, {"delta_p_top_bottom_Pa", "delta_p_top_bottom"},
+      {"lift_N_m", "lift"},
+      {"drag_N_m", "drag"},
+      {"cl", "cl"},
+      {"cl_kutta_joukowski", "cl_kutta_joukowski"},
+      {"cl_seed_estimate", "cl_seed_estimate"},
+      {"cd", "cd"},
+      {"delta_p_top_bottom_Pa", "delta_p_top_bottom"},
       {"delta_p_seed_estimate_Pa", "delta_p_seed_estimate"}};
   for (size_t i = 0; i < files.size(); ++i) {
     const ResultFile f(files[i]);
@@ -118,7 +126,8 @@ TEST_CASE("magnus compare reads back exactly what magnus run wrote", "[app][comp
   const Outcome o = magnus_cmd({"compare", files[0], files[1], "--csv", dir + "/cmp.csv"}, dir);
   CAPTURE(o.err);
   REQUIRE(o.status == 0);
-  for (const char* s : {"lift F_y (N/m)", "C_L Kutta–Joukowski", "C_L seed estimate", "C_D", "error C_L rel", "n_theta"})
+  for (const char* s :
+       {"lift F_y (N/m)", "C_L Kutta–Joukowski", "C_L seed estimate", "C_D", "error C_L rel", "n_theta"})
     CHECK(o.out.find(s) != std::string::npos);
   CHECK(slurp(dir + "/cmp.csv") == compare_results({files[0], files[1]}).csv);
   std::ofstream(dir + "/foreign.h5") << "not HDF5";
@@ -130,7 +139,8 @@ TEST_CASE("magnus compare reads back exactly what magnus run wrote", "[app][comp
     CHECK(b.err.find(bad) != std::string::npos);
   }
   // A sweep file is HDF5 but not a flow result.
-  REQUIRE(magnus_cmd({"sweep", dir + "/a.toml", "--spin-ratio", "0:1:1", "-o", dir + "/sw.h5", "-q"}, dir).status == 0);
+  REQUIRE(magnus_cmd({"sweep", dir + "/a.toml", "--spin-ratio", "0:1:1", "-o", dir + "/sw.h5", "-q"}, dir)
+              .status == 0);
   const Outcome sw = magnus_cmd({"compare", files[0], dir + "/sw.h5"}, dir);
   CHECK(sw.status != 0);
   CHECK(lines(sw.err) == 1);
@@ -165,13 +175,17 @@ TEST_CASE("magnus plot writes complete PNGs of the stated size for every shipped
     CHECK(lines(o.err) == (still ? 2u : 0u));
     CHECK(fs::exists(pics + "/" + stem + "_cp.png") == !still);
   }
-  for (const auto& e : fs::directory_iterator(pics)) CHECK(e.path().filename().string().find(".tmp-") == std::string::npos);
+  for (const auto& e : fs::directory_iterator(pics))
+    CHECK(e.path().filename().string().find(".tmp-") == std::string::npos);
 }
 
-TEST_CASE("magnus plot skips what the file lacks and fails in one line when nothing can be drawn", "[app][plot]") {
+TEST_CASE("magnus plot skips what the file lacks and fails in one line when nothing can be drawn",
+          "[app][plot]") {
   const std::string dir = test::temp_dir("plot-partial");
-  std::ofstream(dir + "/case.toml") << "[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = 10.0\n[grid]\nn_theta = 32\n[output]\nfields = [\"psi\"]\n";
-  std::ofstream(dir + "/still.toml") << "[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = 0.0\n[grid]\nn_theta = 32\n[output]\nfields = []\n";
+  std::ofstream(dir + "/case.toml") << "[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = "
+                                       "10.0\n[grid]\nn_theta = 32\n[output]\nfields = [\"psi\"]\n";
+  std::ofstream(dir + "/still.toml") << "[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = "
+                                        "0.0\n[grid]\nn_theta = 32\n[output]\nfields = []\n";
   REQUIRE(magnus_cmd({"run", dir + "/case.toml", "-o", dir + "/r.h5", "-q"}, dir).status == 0);
   REQUIRE(magnus_cmd({"run", dir + "/still.toml", "-o", dir + "/s.h5", "-q"}, dir).status == 0);
 
@@ -201,7 +215,8 @@ TEST_CASE("magnus plot skips what the file lacks and fails in one line when noth
   // Bad input: a foreign file, a bad size, an output "directory" that is a file.
   std::ofstream(dir + "/plain") << "x";
   for (const std::vector<std::string>& args :
-       {std::vector<std::string>{"plot", dir + "/case.toml"}, std::vector<std::string>{"plot", dir + "/r.h5", "--size", "100"},
+       {std::vector<std::string>{"plot", dir + "/case.toml"},
+        std::vector<std::string>{"plot", dir + "/r.h5", "--size", "100"},
         std::vector<std::string>{"plot", dir + "/r.h5", "--size", "0x100"},
         std::vector<std::string>{"plot", dir + "/r.h5", "-o", dir + "/plain"}}) {
     const Outcome b = magnus_cmd(args, dir);
@@ -215,11 +230,14 @@ TEST_CASE("magnus plot skips what the file lacks and fails in one line when noth
   REQUIRE_THROWS_AS(parse_plot_size("-9x700"), std::invalid_argument);
 }
 
-TEST_CASE("magnus plot draws a sweep file as C_L against α, or against Γ for a circulation sweep", "[app][plot]") {
+TEST_CASE("magnus plot draws a sweep file as C_L against α, or against Γ for a circulation sweep",
+          "[app][plot]") {
   const std::string dir = test::temp_dir("plot-sweep");
   const std::string cases = std::string(MAGNUS_SOURCE_DIR) + "/cases/spin_ratio_1.toml";
-  REQUIRE(magnus_cmd({"sweep", cases, "--spin-ratio", "0:3:0.5", "--set", "grid.n_theta=32", "-o", dir + "/s.h5",
-                      "-q"}, dir).status == 0);
+  REQUIRE(magnus_cmd({"sweep", cases, "--spin-ratio", "0:3:0.5", "--set", "grid.n_theta=32", "-o",
+                      dir + "/s.h5", "-q"},
+                     dir)
+              .status == 0);
   const Outcome o = magnus_cmd({"plot", dir + "/s.h5", "--size", "640x480"}, dir);
   CAPTURE(o.err);
   REQUIRE(o.status == 0);
@@ -242,7 +260,8 @@ TEST_CASE("magnus plot draws a sweep file as C_L against α, or against Γ for a
   // A circulation sweep: x is Γ in m²/s.
   REQUIRE(magnus_cmd({"sweep", cases, "--set", "circulation.model=given", "--set", "circulation.value=0",
                       "--circulation", "-5:5:2.5", "--set", "grid.n_theta=32", "-o", dir + "/c.h5", "-q"},
-                     dir).status == 0);
+                     dir)
+              .status == 0);
   const LiftSweep c = read_lift_sweep(dir + "/c.h5");
   CHECK(c.by_circulation);
   CHECK(c.x.front() == Approx(-5.0));

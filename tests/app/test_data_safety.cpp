@@ -1,7 +1,6 @@
 // No data loss: a magnus killed while it writes, a full disk, an unwritable place, and
 // damaged or foreign files given to `magnus inspect`. Every test runs the magnus binary of this build
 // (under scripts/sanitize.sh that is the sanitized one).
-#include <catch2/catch.hpp>
 #include <fcntl.h>
 #include <hdf5.h>
 #include <signal.h>
@@ -10,6 +9,7 @@
 #include <sys/sysmacros.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -20,8 +20,8 @@
 #include <sstream>
 #include <thread>
 
-#include "io/report.hpp"
 #include "io/inspect.hpp"
+#include "io/report.hpp"
 #include "support.hpp"
 
 using namespace magnus;
@@ -71,15 +71,16 @@ Child start(const std::vector<std::string>& args, const std::string& dir, rlim_t
 }
 
 struct Outcome {
-  bool exited;   ///< false: ended by a signal
-  int status;    ///< exit status, or the signal
+  bool exited;  ///< false: ended by a signal
+  int status;   ///< exit status, or the signal
   std::string out, err;
 };
 
 Outcome finish(const Child& c) {
   int raw = 0;
   REQUIRE(::waitpid(c.pid, &raw, 0) == c.pid);
-  return {WIFEXITED(raw), WIFEXITED(raw) ? WEXITSTATUS(raw) : WTERMSIG(raw), slurp(c.out_path), slurp(c.err_path)};
+  return {WIFEXITED(raw), WIFEXITED(raw) ? WEXITSTATUS(raw) : WTERMSIG(raw), slurp(c.out_path),
+          slurp(c.err_path)};
 }
 
 Outcome run_magnus(const std::vector<std::string>& args, const std::string& dir, rlim_t file_limit = 0) {
@@ -125,7 +126,9 @@ void require_refused(const std::string& path, const std::string& dir) {
 }
 
 /// Offset of the first occurrence of needle in hay (npos if none).
-size_t find_bytes(const std::string& hay, const std::string& needle, size_t from = 0) { return hay.find(needle, from); }
+size_t find_bytes(const std::string& hay, const std::string& needle, size_t from = 0) {
+  return hay.find(needle, from);
+}
 
 }  // namespace
 
@@ -147,7 +150,8 @@ TEST_CASE("SIGKILL while writing leaves the earlier result intact and no partial
       const auto size = fs::file_size(tmp, ec);
       seen = !ec && size >= written && size > 0;
       if (!seen) {
-        if (::waitpid(c.pid, nullptr, WNOHANG) == c.pid) FAIL("magnus ended before writing " << written << " bytes");
+        if (::waitpid(c.pid, nullptr, WNOHANG) == c.pid)
+          FAIL("magnus ended before writing " << written << " bytes");
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
       }
     }
@@ -236,8 +240,8 @@ TEST_CASE("inspect on truncated, corrupt, empty and non-files: one line, never a
   const std::string bad = dir + "/bad.h5";
 
   SECTION("truncated") {
-    for (const size_t n : {size_t(1), size_t(8), size_t(100), size_t(2048), bytes.size() / 3, bytes.size() / 2,
-                           bytes.size() - 512, bytes.size() - 1}) {
+    for (const size_t n : {size_t(1), size_t(8), size_t(100), size_t(2048), bytes.size() / 3,
+                           bytes.size() / 2, bytes.size() - 512, bytes.size() - 1}) {
       spit(bad, bytes.substr(0, n));
       require_refused(bad, dir);
     }
@@ -348,7 +352,10 @@ TEST_CASE("inspect on foreign HDF5 files: one line, never a crash", "[app][safet
       make("other_format.h5", [&](hid_t f) { string_attr(f, "format", {"something-else"}, true); }),
       make("format_int.h5", [&](hid_t f) { long_attr(f, "format", {7}); }),
       // An array where one string is expected: read into one pointer it would overrun the stack.
-      make("format_array.h5", [&](hid_t f) { string_attr(f, "format", {"magnus-flow", "b", "c", "d"}, false); }),
+      make("format_array.h5",
+           [&](hid_t f) {
+             string_attr(f, "format", {"magnus-flow", "b", "c", "d"}, false);
+           }),
       // Claims to be a result but holds nothing of one, or the wrong kinds of things.
       make("format_only.h5", [&](hid_t f) { string_attr(f, "format", {"magnus-flow"}, true); }),
       make("bad_version.h5",
@@ -367,7 +374,8 @@ TEST_CASE("inspect on foreign HDF5 files: one line, never a crash", "[app][safet
   REQUIRE(slurp(dir + "/stderr.txt").find("bad_software.h5") != std::string::npos);
 }
 
-TEST_CASE("reading damaged files in-process throws one line and leaves no HDF5 object open", "[app][safety]") {
+TEST_CASE("reading damaged files in-process throws one line and leaves no HDF5 object open",
+          "[app][safety]") {
   const std::string dir = test::temp_dir("safety-inprocess");
   const std::string good = dir + "/good.h5";
   earlier_result(good, dir);
@@ -375,7 +383,8 @@ TEST_CASE("reading damaged files in-process throws one line and leaves no HDF5 o
   REQUIRE(describe_result(good).find("read back intact") != std::string::npos);
   const ssize_t open_before = H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL);
   std::vector<std::string> damaged = {bytes.substr(0, bytes.size() / 2), bytes.substr(0, 100), std::string()};
-  for (const size_t at : {bytes.size() / 2, bytes.size() / 3, bytes.find("OHDR") + 6, bytes.rfind("OHDR") + 6}) {
+  for (const size_t at :
+       {bytes.size() / 2, bytes.size() / 3, bytes.find("OHDR") + 6, bytes.rfind("OHDR") + 6}) {
     std::string b = bytes;
     for (size_t k = 0; k < 8; ++k) b[at + k] = char(~b[at + k]);
     damaged.push_back(b);
@@ -405,7 +414,9 @@ Outcome run_bounded(const std::vector<std::string>& args, const std::string& dir
   for (int k = 0; k < seconds * 20; ++k) {
     int raw = 0;
     const pid_t p = ::waitpid(c.pid, &raw, WNOHANG);
-    if (p == c.pid) return {WIFEXITED(raw), WIFEXITED(raw) ? WEXITSTATUS(raw) : WTERMSIG(raw), slurp(c.out_path), slurp(c.err_path)};
+    if (p == c.pid)
+      return {WIFEXITED(raw), WIFEXITED(raw) ? WEXITSTATUS(raw) : WTERMSIG(raw), slurp(c.out_path),
+              slurp(c.err_path)};
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   ::kill(c.pid, SIGKILL);
@@ -425,7 +436,8 @@ void require_one_line_refusal(const Outcome& o, const std::string& path) {
 
 }  // namespace
 
-TEST_CASE("outputs through a symlink replace its target and keep the link (compare --csv, run -o)", "[app][safety]") {
+TEST_CASE("outputs through a symlink replace its target and keep the link (compare --csv, run -o)",
+          "[app][safety]") {
   const std::string dir = test::temp_dir("safety-links");
   earlier_result(dir + "/a.h5", dir);
   spit(dir + "/real.csv", "old\n");
@@ -438,7 +450,8 @@ TEST_CASE("outputs through a symlink replace its target and keep the link (compa
 
   spit(dir + "/real.h5", "old");
   fs::create_symlink("real.h5", dir + "/link.h5");
-  const Outcome r = run_bounded({"run", case_path, "-o", dir + "/link.h5", "-q", "--set", "grid.n_theta=16"}, dir);
+  const Outcome r =
+      run_bounded({"run", case_path, "-o", dir + "/link.h5", "-q", "--set", "grid.n_theta=16"}, dir);
   CAPTURE(r.err);
   REQUIRE(r.status == 0);
   REQUIRE(fs::is_symlink(dir + "/link.h5"));
@@ -455,8 +468,10 @@ TEST_CASE("a FIFO, a device or a directory as an output is refused in one line, 
   // A FIFO: refused without opening it (opening would block with no reader).
   REQUIRE(::mkfifo((dir + "/fifo.csv").c_str(), 0644) == 0);
   REQUIRE(::mkfifo((dir + "/fifo.h5").c_str(), 0644) == 0);
-  require_one_line_refusal(run_bounded({"compare", dir + "/a.h5", "--csv", dir + "/fifo.csv"}, dir, 20), dir + "/fifo.csv");
-  require_one_line_refusal(run_bounded({"run", case_path, "-o", dir + "/fifo.h5", "-q"}, dir, 20), dir + "/fifo.h5");
+  require_one_line_refusal(run_bounded({"compare", dir + "/a.h5", "--csv", dir + "/fifo.csv"}, dir, 20),
+                           dir + "/fifo.csv");
+  require_one_line_refusal(run_bounded({"run", case_path, "-o", dir + "/fifo.h5", "-q"}, dir, 20),
+                           dir + "/fifo.h5");
   struct stat st;
   REQUIRE(::lstat((dir + "/fifo.csv").c_str(), &st) == 0);
   REQUIRE(S_ISFIFO(st.st_mode));
@@ -475,14 +490,16 @@ TEST_CASE("a FIFO, a device or a directory as an output is refused in one line, 
 
   // A directory.
   fs::create_directory(dir + "/sub");
-  require_one_line_refusal(run_bounded({"compare", dir + "/a.h5", "--csv", dir + "/sub"}, dir, 20), dir + "/sub");
+  require_one_line_refusal(run_bounded({"compare", dir + "/a.h5", "--csv", dir + "/sub"}, dir, 20),
+                           dir + "/sub");
   require_one_line_refusal(run_bounded({"run", case_path, "-o", dir + "/sub", "-q"}, dir, 20), dir + "/sub");
   REQUIRE(fs::is_directory(dir + "/sub"));
   REQUIRE(fs::is_empty(dir + "/sub"));
   REQUIRE(temp_files(dir).empty());
 }
 
-TEST_CASE("compare --csv - writes the CSV alone on stdout and creates no file named '-'", "[app][safety][compare]") {
+TEST_CASE("compare --csv - writes the CSV alone on stdout and creates no file named '-'",
+          "[app][safety][compare]") {
   const std::string dir = test::temp_dir("safety-stdout");
   earlier_result(dir + "/a.h5", dir);
   const bool dash_before = fs::exists("-");

@@ -1,6 +1,6 @@
 // magnus sweep through the binary: the table, CSV, HDF5 and PNG outputs, and the one-line refusals.
-#include <catch2/catch.hpp>
 #include <hdf5.h>
+#include <catch2/catch.hpp>
 
 #include <cmath>
 #include <cstdlib>
@@ -18,7 +18,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-
 /// PNG width and height from the IHDR chunk (0, 0 if not a PNG).
 std::pair<unsigned long, unsigned long> png_size(const std::string& path) {
   const std::string b = slurp(path);
@@ -32,10 +31,12 @@ std::pair<unsigned long, unsigned long> png_size(const std::string& path) {
 
 }  // namespace
 
-TEST_CASE("magnus sweep: table, CSV, HDF5 and plot; bad ranges give one line and no files", "[app][sweep][cli]") {
+TEST_CASE("magnus sweep: table, CSV, HDF5 and plot; bad ranges give one line and no files",
+          "[app][sweep][cli]") {
   const std::string dir = test::temp_dir("sweep-cli");
   const std::string case_path = dir + "/case.toml";
-  std::ofstream(case_path) << "[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = 10.0\n[grid]\nn_theta = 32\n";
+  std::ofstream(case_path)
+      << "[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = 10.0\n[grid]\nn_theta = 32\n";
   const Outcome o = magnus_cmd({"sweep", case_path, "--spin-ratio", "0:4:0.5", "--csv", dir + "/s.csv", "-o",
                                 dir + "/s.h5", "--plot", dir + "/s.png", "--size", "400x300"},
                                dir);
@@ -81,9 +82,10 @@ TEST_CASE("magnus sweep: table, CSV, HDF5 and plot; bad ranges give one line and
     CHECK(std::string(s.c_str()) == "magnus-sweep");
     H5Tclose(t);
     H5Aclose(a);
-    for (const char* name : {"alpha", "circulation", "cl", "cl_kutta_joukowski", "cl_seed_estimate",
-                             "cl_over_kj_minus_1", "kj_over_seed", "cd", "delta_p_top_bottom",
-                             "delta_p_seed_estimate", "stagnation_theta1", "stagnation_theta2", "stagnation_r_over_a"}) {
+    for (const char* name :
+         {"alpha", "circulation", "cl", "cl_kutta_joukowski", "cl_seed_estimate", "cl_over_kj_minus_1",
+          "kj_over_seed", "cd", "delta_p_top_bottom", "delta_p_seed_estimate", "stagnation_theta1",
+          "stagnation_theta2", "stagnation_r_over_a"}) {
       const std::string path = std::string("/sweep/") + name;
       CAPTURE(path);
       const hid_t d = H5Dopen2(f, path.c_str(), H5P_DEFAULT);
@@ -102,12 +104,15 @@ TEST_CASE("magnus sweep: table, CSV, HDF5 and plot; bad ranges give one line and
     H5Fclose(f);
   }
   CHECK(png_size(dir + "/s.png") == std::pair<unsigned long, unsigned long>(400, 300));
-  for (const auto& e : fs::directory_iterator(dir)) CHECK(e.path().filename().string().find(".tmp-") == std::string::npos);
+  for (const auto& e : fs::directory_iterator(dir))
+    CHECK(e.path().filename().string().find(".tmp-") == std::string::npos);
 
   // Bad input: one line on stderr, non-zero exit, nothing written.
   const std::string bad_dir = test::temp_dir("sweep-cli-bad");
-  std::ofstream(bad_dir + "/case.toml") << "[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = 10.0\n[grid]\nn_theta = 16\n";
-  std::ofstream(bad_dir + "/still.toml") << "[cylinder]\nradius = 0.1\nspin = 100.0\n[grid]\nn_theta = 16\n[flow]\nspeed = 0.0\n";
+  std::ofstream(bad_dir + "/case.toml")
+      << "[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = 10.0\n[grid]\nn_theta = 16\n";
+  std::ofstream(bad_dir + "/still.toml")
+      << "[cylinder]\nradius = 0.1\nspin = 100.0\n[grid]\nn_theta = 16\n[flow]\nspeed = 0.0\n";
   const std::string c = bad_dir + "/case.toml", out = bad_dir + "/o.csv";
   const std::vector<std::vector<std::string>> bad = {
       {"sweep", c, "--spin-ratio", "4:0:0.5", "--csv", out},
@@ -146,7 +151,8 @@ TEST_CASE("magnus sweep --spin-ratio: the case needs no spin key of its own", "[
   const ResultFile f(dir + "/s.h5", {"magnus-sweep"});
   const auto alpha = f.dataset("/sweep/alpha"), cl = f.dataset("/sweep/cl");
   REQUIRE(alpha == std::vector<double>{0.0, 1.0, 2.0});
-  for (size_t k = 0; k < cl.size(); ++k) REQUIRE(cl[k] == Approx(-2 * M_PI * alpha[k]).epsilon(3e-3).margin(1e-12));
+  for (size_t k = 0; k < cl.size(); ++k)
+    REQUIRE(cl[k] == Approx(-2 * M_PI * alpha[k]).epsilon(3e-3).margin(1e-12));
   // A run of the same file still needs it: only the sweep supplies the spin.
   REQUIRE(magnus_cmd({"run", case_path, "-o", dir + "/r.h5"}, dir).status != 0);
 }

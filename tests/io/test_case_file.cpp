@@ -24,7 +24,8 @@ std::string error_of(const std::string& text, const std::vector<std::string>& se
 
 TEST_CASE("the scene's physical keys are required: no silent demo", "[app][case]") {
   const std::string spin_missing =
-      "test.toml: cylinder.spin: required key is missing: give one of cylinder.spin (rad/s), cylinder.spin_ratio or "
+      "test.toml: cylinder.spin: required key is missing: give one of cylinder.spin (rad/s), "
+      "cylinder.spin_ratio or "
       "cylinder.rpm, or circulation.model = \"given\" with circulation.value";
   CHECK(error_of("") == "test.toml: cylinder.radius: required key is missing (the cylinder radius a, m)");
   CHECK(error_of("[cylinder]\nradius = 0.1\nspin = 1.0\n") ==
@@ -35,10 +36,12 @@ TEST_CASE("the scene's physical keys are required: no silent demo", "[app][case]
   CHECK(error_of("[cylinder]\nradius = 0.1\nrpm = 60\nspin = 1.0\n[flow]\nspeed = 10.0\n") ==
         "test.toml: cylinder.rpm: conflicts with cylinder.spin: give exactly one of them");
   // The given model needs no spin (ω = 0); rpm is 2π/60 rad/s per rev/min; --set supplies keys too.
-  const Case g = parse("[cylinder]\nradius = 0.1\n[flow]\nspeed = 10.0\n[circulation]\nmodel = \"given\"\nvalue = 2.0\n");
+  const Case g = parse(
+      "[cylinder]\nradius = 0.1\n[flow]\nspeed = 10.0\n[circulation]\nmodel = \"given\"\nvalue = 2.0\n");
   CHECK(g.scene.spin == 0.0);
   CHECK(g.scene.Gamma() == 2.0);
-  CHECK(parse("[cylinder]\nradius = 0.1\nrpm = 60\n[flow]\nspeed = 10.0\n").scene.spin == 2.0 * M_PI / 60.0 * 60.0);
+  CHECK(parse("[cylinder]\nradius = 0.1\nrpm = 60\n[flow]\nspeed = 10.0\n").scene.spin ==
+        2.0 * M_PI / 60.0 * 60.0);
   CHECK(parse("", {"cylinder.radius=0.5", "flow.speed=2", "cylinder.spin=4"}).scene.spin_ratio() == 1.0);
   // An override of one of {spin, spin_ratio, rpm} replaces the others of the group.
   CHECK(parse(scene, {"cylinder.spin_ratio=2"}).scene.spin == 200.0);
@@ -69,7 +72,7 @@ TEST_CASE("spin_ratio sets ω = αU/a; the model 'given' sets Γ", "[app][case]"
 
 TEST_CASE("overrides (--set): TOML values, bare words are strings", "[app][case]") {
   const Case c = parse(scene + "[grid]\nn_theta = 64\n", {"grid.n_theta=128", "solver.method=cholmod",
-                                                  "output.fields=[\"psi\", \"cp\"]", "title=hello"});
+                                                          "output.fields=[\"psi\", \"cp\"]", "title=hello"});
   REQUIRE(c.grid.n_theta == 128);
   REQUIRE(c.solver.method == Method::cholmod);
   REQUIRE(*c.output.fields == std::vector<std::string>{"psi", "cp"});
@@ -79,7 +82,9 @@ TEST_CASE("overrides (--set): TOML values, bare words are strings", "[app][case]
 }
 
 TEST_CASE("the resolved case round-trips through TOML", "[app][case]") {
-  const Case c = parse("[cylinder]\nradius = 0.1\nspin_ratio = 3\n[flow]\nspeed = 10.0\n[grid]\nn_theta = 64\nspacing = \"uniform\"\n");
+  const Case c = parse(
+      "[cylinder]\nradius = 0.1\nspin_ratio = 3\n[flow]\nspeed = 10.0\n[grid]\nn_theta = 64\nspacing = "
+      "\"uniform\"\n");
   const Case d = parse(to_toml(c));
   REQUIRE(d.scene.spin == c.scene.spin);
   REQUIRE(d.grid.n_theta == 64);
@@ -90,24 +95,36 @@ TEST_CASE("the resolved case round-trips through TOML", "[app][case]") {
 TEST_CASE("bad input names the key and the problem", "[app][case]") {
   using Catch::Contains;
   REQUIRE_THROWS_WITH(parse("[grid\nn_theta = 3"), Contains("test.toml:1") && Contains("malformed TOML"));
-  REQUIRE_THROWS_WITH(parse(scene + "[grid]\nn_thetaa = 64\n"), Contains("grid.n_thetaa") && Contains("did you mean grid.n_theta"));
+  REQUIRE_THROWS_WITH(parse(scene + "[grid]\nn_thetaa = 64\n"),
+                      Contains("grid.n_thetaa") && Contains("did you mean grid.n_theta"));
   REQUIRE_THROWS_WITH(parse(scene + "[gird]\nn_theta = 64\n"), Contains("[gird]") && Contains("[grid]"));
-  REQUIRE_THROWS_WITH(parse(scene + "[grid]\nn_theta = \"many\"\n"), Contains("grid.n_theta") && Contains("expected an integer"));
-  REQUIRE_THROWS_WITH(parse("[cylinder]\nradius = 0.1\nspin = 1.0\n[flow]\nspeed = -1.0\n"), Contains("flow.speed") && Contains("out of range"));
-  REQUIRE_THROWS_WITH(parse("[cylinder]\nradius = 0.1\nspin = 1.0\n[flow]\nspeed = 1.0\ndensity = nan\n"), Contains("flow.density") && Contains("finite"));
-  REQUIRE_THROWS_WITH(parse("[cylinder]\nradius = inf\nspin = 1.0\n[flow]\nspeed = 1.0\n"), Contains("cylinder.radius") && Contains("finite"));
-  REQUIRE_THROWS_WITH(parse("[cylinder]\nradius = 0.1\nspin = 1.0\nspin_ratio = 1.0\n[flow]\nspeed = 1.0\n"), Contains("spin_ratio") && Contains("exactly one"));
+  REQUIRE_THROWS_WITH(parse(scene + "[grid]\nn_theta = \"many\"\n"),
+                      Contains("grid.n_theta") && Contains("expected an integer"));
+  REQUIRE_THROWS_WITH(parse("[cylinder]\nradius = 0.1\nspin = 1.0\n[flow]\nspeed = -1.0\n"),
+                      Contains("flow.speed") && Contains("out of range"));
+  REQUIRE_THROWS_WITH(parse("[cylinder]\nradius = 0.1\nspin = 1.0\n[flow]\nspeed = 1.0\ndensity = nan\n"),
+                      Contains("flow.density") && Contains("finite"));
+  REQUIRE_THROWS_WITH(parse("[cylinder]\nradius = inf\nspin = 1.0\n[flow]\nspeed = 1.0\n"),
+                      Contains("cylinder.radius") && Contains("finite"));
+  REQUIRE_THROWS_WITH(parse("[cylinder]\nradius = 0.1\nspin = 1.0\nspin_ratio = 1.0\n[flow]\nspeed = 1.0\n"),
+                      Contains("spin_ratio") && Contains("exactly one"));
   REQUIRE_THROWS_WITH(parse(scene + "[grid]\nn_theta = 255\n"), Contains("grid.n_theta") && Contains("even"));
   REQUIRE_THROWS_WITH(parse(scene + "[grid]\nn_theta = 6\n"), Contains("grid.n_theta") && Contains(">= 8"));
-  REQUIRE_THROWS_WITH(parse(scene + "[domain]\nouter_radius = 1.0\n"), Contains("domain.outer_radius") && Contains("> 1"));
-  REQUIRE_THROWS_WITH(parse(scene + "[domain]\nfar_field = \"far\"\n"), Contains("domain.far_field") && Contains("\"exact\""));
-  REQUIRE_THROWS_WITH(parse(scene + "[circulation]\nmodel = \"given\"\n"), Contains("circulation.value") && Contains("required"));
+  REQUIRE_THROWS_WITH(parse(scene + "[domain]\nouter_radius = 1.0\n"),
+                      Contains("domain.outer_radius") && Contains("> 1"));
+  REQUIRE_THROWS_WITH(parse(scene + "[domain]\nfar_field = \"far\"\n"),
+                      Contains("domain.far_field") && Contains("\"exact\""));
+  REQUIRE_THROWS_WITH(parse(scene + "[circulation]\nmodel = \"given\"\n"),
+                      Contains("circulation.value") && Contains("required"));
   REQUIRE_THROWS_WITH(parse(scene + "[circulation]\nvalue = 2.0\n"), Contains("circulation.value"));
-  REQUIRE_THROWS_WITH(parse(scene + "[grid]\nspacing = \"uniform\"\n[solver]\nstencil = \"9-point\"\n"), Contains("solver.stencil"));
-  REQUIRE_THROWS_WITH(parse(scene + "[output]\nfields = [\"psi\", \"vorticity\"]\n"), Contains("output.fields") && Contains("vorticity"));
+  REQUIRE_THROWS_WITH(parse(scene + "[grid]\nspacing = \"uniform\"\n[solver]\nstencil = \"9-point\"\n"),
+                      Contains("solver.stencil"));
+  REQUIRE_THROWS_WITH(parse(scene + "[output]\nfields = [\"psi\", \"vorticity\"]\n"),
+                      Contains("output.fields") && Contains("vorticity"));
   REQUIRE_THROWS_WITH(parse(scene, {"grid.n_thetaa=64"}), Contains("--set") && Contains("grid.n_theta"));
   REQUIRE_THROWS_WITH(parse(scene, {"grid.n_theta"}), Contains("--set") && Contains("section.key=value"));
-  REQUIRE_THROWS_WITH(parse("[flow]\nspeed = 0.0\n[cylinder]\nradius = 0.1\nspin_ratio = 1.0\n"), Contains("cylinder.spin_ratio"));
+  REQUIRE_THROWS_WITH(parse("[flow]\nspeed = 0.0\n[cylinder]\nradius = 0.1\nspin_ratio = 1.0\n"),
+                      Contains("cylinder.spin_ratio"));
   REQUIRE_THROWS_WITH(load_case("/nonexistent/case.toml"), Contains("/nonexistent/case.toml"));
 }
 

@@ -1,10 +1,10 @@
 // Format version 2: one schema table, units on everything, dimension scales, no NaN, the
 // XDMF sidecar that validates and closes the ring by connectivity, optional compression, the size figure,
 // and readers that still take version 1 files.
-#include <catch2/catch.hpp>
+#include <fmt/core.h>
 #include <hdf5.h>
 #include <hdf5_hl.h>
-#include <fmt/core.h>
+#include <catch2/catch.hpp>
 
 #include <cmath>
 #include <cstdlib>
@@ -32,13 +32,16 @@ FlowResult all_fields(double alpha, int n_theta) {
   return run_case(c);
 }
 
-std::string data_file(const std::string& name) { return std::string(MAGNUS_SOURCE_DIR) + "/tests/data/" + name; }
+std::string data_file(const std::string& name) {
+  return std::string(MAGNUS_SOURCE_DIR) + "/tests/data/" + name;
+}
 
 bool has_command(const std::string& cmd) { return std::system((cmd + " >/dev/null 2>&1").c_str()) == 0; }
 
 }  // namespace
 
-TEST_CASE("format 2: the file holds exactly the schema's keys, each numeric attribute with its unit", "[io][format]") {
+TEST_CASE("format 2: the file holds exactly the schema's keys, each numeric attribute with its unit",
+          "[io][format]") {
   const std::string dir = test::temp_dir("v2-schema");
   const FlowResult r = all_fields(1.0, 32);
   write_result(r, dir + "/r.h5");
@@ -90,7 +93,8 @@ TEST_CASE("format 2: r and θ are dimension scales of every field and θ of the 
     CHECK(H5DSis_attached(d, ts, 1) > 0);
     H5Dclose(d);
   }
-  for (const char* p : {"/surface/u_theta", "/surface/pressure", "/surface/cp", "/surface/cp_exact", "/surface/theta"}) {
+  for (const char* p :
+       {"/surface/u_theta", "/surface/pressure", "/surface/cp", "/surface/cp_exact", "/surface/theta"}) {
     CAPTURE(p);
     const hid_t d = H5Dopen2(file, p, H5P_DEFAULT);
     CHECK(H5DSis_attached(d, ts, 0) > 0);
@@ -108,8 +112,10 @@ TEST_CASE("read_result gives back every attribute, field and stagnation point wr
   const FlowResult b = read_result(dir + "/r.h5");
   for (const AttrSpec& a : result_attributes()) {
     CAPTURE(a.name);
-    if (a.kind == AttrKind::text) REQUIRE(a.text(b) == a.text(r));
-    else REQUIRE(a.number(b) == a.number(r));
+    if (a.kind == AttrKind::text)
+      REQUIRE(a.text(b) == a.text(r));
+    else
+      REQUIRE(a.number(b) == a.number(r));
   }
   for (const DatasetSpec& d : result_datasets()) {
     CAPTURE(d.path);
@@ -119,7 +125,8 @@ TEST_CASE("read_result gives back every attribute, field and stagnation point wr
   REQUIRE(b.stagnation_exact.size() == r.stagnation_exact.size());
 }
 
-TEST_CASE("the .xmf validates against the XDMF DTD and closes the ring by connectivity", "[io][format][xdmf]") {
+TEST_CASE("the .xmf validates against the XDMF DTD and closes the ring by connectivity",
+          "[io][format][xdmf]") {
   const std::string dir = test::temp_dir("v2-xdmf");
   const FlowResult r = all_fields(1.0, 16);
   write_result(r, dir + "/flow.h5");
@@ -128,7 +135,8 @@ TEST_CASE("the .xmf validates against the XDMF DTD and closes the ring by connec
   // The DOCTYPE names Xdmf.dtd beside the file.
   fs::copy_file(data_file("Xdmf.dtd"), dir + "/Xdmf.dtd");
   REQUIRE(has_command("xmllint --version"));  // scripts/setup.sh installs libxml2-utils
-  const std::string cmd = "xmllint --noout --dtdvalid '" + data_file("Xdmf.dtd") + "' '" + xmf + "' 2>'" + dir + "/lint.txt'";
+  const std::string cmd =
+      "xmllint --noout --dtdvalid '" + data_file("Xdmf.dtd") + "' '" + xmf + "' 2>'" + dir + "/lint.txt'";
   CAPTURE(test::slurp(dir + "/lint.txt"));
   REQUIRE(std::system(cmd.c_str()) == 0);
   REQUIRE(test::slurp(dir + "/lint.txt").empty());

@@ -1,6 +1,7 @@
-// Inputs that broke the case-file or --set parser under libFuzzer (scripts/fuzz.sh), kept as regression tests.
-// The contract: parse_case either returns a case whose resolved TOML reads back to itself, or throws CaseError
-// (one line naming the file or the --set). Nothing else: no other exception, no crash, no undefined behaviour.
+// Inputs that broke the case-file or --set parser under libFuzzer (scripts/fuzz.sh), kept as regression
+// tests. The contract: parse_case either returns a case whose resolved TOML reads back to itself, or throws
+// CaseError (one line naming the file or the --set). Nothing else: no other exception, no crash, no undefined
+// behaviour.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
@@ -12,15 +13,16 @@ using namespace magnus;
 
 namespace {
 
-/// The text with the scene keys a case file requires appended, unless it has a [cylinder] or [flow] of its own
-/// (these tests are about the parser, not the scene).
+/// The text with the scene keys a case file requires appended, unless it has a [cylinder] or [flow] of its
+/// own (these tests are about the parser, not the scene).
 std::string scened(const std::string& text) {
   if (text.find("[cylinder]") != std::string::npos || text.find("[flow]") != std::string::npos) return text;
   return text + "\n[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = 10.0\n";
 }
 
 /// Parses; on success checks the resolved TOML round trip and returns true; on CaseError returns false.
-bool parses(const std::string& text, const std::vector<std::string>& sets = {}, std::string* error = nullptr) {
+bool parses(const std::string& text, const std::vector<std::string>& sets = {},
+            std::string* error = nullptr) {
   try {
     const Case c = parse_case(scened(text), "fuzz.toml", sets);
     REQUIRE(std::isfinite(c.scene.spin));
@@ -53,8 +55,9 @@ TEST_CASE("fuzz: non-ASCII characters where toml++ 3.3 hits __builtin_unreachabl
   // toml++ 3.3's whitespace test has no case for U+00A1..U+0499, U+2D1E..U+3117 and U+FAC6..U+FEFE
   // (marzer/tomlplusplus#190): first found by the fuzzer as a mutated shipped case with 'ψ' in a key.
   std::string err;
-  for (const char* bad : {"title = Über\n", "Ü = 1\n", "[Ü]\n", "a = [ ψ ]\n", "a = { Ü = 1 }\n", "[grid]\nn_theta = 64Ü\n",
-                          "title = \"\"\"\\Ü\"\"\"\n", "title = ﬀ\n", "# ψ = U (r − a²/r) sinθ\nψ = 1\n"}) {
+  for (const char* bad :
+       {"title = Über\n", "Ü = 1\n", "[Ü]\n", "a = [ ψ ]\n", "a = { Ü = 1 }\n", "[grid]\nn_theta = 64Ü\n",
+        "title = \"\"\"\\Ü\"\"\"\n", "title = ﬀ\n", "# ψ = U (r − a²/r) sinθ\nψ = 1\n"}) {
     CAPTURE(bad);
     REQUIRE_FALSE(parses(bad, {}, &err));
     REQUIRE(err.find("fuzz.toml") == 0);
@@ -63,7 +66,8 @@ TEST_CASE("fuzz: non-ASCII characters where toml++ 3.3 hits __builtin_unreachabl
   REQUIRE(parses("# Γ = 2πa²ω, ψ, α, Ü\ntitle = \"Über ψ ⴀ ﬀ\" # ψ\n"));
   REQUIRE(parse_case(scened("title = \"Über ψ ⴀ ﬀ\"\n"), "x").title == "Über ψ ⴀ ﬀ");
   REQUIRE(parse_case(scened("title = '''Über\nψ'''\n"), "x").title == "Über\nψ");
-  REQUIRE(parse_case(scened("title = \"\"\"\\\n   Über\"\"\"\n"), "x").title == "Über");  // line-ending backslash
+  REQUIRE(parse_case(scened("title = \"\"\"\\\n   Über\"\"\"\n"), "x").title ==
+          "Über");  // line-ending backslash
   REQUIRE(parse_case(scened("title = \"\"\"\\\n  ⴀ\"\"\"\n"), "x").title == "ⴀ");
   REQUIRE_FALSE(parses("[cylinder]\n\"Ü\" = 1\n", {}, &err));
   REQUIRE(err.find("unknown key cylinder.Ü") != std::string::npos);
@@ -79,8 +83,9 @@ TEST_CASE("fuzz: non-ASCII characters where toml++ 3.3 hits __builtin_unreachabl
 
 TEST_CASE("fuzz: a --set bare word that is not UTF-8 is refused", "[app][case][fuzz]") {
   // crash-4433ab72: the resolved TOML of the accepted case held the raw bytes and did not parse.
-  const std::string input = "grid.n_theta=64\nsolver.method=fft\noutput.fields=[\"psi\", \"cp\"]\ntitle=ault"
-                            "\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff# The default demo";
+  const std::string input =
+      "grid.n_theta=64\nsolver.method=fft\noutput.fields=[\"psi\", \"cp\"]\ntitle=ault"
+      "\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff# The default demo";
   std::string err;
   REQUIRE_FALSE(parses("", lines_of(input), &err));
   REQUIRE(err.find("not valid UTF-8") != std::string::npos);
@@ -91,7 +96,9 @@ TEST_CASE("fuzz: a --set bare word that is not UTF-8 is refused", "[app][case][f
 
 TEST_CASE("fuzz: control characters in strings survive the resolved TOML", "[app][case][fuzz]") {
   REQUIRE(parses("title = \"a\\u0001b\\u007fc\\td\\re\"\n"));
-  REQUIRE(parse_case(scened("title = \"a\\u0001b\\u007f\"\n"), "x").title == "a\x01" "b\x7f");
+  REQUIRE(parse_case(scened("title = \"a\\u0001b\\u007f\"\n"), "x").title ==
+          "a\x01"
+          "b\x7f");
   REQUIRE(parses("", {"title=a\rb"}));
   REQUIRE(parses("[output]\nfile = \"\\u001b[31m.h5\"\n"));
 }
@@ -108,7 +115,8 @@ TEST_CASE("fuzz: finite values whose products overflow are refused", "[app][case
   REQUIRE(parses("[cylinder]\nradius = 1e-6\nspin_ratio = 1e4\n[flow]\nspeed = 1e-12\n"));
 }
 
-TEST_CASE("fuzz: a very long unknown key is refused without a suggestion (the search is bounded by length)", "[app][case][fuzz]") {
+TEST_CASE("fuzz: a very long unknown key is refused without a suggestion (the search is bounded by length)",
+          "[app][case][fuzz]") {
   // The nearest-key suggestion was O(length) per valid key and per key part: seconds for a megabyte key.
   const std::string key(1 << 20, 'k');
   std::string err;

@@ -3,8 +3,8 @@
 #include <fstream>
 
 #include "io/hdf5_io.hpp"
-#include "io/report.hpp"
 #include "io/inspect.hpp"
+#include "io/report.hpp"
 #include "io/schema.hpp"
 #include "support.hpp"
 
@@ -19,7 +19,8 @@ void require_equal(const std::vector<double>& a, const std::vector<double>& b) {
 
 }  // namespace
 
-TEST_CASE("HDF5 round trip: every dataset and attribute of format 2, with units, as computed", "[postproc][hdf5]") {
+TEST_CASE("HDF5 round trip: every dataset and attribute of format 2, with units, as computed",
+          "[postproc][hdf5]") {
   const std::string dir = test::temp_dir("hdf5");
   Case c = test::make_case(1.0, 32);
   c.output.fields.reset();  // all fields
@@ -65,10 +66,14 @@ TEST_CASE("HDF5 round trip: every dataset and attribute of format 2, with units,
     CAPTURE(name);
     REQUIRE(f.has_attr(name, "units"));
   }
-  const std::pair<const char*, double> params[] = {
-      {"radius", c.scene.radius},        {"spin", c.scene.spin},     {"spin_ratio", c.scene.spin_ratio()}, {"speed", c.scene.speed},
-      {"density", c.scene.density},      {"pressure_inf", c.scene.pressure_inf},
-      {"outer_radius", r.grid.outer_radius() / r.grid.a}, {"outer_radius_requested", c.grid.outer_radius}};
+  const std::pair<const char*, double> params[] = {{"radius", c.scene.radius},
+                                                   {"spin", c.scene.spin},
+                                                   {"spin_ratio", c.scene.spin_ratio()},
+                                                   {"speed", c.scene.speed},
+                                                   {"density", c.scene.density},
+                                                   {"pressure_inf", c.scene.pressure_inf},
+                                                   {"outer_radius", r.grid.outer_radius() / r.grid.a},
+                                                   {"outer_radius_requested", c.grid.outer_radius}};
   for (const auto& [name, value] : params) {
     CAPTURE(name);
     REQUIRE(f.attr_double("/parameters", name) == value);

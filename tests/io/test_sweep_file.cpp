@@ -10,7 +10,8 @@
 
 using namespace magnus;
 
-TEST_CASE("sweep file 2: no NaN, a _FillValue where a column is partly undefined, angles in rad", "[io][sweep]") {
+TEST_CASE("sweep file 2: no NaN, a _FillValue where a column is partly undefined, angles in rad",
+          "[io][sweep]") {
   const std::string dir = test::temp_dir("sweep-v2");
   Case c = test::make_case(1.0, 32);
   // α = 0: Γ = 0 (cl/K–J − 1 undefined); α = 3 > 2: one free stagnation point (θ2 undefined).
@@ -23,7 +24,8 @@ TEST_CASE("sweep file 2: no NaN, a _FillValue where a column is partly undefined
     REQUIRE(f.has_attr(path, "units"));
     for (double v : f.dataset(path)) REQUIRE(std::isfinite(v));
   }
-  for (const char* p : {"/sweep/stagnation_theta1", "/sweep/stagnation_theta2"}) REQUIRE(f.attr_string(p, "units") == "rad");
+  for (const char* p : {"/sweep/stagnation_theta1", "/sweep/stagnation_theta2"})
+    REQUIRE(f.attr_string(p, "units") == "rad");
   const auto t1 = f.dataset("/sweep/stagnation_theta1");
   for (double v : t1) REQUIRE((v >= 0.0 && v < 2 * M_PI));
   const auto t2 = f.dataset("/sweep/stagnation_theta2");
@@ -31,7 +33,8 @@ TEST_CASE("sweep file 2: no NaN, a _FillValue where a column is partly undefined
   const double fill = f.attr_double("/sweep/stagnation_theta2", "_FillValue");
   REQUIRE(t2[2] == fill);
   REQUIRE(t2[1] != fill);
-  REQUIRE(f.dataset("/sweep/cl_over_kj_minus_1")[0] == f.attr_double("/sweep/cl_over_kj_minus_1", "_FillValue"));
+  REQUIRE(f.dataset("/sweep/cl_over_kj_minus_1")[0] ==
+          f.attr_double("/sweep/cl_over_kj_minus_1", "_FillValue"));
   REQUIRE_FALSE(f.has_attr("/sweep/cl", "_FillValue"));
   for (const char* a : {"radius", "speed", "density", "pressure_inf", "outer_radius", "n_r"})
     REQUIRE(f.has_attr("/parameters", std::string(a) + "_units"));

@@ -27,8 +27,8 @@ TEST_CASE("sweep ranges A:B:STEP: inclusive, rounded, and bad ones refused in on
   CHECK(parse_sweep_range("2:2:1", "x").values == std::vector<double>{2.0});
   CHECK(parse_sweep_range("0:1:0.3", "x").values.size() == 4);  // 0, 0.3, 0.6, 0.9
   CHECK(parse_sweep_range("1e-3:2e-3:1e-3", "x").values.size() == 2);
-  for (const char* bad : {"4:0:1", "0:1:0", "0:1:-0.5", "0:1", "1", "", "a:b:c", "0:1:0.1:2", "0:1e9:1e-3", "nan:1:1",
-                          "0:inf:1", "0:1:1e-300", "0:1x:0.1", "0:1:0.1 "}) {
+  for (const char* bad : {"4:0:1", "0:1:0", "0:1:-0.5", "0:1", "1", "", "a:b:c", "0:1:0.1:2", "0:1e9:1e-3",
+                          "nan:1:1", "0:inf:1", "0:1:1e-300", "0:1x:0.1", "0:1:0.1 "}) {
     CAPTURE(bad);
     try {
       parse_sweep_range(bad, "--spin-ratio");
@@ -90,7 +90,9 @@ TEST_CASE("the viscous reference data file parses and carries its citations", "[
   ::setenv("MAGNUS_DATA_DIR", "/nowhere", 1);
   CHECK(viscous_reference_path() == "/nowhere/viscous_lift_reference.toml");
   REQUIRE_THROWS_WITH(load_viscous_reference(viscous_reference_path()), Catch::Contains("MAGNUS_DATA_DIR"));
-  if (old) ::setenv("MAGNUS_DATA_DIR", saved.c_str(), 1);
-  else ::unsetenv("MAGNUS_DATA_DIR");
+  if (old)
+    ::setenv("MAGNUS_DATA_DIR", saved.c_str(), 1);
+  else
+    ::unsetenv("MAGNUS_DATA_DIR");
   if (!old) CHECK(fs::equivalent(viscous_reference_path(), path));
 }

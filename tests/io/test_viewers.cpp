@@ -27,25 +27,30 @@ FlowResult write_flow(const std::string& dir) {
 
 TEST_CASE("meshio reads the .xmf: nodes, quadrilaterals, every field and the velocity", "[viewers]") {
   if (!runs("/usr/bin/python3 -c 'import meshio, h5py'")) {
-    WARN("skipped: meshio or h5py is not installed for /usr/bin/python3 (apt-get install python3-meshio python3-h5py)");
+    WARN(
+        "skipped: meshio or h5py is not installed for /usr/bin/python3 (apt-get install python3-meshio "
+        "python3-h5py)");
     return;
   }
   const std::string dir = test::temp_dir("viewer-meshio");
   const FlowResult r = write_flow(dir);
   const size_t nr = r.grid.n_r, nt = r.grid.n_theta;
-  std::ofstream(dir + "/check.py") << "import sys, meshio, h5py, numpy as np\n"
-      "m = meshio.read(sys.argv[1] + '/flow.xmf')\n"
-      "nr, nt = int(sys.argv[2]), int(sys.argv[3])\n"
-      "assert m.points.shape == (nr * nt, 3), m.points.shape\n"
-      "q = m.cells_dict['quad']\n"
-      "assert q.shape == ((nr - 1) * nt, 4) and q.min() == 0 and q.max() == nr * nt - 1\n"
-      "f = h5py.File(sys.argv[1] + '/flow.h5', 'r')\n"
-      "for name in f['fields']:\n"
-      "    assert np.array_equal(m.point_data[name], f['fields'][name][()].ravel()), name\n"
-      "assert m.point_data['velocity'].shape == (nr * nt, 3)\n"
-      "print('ok')\n";
-  const int status = std::system(("/usr/bin/python3 '" + dir + "/check.py' '" + dir + "' " + std::to_string(nr) + " " +
-                                  std::to_string(nt) + " >'" + dir + "/out.txt' 2>&1").c_str());
+  std::ofstream(dir + "/check.py")
+      << "import sys, meshio, h5py, numpy as np\n"
+         "m = meshio.read(sys.argv[1] + '/flow.xmf')\n"
+         "nr, nt = int(sys.argv[2]), int(sys.argv[3])\n"
+         "assert m.points.shape == (nr * nt, 3), m.points.shape\n"
+         "q = m.cells_dict['quad']\n"
+         "assert q.shape == ((nr - 1) * nt, 4) and q.min() == 0 and q.max() == nr * nt - 1\n"
+         "f = h5py.File(sys.argv[1] + '/flow.h5', 'r')\n"
+         "for name in f['fields']:\n"
+         "    assert np.array_equal(m.point_data[name], f['fields'][name][()].ravel()), name\n"
+         "assert m.point_data['velocity'].shape == (nr * nt, 3)\n"
+         "print('ok')\n";
+  const int status =
+      std::system(("/usr/bin/python3 '" + dir + "/check.py' '" + dir + "' " + std::to_string(nr) + " " +
+                   std::to_string(nt) + " >'" + dir + "/out.txt' 2>&1")
+                      .c_str());
   CAPTURE(test::slurp(dir + "/out.txt"));
   REQUIRE(status == 0);
 }
@@ -57,33 +62,38 @@ TEST_CASE("ParaView's XDMF reader and both Xdmf3 readers open the .xmf", "[viewe
   }
   const std::string dir = test::temp_dir("viewer-paraview");
   const FlowResult r = write_flow(dir);
-  const size_t n = size_t(r.grid.n_r) * size_t(r.grid.n_theta), cells = size_t(r.grid.n_r - 1) * size_t(r.grid.n_theta);
-  std::ofstream(dir + "/check.py") << "import sys\n"
-      "from paraview.simple import *\n"
-      "path, n, cells = sys.argv[1] + '/flow.xmf', int(sys.argv[2]), int(sys.argv[3])\n"
-      "import numpy as np\n"
-      "from paraview import servermanager\n"
-      "from vtk.numpy_interface import dataset_adapter as dsa\n"
-      "for make, key in ((XDMFReader, 'FileNames'), (Xdmf3ReaderS, 'FileName'), (Xdmf3ReaderT, 'FileName')):\n"
-      "    src = make(**{key: [path] if key == 'FileNames' else path})\n"
-      "    src.UpdatePipeline()\n"
-      "    info = src.GetDataInformation()\n"
-      "    assert info.GetNumberOfPoints() == n, (make, info.GetNumberOfPoints())\n"
-      "    assert info.GetNumberOfCells() == cells, (make, info.GetNumberOfCells())\n"
-      "    assert src.PointData['velocity'].GetNumberOfComponents() == 3\n"
-      "# The ring is closed by connectivity: ParaView's vorticity of the (irrotational) flow is no larger\n"
-      "# on the seam θ = 0 than elsewhere (a seam closed only in space gave 4.09 there against 0.06).\n"
-      "g = Gradient(Input=src)\n"
-      "g.ScalarArray = ['POINTS', 'velocity']\n"
-      "g.ComputeVorticity = 1\n"
-      "d = dsa.WrapDataObject(servermanager.Fetch(g))\n"
-      "w = np.abs(np.asarray(d.PointData['Vorticity'])[:, 2])\n"
-      "p = np.asarray(d.Points)\n"
-      "seam = (np.abs(p[:, 1]) < 1e-12) & (p[:, 0] > 0)\n"
-      "assert seam.sum() > 0 and w[seam].max() <= 0.5 * w[~seam].max(), (w[seam].max(), w[~seam].max())\n"
-      "print('ok')\n";
+  const size_t n = size_t(r.grid.n_r) * size_t(r.grid.n_theta),
+               cells = size_t(r.grid.n_r - 1) * size_t(r.grid.n_theta);
+  std::ofstream(dir + "/check.py")
+      << "import sys\n"
+         "from paraview.simple import *\n"
+         "path, n, cells = sys.argv[1] + '/flow.xmf', int(sys.argv[2]), int(sys.argv[3])\n"
+         "import numpy as np\n"
+         "from paraview import servermanager\n"
+         "from vtk.numpy_interface import dataset_adapter as dsa\n"
+         "for make, key in ((XDMFReader, 'FileNames'), (Xdmf3ReaderS, 'FileName'), (Xdmf3ReaderT, "
+         "'FileName')):\n"
+         "    src = make(**{key: [path] if key == 'FileNames' else path})\n"
+         "    src.UpdatePipeline()\n"
+         "    info = src.GetDataInformation()\n"
+         "    assert info.GetNumberOfPoints() == n, (make, info.GetNumberOfPoints())\n"
+         "    assert info.GetNumberOfCells() == cells, (make, info.GetNumberOfCells())\n"
+         "    assert src.PointData['velocity'].GetNumberOfComponents() == 3\n"
+         "# The ring is closed by connectivity: ParaView's vorticity of the (irrotational) flow is no "
+         "larger\n"
+         "# on the seam θ = 0 than elsewhere (a seam closed only in space gave 4.09 there against 0.06).\n"
+         "g = Gradient(Input=src)\n"
+         "g.ScalarArray = ['POINTS', 'velocity']\n"
+         "g.ComputeVorticity = 1\n"
+         "d = dsa.WrapDataObject(servermanager.Fetch(g))\n"
+         "w = np.abs(np.asarray(d.PointData['Vorticity'])[:, 2])\n"
+         "p = np.asarray(d.Points)\n"
+         "seam = (np.abs(p[:, 1]) < 1e-12) & (p[:, 0] > 0)\n"
+         "assert seam.sum() > 0 and w[seam].max() <= 0.5 * w[~seam].max(), (w[seam].max(), w[~seam].max())\n"
+         "print('ok')\n";
   const int status = std::system(("pvpython '" + dir + "/check.py' '" + dir + "' " + std::to_string(n) + " " +
-                                  std::to_string(cells) + " >'" + dir + "/out.txt' 2>&1").c_str());
+                                  std::to_string(cells) + " >'" + dir + "/out.txt' 2>&1")
+                                     .c_str());
   CAPTURE(test::slurp(dir + "/out.txt"));
   REQUIRE(status == 0);
 }

@@ -29,7 +29,8 @@ Image Image::shifted(int dx, int dy) const {
   Image s = blank();
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x)
-      for (int c = 0; c < 3; ++c) s.rgb[(size_t(y) * width + x) * 3 + c] = (unsigned char)at(x - dx, y - dy, c);
+      for (int c = 0; c < 3; ++c)
+        s.rgb[(size_t(y) * width + x) * 3 + c] = (unsigned char)at(x - dx, y - dy, c);
   return s;
 }
 

@@ -22,7 +22,9 @@ struct Image {
   /// The red of the numeric markers.
   bool red(int x, int y) const { return at(x, y, 0) > 150 && at(x, y, 1) < 110 && at(x, y, 2) < 110; }
   /// The blue of the contour lines (anti-aliased: blue clearly above red and green).
-  bool blue(int x, int y) const { return at(x, y, 2) > 120 && at(x, y, 2) - at(x, y, 0) > 60 && at(x, y, 2) - at(x, y, 1) > 30; }
+  bool blue(int x, int y) const {
+    return at(x, y, 2) > 120 && at(x, y, 2) - at(x, y, 0) > 60 && at(x, y, 2) - at(x, y, 1) > 30;
+  }
   /// Some pixel within radius rad of (x, y) satisfies pred.
   template <class Pred>
   bool near(double x, double y, int rad, Pred pred) const {

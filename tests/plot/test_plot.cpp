@@ -55,7 +55,8 @@ std::vector<std::string> dir_entries(const std::string& dir) {
 }
 
 /// A marker of the predicate's colour within 4 px of each point (axis units) of the frame.
-bool marks_at(const Image& img, const PlotFrame& f, const std::vector<CurvePoint>& pts, bool (Image::*pred)(int, int) const) {
+bool marks_at(const Image& img, const PlotFrame& f, const std::vector<CurvePoint>& pts,
+              bool (Image::*pred)(int, int) const) {
   for (const auto& p : pts)
     if (!img.near(f.px(p.x), f.py(p.y), 4, [&](int x, int y) { return (img.*pred)(x, y); })) return false;
   return !pts.empty();
@@ -78,7 +79,8 @@ bool frame_drawn(const Image& img, const PlotFrame& f) {
 bool clear_edges(const Image& img, int margin = 2) {
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x)
-      if ((x < margin || y < margin || x >= img.width - margin || y >= img.height - margin) && img.inked(x, y))
+      if ((x < margin || y < margin || x >= img.width - margin || y >= img.height - margin) &&
+          img.inked(x, y))
         return false;
   return true;
 }
@@ -103,8 +105,12 @@ std::pair<double, int> contours_on(const Image& img, const PlotFrame& f, double 
       const double r = std::hypot(X, Y), th = std::atan2(Y, X);
       if (r < 1.1 * a) continue;
       const double p = psi(r, th), h = 0.5 * per_px;
-      const double gx = (psi(std::hypot(X + h, Y), std::atan2(Y, X + h)) - psi(std::hypot(X - h, Y), std::atan2(Y, X - h))) / (2 * h);
-      const double gy = (psi(std::hypot(X, Y + h), std::atan2(Y + h, X)) - psi(std::hypot(X, Y - h), std::atan2(Y - h, X))) / (2 * h);
+      const double gx = (psi(std::hypot(X + h, Y), std::atan2(Y, X + h)) -
+                         psi(std::hypot(X - h, Y), std::atan2(Y, X - h))) /
+                        (2 * h);
+      const double gy = (psi(std::hypot(X, Y + h), std::atan2(Y + h, X)) -
+                         psi(std::hypot(X, Y - h), std::atan2(Y - h, X))) /
+                        (2 * h);
       double d = 1e300;
       for (double level : f.levels) d = std::min(d, std::fabs(p - level));
       ++n;
@@ -124,7 +130,8 @@ int lowest_text_band(const Image& img, const PlotFrame& f) {
   const int below = f.legend.empty() || f.legend.y0 < f.box.y1 ? img.height : int(f.legend.y0) - 1;
   for (int y = below - 1; y > int(f.box.y1) + 2; --y) {
     bool any = false;
-    for (int x = int(f.box.x0 + (f.box.x1 - f.box.x0) / 3); x < int(f.box.x1 - (f.box.x1 - f.box.x0) / 3); ++x)
+    for (int x = int(f.box.x0 + (f.box.x1 - f.box.x0) / 3); x < int(f.box.x1 - (f.box.x1 - f.box.x0) / 3);
+         ++x)
       any = any || img.dark(x, y);
     if (any && bottom < 0) bottom = y;
     if (any) top = y;
@@ -149,8 +156,8 @@ TEST_CASE("streamlines: markers on the exact stagnation points, contours on the 
     CHECK(std::fabs(0.5 * (f.box.x0 + f.box.x1) - 450.0) <= 2.0);
     CHECK(std::fabs((f.box.x1 - f.box.x0) - (f.box.y1 - f.box.y0)) <= 2.0);
     CHECK(frame_drawn(img, f));
-    // The sign convention: CCW spin, flow towards +x: sinθ_s = α/2 on the body (30° and 150° at α = 1), or one free
-    // point on the +y axis at r_s = a(α + √(α² − 4))/2.
+    // The sign convention: CCW spin, flow towards +x: sinθ_s = α/2 on the body (30° and 150° at α = 1), or
+    // one free point on the +y axis at r_s = a(α + √(α² − 4))/2.
     std::vector<CurvePoint> expect, mirror;
     if (alpha < 2) {
       const double th = std::asin(alpha / 2);
@@ -238,7 +245,8 @@ TEST_CASE("the Cp colour range follows the data: the bar spans the field's minim
     return std::abs(p[0] - q[0]) + std::abs(p[1] - q[1]) + std::abs(p[2] - q[2]);
   };
   auto check_bar = [&](const Image& im) {
-    const auto bottom = colour(im, bx, int(f.colour_bar.y1) - 2), top = colour(im, bx, int(f.colour_bar.y0) + 2);
+    const auto bottom = colour(im, bx, int(f.colour_bar.y1) - 2),
+               top = colour(im, bx, int(f.colour_bar.y0) + 2);
     const auto under_body = colour(im, int(f.px(0.0)), int(f.py(-1.03)));
     return dist(bottom, under_body) < 60 && dist(bottom, top) > 200;
   };
@@ -340,7 +348,8 @@ TEST_CASE("text markup: subscripts render as subscripts, user text literally", "
   CHECK(plplot_text(literal_text("spin_ratio_1^2")) == "spin_ratio_1^2");
 }
 
-TEST_CASE("lift figures: the curves come from physics, the seed of a circulation sweep is constant", "[plot]") {
+TEST_CASE("lift figures: the curves come from physics, the seed of a circulation sweep is constant",
+          "[plot]") {
   Scene base;
   base.radius = 0.1;
   base.speed = 10.0;
@@ -353,9 +362,9 @@ TEST_CASE("lift figures: the curves come from physics, the seed of a circulation
   const CurveFigure fs = lift_figure(spin, nullptr);
   CHECK(fs.page.xlabel.find("α") != std::string::npos);
   REQUIRE(fs.lines.size() >= 3);
-  CHECK(fs.lines[0].points.back().y == Approx(-6 * M_PI));  // Kutta–Joukowski −2πα at α = 3
-  CHECK(fs.lines[1].points.back().y == Approx(-12.0));      // seed −4α
-  CHECK(fs.lines[2].points.front().y == Approx(-4 * M_PI)); // Prandtl's bound
+  CHECK(fs.lines[0].points.back().y == Approx(-6 * M_PI));   // Kutta–Joukowski −2πα at α = 3
+  CHECK(fs.lines[1].points.back().y == Approx(-12.0));       // seed −4α
+  CHECK(fs.lines[2].points.front().y == Approx(-4 * M_PI));  // Prandtl's bound
   CHECK(fs.page.title.find("spin\\_sweep") != std::string::npos);
 
   LiftSweep circ = spin;

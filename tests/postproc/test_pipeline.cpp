@@ -32,7 +32,8 @@ TEST_CASE("pipeline: run, sweep, bench and the tolerance's lift agree on one gri
     }
 }
 
-TEST_CASE("pipeline: discretize builds the requested grid and method, resolving auto to FFT", "[postproc][pipeline]") {
+TEST_CASE("pipeline: discretize builds the requested grid and method, resolving auto to FFT",
+          "[postproc][pipeline]") {
   Case c = test::make_case(1.0, 32);
   c.solver.method = Method::automatic;
   const Discretization d = discretize(c);
@@ -44,8 +45,10 @@ TEST_CASE("pipeline: discretize builds the requested grid and method, resolving 
   REQUIRE(discretize(c).solver->method() == Method::cholmod);
 }
 
-TEST_CASE("pipeline: a run above an explicit memory limit is refused before it allocates", "[postproc][pipeline][memory]") {
-  Case c = test::make_case(1.0, 512, Spacing::geometric, FarField::exact, StencilKind::five_point, Method::cholmod);
+TEST_CASE("pipeline: a run above an explicit memory limit is refused before it allocates",
+          "[postproc][pipeline][memory]") {
+  Case c = test::make_case(1.0, 512, Spacing::geometric, FarField::exact, StencilKind::five_point,
+                           Method::cholmod);
   REQUIRE_THROWS_WITH(run_case(c, 1, 1 << 20), Catch::Contains("cholmod") && Catch::Contains("needs about") &&
                                                    Catch::Contains("--max-memory 1.0 MiB"));
   c.solver.method = Method::fft;

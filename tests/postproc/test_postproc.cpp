@@ -1,10 +1,10 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "physics/exact.hpp"
 #include "mesh/fd_weights.hpp"
-#include "postproc/forces.hpp"
+#include "physics/exact.hpp"
 #include "postproc/finite.hpp"
+#include "postproc/forces.hpp"
 #include "support.hpp"
 
 using namespace magnus;
@@ -25,7 +25,8 @@ TEST_CASE("finite-difference weights differentiate polynomials of their order ex
   REQUIRE(c[0] == Approx(5.0));  // (f_{j+1} − f_{j−1})/(2h)
 }
 
-TEST_CASE("forces from the exact surface velocity reproduce Kutta–Joukowski (spectral trapezoid)", "[postproc]") {
+TEST_CASE("forces from the exact surface velocity reproduce Kutta–Joukowski (spectral trapezoid)",
+          "[postproc]") {
   const double alpha = GENERATE(-1.5, 0.0, 0.5, 1.0, 3.0);
   Case c = make_case(alpha, 32);
   const ExactFlow ex = exact_flow(c.scene);
@@ -39,8 +40,10 @@ TEST_CASE("forces from the exact surface velocity reproduce Kutta–Joukowski (s
   REQUIRE(*f.cl == Approx(-2 * M_PI * alpha).margin(1e-13));
   REQUIRE(*f.cl_seed_estimate == Approx(-4 * alpha).margin(1e-15));
   REQUIRE(f.circulation_measured == Approx(c.scene.Gamma()).margin(1e-14));
-  REQUIRE(f.delta_p_top_bottom == Approx(4 * c.scene.density * c.scene.speed * c.scene.radius * c.scene.spin).margin(1e-9));
-  REQUIRE(f.delta_p_seed_estimate == Approx(2 * c.scene.density * c.scene.speed * c.scene.radius * c.scene.spin).margin(1e-12));
+  REQUIRE(f.delta_p_top_bottom ==
+          Approx(4 * c.scene.density * c.scene.speed * c.scene.radius * c.scene.spin).margin(1e-9));
+  REQUIRE(f.delta_p_seed_estimate ==
+          Approx(2 * c.scene.density * c.scene.speed * c.scene.radius * c.scene.spin).margin(1e-12));
 }
 
 TEST_CASE("computed flow: drag zero, C_L = −2πα, circulation Γ, lift sign F = S ω × v_body", "[postproc]") {
@@ -54,7 +57,8 @@ TEST_CASE("computed flow: drag zero, C_L = −2πα, circulation Γ, lift sign F
   // ω ẑ × v_body with v_body = −U x̂ is −ωU ŷ: lift points along −y for CCW spin.
   const double magnus_direction_y = -r.c.scene.spin * r.c.scene.speed;
   REQUIRE(f.lift * magnus_direction_y > 0.0);
-  REQUIRE(*f.magnus_S == Approx(2 * M_PI * r.c.scene.density * r.c.scene.radius * r.c.scene.radius).epsilon(5e-4));
+  REQUIRE(*f.magnus_S ==
+          Approx(2 * M_PI * r.c.scene.density * r.c.scene.radius * r.c.scene.radius).epsilon(5e-4));
   // The seed estimate is low by π/2 in lift and by 2 in the top−bottom pressure difference.
   REQUIRE(*f.cl_kutta_joukowski / *f.cl_seed_estimate == Approx(M_PI / 2).epsilon(1e-14));
   REQUIRE(f.delta_p_top_bottom / f.delta_p_seed_estimate == Approx(2.0).epsilon(1e-3));
@@ -65,7 +69,8 @@ TEST_CASE("observed order 2 for ψ and C_L with the exact far field", "[postproc
   const auto method = GENERATE(Method::fft, Method::cholmod);
   std::vector<double> e_psi, e_cl;
   for (int n : {64, 128, 256}) {
-    const FlowResult r = run_case(make_case(1.0, n, spacing, FarField::exact, StencilKind::five_point, method));
+    const FlowResult r =
+        run_case(make_case(1.0, n, spacing, FarField::exact, StencilKind::five_point, method));
     e_psi.push_back(r.errors.psi_max_rel);
     e_cl.push_back(*r.errors.cl_rel);
   }
@@ -81,7 +86,8 @@ TEST_CASE("observed order 6 for ψ and C_L with the 9-point stencil on square ce
   const auto method = GENERATE(Method::fft, Method::cholmod);
   std::vector<double> e_psi, e_cl;
   for (int n : {32, 64, 128}) {
-    const FlowResult r = run_case(make_case(1.0, n, Spacing::geometric, FarField::exact, StencilKind::nine_point, method));
+    const FlowResult r =
+        run_case(make_case(1.0, n, Spacing::geometric, FarField::exact, StencilKind::nine_point, method));
     e_psi.push_back(r.errors.psi_max_rel);
     e_cl.push_back(*r.errors.cl_rel);
   }
@@ -91,7 +97,8 @@ TEST_CASE("observed order 6 for ψ and C_L with the 9-point stencil on square ce
     REQUIRE(observed_order(e_cl[k], e_cl[k + 1]) == Approx(6.0).margin(0.15));
   }
   // The figure the speed issue asks for: C_L to 1e-10 at n_θ = 256.
-  const FlowResult r = run_case(make_case(1.0, 256, Spacing::geometric, FarField::exact, StencilKind::nine_point));
+  const FlowResult r =
+      run_case(make_case(1.0, 256, Spacing::geometric, FarField::exact, StencilKind::nine_point));
   REQUIRE(*r.errors.cl_rel <= 1e-10);
 }
 
@@ -99,8 +106,8 @@ TEST_CASE("freestream far field: the error floor is (a/R)² to within a factor 2
   const double R = GENERATE(10.0, 20.0, 40.0);
   const auto spacing = GENERATE(Spacing::geometric, Spacing::uniform);
   const int n = spacing == Spacing::uniform ? 512 : 512;
-  const FlowResult r = run_case(make_case(1.0, n, spacing, FarField::freestream, StencilKind::five_point,
-                                          Method::fft, R));
+  const FlowResult r =
+      run_case(make_case(1.0, n, spacing, FarField::freestream, StencilKind::five_point, Method::fft, R));
   const double floor = 1.0 / (R * R);
   CAPTURE(r.errors.cl_rel, r.errors.psi_max_rel, floor);
   REQUIRE(*r.errors.cl_rel > 0.5 * floor);
@@ -108,8 +115,8 @@ TEST_CASE("freestream far field: the error floor is (a/R)² to within a factor 2
   REQUIRE(r.errors.psi_max_rel > 0.5 * floor);
   REQUIRE(r.errors.psi_max_rel < 2.0 * floor);
   // The exact far field removes the floor on the same grid.
-  const FlowResult e = run_case(make_case(1.0, n, spacing, FarField::exact, StencilKind::five_point,
-                                          Method::fft, R));
+  const FlowResult e =
+      run_case(make_case(1.0, n, spacing, FarField::exact, StencilKind::five_point, Method::fft, R));
   REQUIRE(*e.errors.cl_rel < 0.1 * floor);
 }
 
@@ -152,7 +159,8 @@ TEST_CASE("pure rotation (U = 0): zero force, undefined coefficients, no divisio
   REQUIRE(std::fabs(r.forces.drag) < 1e-12);
   // The same from the combined ψ (mean-subtracted, not the U-proportional split): round-off only,
   // relative to the surface dynamic pressure ½ρ(Γ/2πa)² over the diameter.
-  const Forces direct = compute_forces(c.scene, compute_surface(r.grid, c.scene, r.fields.psi, derivative_order(c.solver.stencil)));
+  const Forces direct = compute_forces(
+      c.scene, compute_surface(r.grid, c.scene, r.fields.psi, derivative_order(c.solver.stencil)));
   const double u = c.scene.Gamma() / (2 * M_PI * c.scene.radius);
   REQUIRE(std::fabs(direct.lift) < 1e-12 * c.scene.density * u * u * c.scene.radius);
   REQUIRE(std::fabs(direct.drag) < 1e-12 * c.scene.density * u * u * c.scene.radius);
@@ -161,7 +169,8 @@ TEST_CASE("pure rotation (U = 0): zero force, undefined coefficients, no divisio
   REQUIRE(r.stagnation.empty());
 }
 
-TEST_CASE("the last line of defence names the first figure or field that is not finite", "[postproc][finite]") {
+TEST_CASE("the last line of defence names the first figure or field that is not finite",
+          "[postproc][finite]") {
   FlowResult r = run_case(make_case(1.0, 16));
   REQUIRE(first_non_finite(r) == "");
   REQUIRE_NOTHROW(check_finite(r));
@@ -170,8 +179,9 @@ TEST_CASE("the last line of defence names the first figure or field that is not 
   CHECK(first_non_finite(f) == "field psi at (i, j) = (1, 2)");
   f.forces.cl = NAN;
   CHECK(first_non_finite(f) == "C_L");
-  CHECK_THROWS_WITH(check_finite(f), "C_L is not finite (NaN or infinite: the inputs are beyond double precision); "
-                                     "nothing was written");
+  CHECK_THROWS_WITH(check_finite(f),
+                    "C_L is not finite (NaN or infinite: the inputs are beyond double precision); "
+                    "nothing was written");
   FlowResult s = r;
   s.surface.pressure[3] = -INFINITY;
   CHECK(first_non_finite(s) == "surface pressure at j = 3");

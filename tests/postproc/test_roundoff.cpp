@@ -1,6 +1,7 @@
 // Round-off where it bites: at large α (or U → 0) the lift is a small antisymmetric part of a large
 // pressure. The naive form −Σ p sinθ a Δθ, p = p∞ + ½ρ(U² − u_θ²), on a single solve loses ε·(p∞/(ρU²α) + α)
-// relative; the forces magnus reports (the split ū + u' from the superposition basis) lose nothing α-dependent.
+// relative; the forces magnus reports (the split ū + u' from the superposition basis) lose nothing
+// α-dependent.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
@@ -21,7 +22,8 @@ double naive_lift(const Case& c) {
   const std::vector<double> u = surface_u_theta(g, psi, derivative_order(c.solver.stencil));
   double fy = 0.0;
   for (int j = 0; j < g.n_theta; ++j) {
-    const double p = c.scene.pressure_inf + 0.5 * c.scene.density * (c.scene.speed * c.scene.speed - u[j] * u[j]);
+    const double p =
+        c.scene.pressure_inf + 0.5 * c.scene.density * (c.scene.speed * c.scene.speed - u[j] * u[j]);
     fy -= p * std::sin(g.theta[j]) * c.scene.radius * g.d_theta;
   }
   return fy;
@@ -29,7 +31,8 @@ double naive_lift(const Case& c) {
 
 }  // namespace
 
-TEST_CASE("round-off: the reported lift keeps its accuracy at large α and tiny U; the naive form does not", "[postproc][roundoff]") {
+TEST_CASE("round-off: the reported lift keeps its accuracy at large α and tiny U; the naive form does not",
+          "[postproc][roundoff]") {
   struct Hard {
     const char* label;
     double alpha, speed, p_inf;

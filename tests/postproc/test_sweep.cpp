@@ -1,6 +1,6 @@
 // Sweeps by superposition: one run per point to 1e-12, two solves per sweep, the refusals.
-#include <catch2/catch.hpp>
 #include <hdf5.h>
+#include <catch2/catch.hpp>
 
 #include <cmath>
 #include <cstdlib>
@@ -32,7 +32,8 @@ TEST_CASE("a sweep equals one run per point to 1e-12, with two linear solves in 
   std::vector<Setup> setups = {
       {"fft, 5-point, exact far field", test::make_case(1.0, 64)},
       {"cholmod, 9-point, freestream far field",
-       test::make_case(1.0, 64, Spacing::geometric, FarField::freestream, StencilKind::nine_point, Method::cholmod)},
+       test::make_case(1.0, 64, Spacing::geometric, FarField::freestream, StencilKind::nine_point,
+                       Method::cholmod)},
       {"uniform spacing", test::make_case(1.0, 48, Spacing::uniform, FarField::exact, StencilKind::five_point,
                                           Method::cholmod, 8.0)},
   };
@@ -49,7 +50,8 @@ TEST_CASE("a sweep equals one run per point to 1e-12, with two linear solves in 
         const SweepPoint& p = sw.points[k];
         CAPTURE(alphas[k]);
         REQUIRE(p.scene.spin_ratio() == Approx(alphas[k]).epsilon(1e-15));
-        const double q = 0.5 * c.scene.density * c.scene.speed * c.scene.speed;  // dynamic pressure, the scale of ΔP
+        const double q =
+            0.5 * c.scene.density * c.scene.speed * c.scene.speed;  // dynamic pressure, the scale of ΔP
         CHECK(rel_diff(*p.forces.cl, *r.forces.cl, 1.0) <= 1e-12);
         CHECK(rel_diff(p.forces.lift, r.forces.lift, q * 2 * c.scene.radius) <= 1e-12);
         CHECK(rel_diff(p.forces.delta_p_top_bottom, r.forces.delta_p_top_bottom, q) <= 1e-12);
@@ -79,12 +81,14 @@ TEST_CASE("a sweep equals one run per point to 1e-12, with two linear solves in 
       CHECK(rel_diff(*sw.points[k].forces.cl, *r.forces.cl, 1.0) <= 1e-12);
       CHECK(rel_diff(sw.points[k].forces.delta_p_top_bottom, r.forces.delta_p_top_bottom, 61.25) <= 1e-12);
       // The α column of a circulation sweep is the equivalent spin ratio Γ/(2πaU).
-      CHECK(sweep_row(sw, sw.points[k]).alpha == Approx(gammas[k] / (2 * M_PI * c.scene.radius * c.scene.speed)));
+      CHECK(sweep_row(sw, sw.points[k]).alpha ==
+            Approx(gammas[k] / (2 * M_PI * c.scene.radius * c.scene.speed)));
     }
   }
 }
 
-TEST_CASE("two solves however many points; U = 0 and the wrong circulation model are refused", "[app][sweep]") {
+TEST_CASE("two solves however many points; U = 0 and the wrong circulation model are refused",
+          "[app][sweep]") {
   const Case c = test::make_case(1.0, 32);
   std::vector<double> many;
   for (int k = 0; k <= 2000; ++k) many.push_back(-5.0 + 0.005 * k);
@@ -105,4 +109,3 @@ TEST_CASE("two solves however many points; U = 0 and the wrong circulation model
   given.scene.speed = 0.0;
   REQUIRE_THROWS_AS(sweep_circulation(given, {1.0}), std::invalid_argument);
 }
-

@@ -1,7 +1,7 @@
 #include <catch2/catch.hpp>
 
-#include "postproc/tolerance.hpp"
 #include "io/case_file.hpp"
+#include "postproc/tolerance.hpp"
 #include "support.hpp"
 
 using namespace magnus;
@@ -11,7 +11,8 @@ namespace {
 const std::string scene = "[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = 10.0\n";
 }  // namespace
 
-TEST_CASE("grid.tolerance: the chosen grid meets the requested lift error, and the estimate is honest", "[app][tolerance]") {
+TEST_CASE("grid.tolerance: the chosen grid meets the requested lift error, and the estimate is honest",
+          "[app][tolerance]") {
   const double tol = GENERATE(1e-4, 1e-6, 1e-8, 1e-10);
   const double alpha = GENERATE(0.5, 3.0);
   Case c = test::make_case(alpha, 256);
@@ -35,7 +36,8 @@ TEST_CASE("grid.tolerance: the chosen grid meets the requested lift error, and t
   if (half.grid.n_theta < r.grid.n_theta) REQUIRE(*run_case(half).errors.cl_rel > tol);
 }
 
-TEST_CASE("grid.tolerance: impossible or conflicting requests fail with one line naming the key", "[app][tolerance]") {
+TEST_CASE("grid.tolerance: impossible or conflicting requests fail with one line naming the key",
+          "[app][tolerance]") {
   using Catch::Contains;
   Case c = test::make_case(1.0, 64);
   c.grid.tolerance = 1e-6;
@@ -49,8 +51,9 @@ TEST_CASE("grid.tolerance: impossible or conflicting requests fail with one line
   REQUIRE_THROWS_WITH(choose_grid(c), Contains("grid.tolerance") && Contains("U = 0"));
   REQUIRE_THROWS_WITH(parse_case(scene + "[grid]\ntolerance = 1e-8\nn_theta = 64\n", "t.toml"),
                       Contains("grid.tolerance") && Contains("grid.n_theta"));
-  REQUIRE_THROWS_WITH(parse_case(scene + "[grid]\ntolerance = 1e-8\n[solver]\nstencil = \"5-point\"\n", "t.toml"),
-                      Contains("solver.stencil"));
+  REQUIRE_THROWS_WITH(
+      parse_case(scene + "[grid]\ntolerance = 1e-8\n[solver]\nstencil = \"5-point\"\n", "t.toml"),
+      Contains("solver.stencil"));
   // The resolved case of a tolerance run can be run again: the chosen grid is not written into it.
   Case t = test::make_case(1.0, 64);
   t.grid.tolerance = 1e-8;
@@ -61,7 +64,8 @@ TEST_CASE("grid.tolerance: impossible or conflicting requests fail with one line
   REQUIRE(d.grid.tolerance == 1e-8);
 }
 
-TEST_CASE("grid.tolerance chooses the spacing too: geometric unless grid.spacing is stated", "[app][tolerance]") {
+TEST_CASE("grid.tolerance chooses the spacing too: geometric unless grid.spacing is stated",
+          "[app][tolerance]") {
   Case c = test::make_case(1.0, 64, Spacing::uniform);
   c.grid.tolerance = 1e-6;
   const GridChoice g = choose_grid(c);  // uniform by default only, not stated: the search takes geometric
@@ -70,10 +74,11 @@ TEST_CASE("grid.tolerance chooses the spacing too: geometric unless grid.spacing
   CHECK(run_case(c).grid.spacing == Spacing::geometric);
   // Stated uniform is kept, and a grid beyond the limit is refused with its size and the alternative.
   c.grid.spacing_given = true;
-  REQUIRE_THROWS_WITH(choose_grid(c), "grid.tolerance = 1e-06 with grid.spacing = \"uniform\" needs about n_θ × n_r = "
-                                      "3136 × 9484 (2.97e+07 nodes, 226.9 MiB per field), more than the limit of "
-                                      "4194304 nodes; grid.spacing = \"geometric\" (9-point stencil, order 6) meets it "
-                                      "with 32 × 17");
+  REQUIRE_THROWS_WITH(choose_grid(c),
+                      "grid.tolerance = 1e-06 with grid.spacing = \"uniform\" needs about n_θ × n_r = "
+                      "3136 × 9484 (2.97e+07 nodes, 226.9 MiB per field), more than the limit of "
+                      "4194304 nodes; grid.spacing = \"geometric\" (9-point stencil, order 6) meets it "
+                      "with 32 × 17");
   c.grid.tolerance = 1e-3;  // a tolerance a uniform grid meets within the limit: the stated spacing is kept
   CHECK(choose_grid(c).spacing == Spacing::uniform);
 }
@@ -81,7 +86,8 @@ TEST_CASE("grid.tolerance chooses the spacing too: geometric unless grid.spacing
 TEST_CASE("grid.tolerance: every grid the search tries passes the memory guard", "[app][tolerance]") {
   Case c = test::make_case(1.0, 64);
   c.grid.tolerance = 1e-8;
-  REQUIRE_THROWS_WITH(choose_grid(c, 1, 4096), Catch::Contains("needs about") && Catch::Contains("--max-memory 4 KiB"));
+  REQUIRE_THROWS_WITH(choose_grid(c, 1, 4096),
+                      Catch::Contains("needs about") && Catch::Contains("--max-memory 4 KiB"));
   REQUIRE_THROWS_WITH(run_case(c, 1, 4096), Catch::Contains("--max-memory 4 KiB"));
   REQUIRE(choose_grid(c, 1, size_t(1) << 30).n_theta > 0);
 }

@@ -20,8 +20,10 @@ TEST_CASE("sizes parse and print", "[solver][memory]") {
   REQUIRE(available_bytes() > (64ull << 20));
 }
 
-TEST_CASE("memory guard: a grid above an explicit limit is refused before anything is built", "[solver][memory]") {
-  Case c = test::make_case(1.0, 512, Spacing::geometric, FarField::exact, StencilKind::five_point, Method::cholmod);
+TEST_CASE("memory guard: a grid above an explicit limit is refused before anything is built",
+          "[solver][memory]") {
+  Case c = test::make_case(1.0, 512, Spacing::geometric, FarField::exact, StencilKind::five_point,
+                           Method::cholmod);
   const size_t MiB = 1 << 20;
   REQUIRE_THROWS_WITH(check_grid_memory(c.grid, c.solver.stencil, Method::cholmod, 0, MiB),
                       Catch::Contains("cholmod") && Catch::Contains("needs about") &&
@@ -29,8 +31,8 @@ TEST_CASE("memory guard: a grid above an explicit limit is refused before anythi
   REQUIRE_THROWS_WITH(check_grid_memory(c.grid, c.solver.stencil, Method::fft, 0, MiB),
                       Catch::Contains("fft") && Catch::Contains("needs about"));
   // The same grid passes a limit above its estimate: the refusal is the limit, not the grid.
-  const size_t fft_estimate = solver_bytes(double(grid_shape(c.grid).n_r), 512, c.grid.far_field,
-                                           c.solver.stencil, Method::fft);
+  const size_t fft_estimate =
+      solver_bytes(double(grid_shape(c.grid).n_r), 512, c.grid.far_field, c.solver.stencil, Method::fft);
   REQUIRE_NOTHROW(check_grid_memory(c.grid, c.solver.stencil, Method::fft, 0, 2 * fft_estimate + (64 * MiB)));
   // CHOLMOD's own check after the symbolic analysis: the exact fill, refused before the numeric factor.
   const PolarGrid g = make_grid(c.grid, c.scene.radius);

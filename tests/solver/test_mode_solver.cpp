@@ -15,7 +15,6 @@ using magnus::test::observed_order;
 
 namespace {
 
-
 std::vector<double> random_vector(size_t n, std::mt19937& rng, double lo = -1.0, double hi = 1.0) {
   std::uniform_real_distribution<double> d(lo, hi);
   std::vector<double> v(n);

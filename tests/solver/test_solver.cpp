@@ -12,10 +12,7 @@ using namespace magnus;
 using magnus::test::max_abs;
 using magnus::test::max_abs_diff;
 
-namespace {
-
-
-}  // namespace
+namespace {}  // namespace
 
 TEST_CASE("the assembled matrix is symmetric and positive definite", "[solver]") {
   const auto spacing = GENERATE(Spacing::geometric, Spacing::uniform);
@@ -97,8 +94,8 @@ TEST_CASE("exact far field: the decaying roots are those of the exterior recurre
   const double aspect = GENERATE(0.1, 1.0, 2.0, 10.0);  // Δξ/Δθ
   const int n_theta = 32;
   const int cells = std::max(2, int(std::lround(std::log(10.0) / (aspect * 2 * M_PI / n_theta))));
-  const PolarGrid g = make_grid(1.0, std::exp(cells * aspect * 2 * M_PI / n_theta), cells + 1, n_theta,
-                                Spacing::geometric);
+  const PolarGrid g =
+      make_grid(1.0, std::exp(cells * aspect * 2 * M_PI / n_theta), cells + 1, n_theta, Spacing::geometric);
   const DiscreteOperator op = make_operator(g, stencil, FarField::exact);
   const int N = g.n_r - 1;
   REQUIRE(op.mu[0] == 1.0);

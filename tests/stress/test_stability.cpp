@@ -5,8 +5,8 @@
 //   derivative needs (7) falls back to the 5-point bound.
 // capped at 0.5, and nothing non-finite anywhere in a result. "[stability]" is the quick default subset;
 // "[.stress]" the full suite (ctest -L stress), which writes stability.csv and prints its worst rows.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -36,7 +36,8 @@ double predicted_bound(const FlowResult& r) {
   }
   h = std::max(h, dxi_max);
   // A grid with fewer rings than the wall derivative needs (7 for the 9-point) gets the 5-point bound.
-  const bool nine = r.c.solver.stencil == StencilKind::nine_point && g.n_r > derivative_order(r.c.solver.stencil);
+  const bool nine =
+      r.c.solver.stencil == StencilKind::nine_point && g.n_r > derivative_order(r.c.solver.stencil);
   const bool square = std::fabs(dxi_max / g.d_theta - 1) < 1e-9 && std::fabs(dxi_min / g.d_theta - 1) < 1e-9;
   const double p = nine ? (square ? 6 : 4) : 2, C = nine ? 0.01 : 0.25;
   const double R = g.outer_radius() / g.a, eps = std::numeric_limits<double>::epsilon();
@@ -52,7 +53,8 @@ void require_finite(const std::vector<double>& v, const char* what) {
 
 /// Run one hard case; every field finite, the lift error within the bound.
 void check(const std::string& label, Case c) {
-  INFO(label << ", " << to_string(c.solver.method) << ", " << to_string(c.solver.stencil) << ", n_theta = " << c.grid.n_theta);
+  INFO(label << ", " << to_string(c.solver.method) << ", " << to_string(c.solver.stencil)
+             << ", n_theta = " << c.grid.n_theta);
   c.output.fields.reset();  // every field: all must be finite
   const FlowResult r = run_case(c);
   for (const auto& name : field_names()) require_finite(r.fields.get(name), name.c_str());
@@ -65,11 +67,12 @@ void check(const std::string& label, Case c) {
   const double G = c.scene.Gamma();
   if (c.scene.speed > 0.0) {
     const double bound = predicted_bound(r);
-    CAPTURE(label, to_string(c.solver.method), to_string(c.solver.stencil), r.grid.n_theta, r.grid.n_r, r.errors.cl_rel, bound);
+    CAPTURE(label, to_string(c.solver.method), to_string(c.solver.stencil), r.grid.n_theta, r.grid.n_r,
+            r.errors.cl_rel, bound);
     REQUIRE(*r.errors.cl_rel <= bound);
     REQUIRE(std::isfinite(*r.forces.cl));
-    table().push_back({label, to_string(c.solver.method), to_string(c.solver.stencil), r.grid.n_theta, r.grid.n_r,
-                       std::max(r.grid.d_theta, r.grid.d_xi(0)), *r.errors.cl_rel, bound});
+    table().push_back({label, to_string(c.solver.method), to_string(c.solver.stencil), r.grid.n_theta,
+                       r.grid.n_r, std::max(r.grid.d_theta, r.grid.d_xi(0)), *r.errors.cl_rel, bound});
   } else {
     // Pure rotation: no force, to round-off of the surface dynamic pressure ½ρ(Γ/2πa)²·a.
     const double u = G / (2 * M_PI * c.scene.radius);
@@ -127,21 +130,23 @@ void write_table() {
   std::ofstream csv("stability.csv");
   csv << "label,method,stencil,n_theta,n_r,h,cl_rel,bound,ratio\n";
   for (const auto& r : rows)
-    csv << r.label << ',' << r.method << ',' << r.stencil << ',' << r.n_theta << ',' << r.n_r << ',' << r.h << ','
-        << r.cl_rel << ',' << r.bound << ',' << r.cl_rel / r.bound << '\n';
-  std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.cl_rel / a.bound > b.cl_rel / b.bound; });
-  std::printf("\nworst cases (error/bound):\n%-34s %-8s %-8s %6s %6s %10s %10s %7s\n", "case", "method", "stencil", "n_θ",
-              "n_r", "C_L rel", "bound", "ratio");
+    csv << r.label << ',' << r.method << ',' << r.stencil << ',' << r.n_theta << ',' << r.n_r << ',' << r.h
+        << ',' << r.cl_rel << ',' << r.bound << ',' << r.cl_rel / r.bound << '\n';
+  std::sort(rows.begin(), rows.end(),
+            [](const Row& a, const Row& b) { return a.cl_rel / a.bound > b.cl_rel / b.bound; });
+  std::printf("\nworst cases (error/bound):\n%-34s %-8s %-8s %6s %6s %10s %10s %7s\n", "case", "method",
+              "stencil", "n_θ", "n_r", "C_L rel", "bound", "ratio");
   for (size_t k = 0; k < std::min<size_t>(12, rows.size()); ++k) {
     const Row& r = rows[k];
-    std::printf("%-34s %-8s %-8s %6d %6d %10.2e %10.2e %7.3f\n", r.label.c_str(), r.method.c_str(), r.stencil.c_str(),
-                r.n_theta, r.n_r, r.cl_rel, r.bound, r.cl_rel / r.bound);
+    std::printf("%-34s %-8s %-8s %6d %6d %10.2e %10.2e %7.3f\n", r.label.c_str(), r.method.c_str(),
+                r.stencil.c_str(), r.n_theta, r.n_r, r.cl_rel, r.bound, r.cl_rel / r.bound);
   }
 }
 
 }  // namespace
 
-TEST_CASE("stability, quick subset: large α, U → 0, tiny and huge bodies, far boundaries, odd cells", "[stability]") {
+TEST_CASE("stability, quick subset: large α, U → 0, tiny and huge bodies, far boundaries, odd cells",
+          "[stability]") {
   const auto m = GENERATE(Method::fft, Method::cholmod);
   const auto s = GENERATE(StencilKind::five_point, StencilKind::nine_point);
   alpha_sweep(m, s, {0.0, -2.0, 1e4});
