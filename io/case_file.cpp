@@ -1,5 +1,7 @@
 #include "io/case_file.hpp"
 
+#include "io/case_keys.hpp"
+
 #include <fmt/core.h>
 
 #include <toml++/toml.h>
@@ -21,36 +23,6 @@ using toml_safe::parse_toml;
 using toml_safe::unshield;
 
 namespace {
-
-const std::map<std::string, std::vector<std::string>>& schema() {
-  static const std::map<std::string, std::vector<std::string>> s = {
-      {"", {"title"}},
-      {"cylinder", {"radius", "spin", "spin_ratio", "rpm"}},
-      {"flow", {"speed", "density", "pressure"}},
-      {"circulation", {"model", "value"}},
-      {"domain", {"outer_radius", "far_field"}},
-      {"grid", {"n_theta", "n_r", "spacing", "tolerance"}},
-      {"solver", {"method", "stencil"}},
-      {"output", {"file", "fields", "compression"}},
-  };
-  return s;
-}
-
-size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<size_t> prev(b.size() + 1), cur(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    cur[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j)
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
-    std::swap(prev, cur);
-  }
-  return prev[b.size()];
-}
-
-std::string key_name(const std::string& section, const std::string& key) {
-  return section.empty() ? key : section + "." + key;
-}
 
 /// Reads typed values from the parsed table, naming origin and key in every error.
 class Reader {
@@ -154,7 +126,7 @@ class Reader {
 };
 
 void reject_unknown_keys(const toml::table& t, const std::string& origin) {
-  const auto& s = schema();
+  const auto& s = case_key_table();
   for (auto&& [k, v] : t) {
     const std::string key(k.str());
     if (v.is_table()) {
@@ -222,69 +194,6 @@ void apply_override(toml::table& t, const std::string& spec) {
 }
 
 }  // namespace
-
-const std::vector<std::string>& case_keys() {
-  static const std::vector<std::string> keys = [] {
-    std::vector<std::string> k;
-    for (const auto& [sec, names] : schema())
-      for (const auto& n : names) k.push_back(key_name(sec, n));
-    return k;
-  }();
-  return keys;
-}
-
-std::string nearest_key(const std::string& key) {
-  // Synonyms of a valid key: the one suggestion that is not a near spelling.
-  static const std::map<std::string, std::string> aliases = {{"flow.velocity", "flow.speed"},
-                                                             {"flow.u", "flow.speed"},
-                                                             {"flow.rho", "flow.density"},
-                                                             {"cylinder.omega", "cylinder.spin"},
-                                                             {"cylinder.alpha", "cylinder.spin_ratio"},
-                                                             {"cylinder.a", "cylinder.radius"}};
-  if (const auto it = aliases.find(key); it != aliases.end()) return it->second;
-  // Keys of the design (docs/design.md) that mean something else and this version does not read: never
-  // "corrected".
-  for (const char* other :
-       {"cylinder.span", "flow.direction", "flow.viscosity", "flow.reynolds", "flow.course", "model.flow"})
-    if (key == other) return "";
-  // The edit distance is at least the difference in length, and no valid key is longer than 20 characters:
-  // a key this long is never near one (and a megabyte key would cost seconds).
-  if (key.size() > 64) return "";
-  // Near spellings only: within 2 edits and a third of the length, compared in the key's own section when it
-  // names a valid one ("flow.velocity" is 4 edits from "flow.density": no suggestion).
-  const size_t dot = key.find('.');
-  const std::string section = dot == std::string::npos ? "" : key.substr(0, dot);
-  const bool known_section = schema().count(section) > 0 && !section.empty();
-  std::string best;
-  size_t best_d = std::string::npos;
-  for (const auto& k : case_keys()) {
-    const size_t kdot = k.find('.');
-    const std::string ksec = kdot == std::string::npos ? "" : k.substr(0, kdot), tail = k.substr(kdot + 1);
-    size_t d, len;
-    if (known_section) {
-      if (ksec != section) continue;
-      d = edit_distance(key.substr(dot + 1), tail), len = key.size() - dot - 1;
-    } else if (dot == std::string::npos) {
-      d = edit_distance(key, tail), len = key.size();  // a bare key: its section was left out
-    } else {
-      d = edit_distance(key, k), len = key.size();
-    }
-    if (d <= 2 && 3 * d <= len && d < best_d) best_d = d, best = k;
-  }
-  return best;
-}
-
-std::string unknown_key_hint(const std::string& key) {
-  const std::string near = nearest_key(key);
-  if (!near.empty()) return fmt::format(" (did you mean {}?)", near);
-  const size_t dot = key.find('.');
-  if (dot == std::string::npos) return "";
-  const auto sec = schema().find(key.substr(0, dot));
-  if (sec == schema().end() || sec->first.empty()) return "";
-  std::string list;
-  for (const auto& k : sec->second) list += (list.empty() ? "" : ", ") + k;
-  return fmt::format(" (keys of [{}]: {})", sec->first, list);
-}
 
 Case parse_case(const std::string& toml_text, const std::string& origin,
                 const std::vector<std::string>& overrides) {

@@ -1,0 +1,19 @@
+#pragma once
+// The keys a case file may hold, and the suggestions for a misspelt one (near spellings and synonyms
+// only, never a key of another meaning). Used by io/case_file.
+#include <map>
+#include <string>
+#include <vector>
+
+namespace magnus {
+
+/// Every valid key, by section ("" for the top level), in file order.
+const std::map<std::string, std::vector<std::string>>& case_key_table();
+
+/// "section.key" ("key" at the top level).
+std::string key_name(const std::string& section, const std::string& key);
+
+/// Levenshtein distance between a and b (insertions, deletions, substitutions).
+size_t edit_distance(const std::string& a, const std::string& b);
+
+}  // namespace magnus
