@@ -22,7 +22,11 @@ size_t parse_bytes(const std::string& text);
 /// "1.23 GiB".
 std::string format_bytes(size_t bytes);
 
-/// Throws std::runtime_error with the estimate if `needed` exceeds `limit` (0: available_bytes()).
+/// Estimates below this are not checked against available_bytes() (an explicit limit still applies), bytes.
+constexpr size_t kUncheckedBytes = size_t(16) << 20;
+
+/// Throws std::runtime_error with the estimate if `needed` exceeds `limit` (0: available_bytes(), read
+/// only when needed ≥ kUncheckedBytes).
 void check_memory(size_t needed, size_t limit, const std::string& what);
 
 /// The memory guard for a grid request, before anything is built, from the grid's shape alone: the solver's
