@@ -66,8 +66,16 @@ std::string base_of(const std::string& path) {
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
+bool is_stdout(const std::string& path) {
+  return path == "-" || path == "/dev/stdout" || path == "/dev/fd/1" || path == "/proc/self/fd/1";
+}
+
 std::string output_target(const std::string& path) {
   if (path.empty()) fail(path, "empty file name");
+  // What the path finally names, links followed (a pipe or socket behind /proc/self/fd/N has no path of
+  // its own to follow): anything but a regular file is refused.
+  struct stat final_st;
+  if (::stat(path.c_str(), &final_st) == 0 && *special_kind(final_st)) fail(path, special_kind(final_st));
   std::string target = path;
   for (int hops = 0;; ++hops) {
     struct stat st;
@@ -86,7 +94,7 @@ std::string output_target(const std::string& path) {
 }
 
 void check_writable(const std::string& path) {
-  if (path.empty() || path == "-") return;
+  if (path.empty() || is_stdout(path)) return;
   const std::string target = output_target(path);
   if (base_of(target).empty()) fail(path, "the name is a directory");
   const std::string dir = dir_of(target);
@@ -106,7 +114,7 @@ void check_distinct_paths(const std::vector<std::string>& inputs, const std::vec
     return ec ? fs::absolute(p).lexically_normal().string() : c.string();
   };
   for (size_t i = 0; i < outputs.size(); ++i) {
-    if (outputs[i].empty() || outputs[i] == "-") continue;
+    if (outputs[i].empty() || is_stdout(outputs[i])) continue;
     const std::string o = key(outputs[i]);
     for (const auto& in : inputs)
       if (!in.empty() && key(in) == o) fail(outputs[i], fmt::format("it would overwrite the input '{}'", in));
@@ -155,7 +163,7 @@ void write_text(AtomicFile& f, const std::string& text) {
 }
 
 void write_text_output(const std::string& path, const std::string& text) {
-  if (path == "-") {
+  if (is_stdout(path)) {
     if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
       throw std::runtime_error("cannot write to standard output: " + std::string(std::strerror(errno)));
     return;

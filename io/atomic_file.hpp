@@ -8,6 +8,9 @@
 
 namespace magnus {
 
+/// True for the names of standard output: "-", /dev/stdout, /dev/fd/1, /proc/self/fd/1.
+bool is_stdout(const std::string& path);
+
 /// The file an output path names: symlinks followed to the final target (a dangling link gives the
 /// path it points to). Throws one line naming the path if it is a directory, a FIFO, a device or a socket.
 std::string output_target(const std::string& path);

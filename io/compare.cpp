@@ -206,7 +206,7 @@ void command_compare(const std::vector<std::string>& paths, const std::string& c
   if (!csv.empty()) write_text_output(csv, c.csv);
   // With --csv -, standard output carries the CSV alone (for a pipe); the table, which says the same, is
   // not printed.
-  if (csv != "-") std::fputs(c.table.c_str(), stdout);
+  if (!is_stdout(csv)) std::fputs(c.table.c_str(), stdout);
 }
 
 }  // namespace magnus

@@ -513,3 +513,26 @@ TEST_CASE("compare --csv - writes the CSV alone on stdout and creates no file na
   REQUIRE(fs::exists("-") == dash_before);
   REQUIRE_FALSE(fs::exists(dir + "/-"));
 }
+
+TEST_CASE("compare --csv /dev/stdout writes to the stream, never replaces what stdout is",
+          "[app][safety][compare]") {
+  const std::string dir = test::temp_dir("safety-devstdout");
+  earlier_result(dir + "/a.h5", dir);
+  // The harness sends stdout to a regular file: following /dev/stdout → /proc/self/fd/1 → that file and
+  // renaming over it would lose the stream's own output; /dev/stdout means the stream, like "-".
+  for (const char* name : {"/dev/stdout", "/proc/self/fd/1"}) {
+    CAPTURE(name);
+    const Outcome o = run_bounded({"compare", dir + "/a.h5", "--csv", name}, dir);
+    CAPTURE(o.err);
+    REQUIRE(o.status == 0);
+    REQUIRE(o.out.rfind("file,title", 0) == 0);
+    REQUIRE(lines(o.out) == 2);
+  }
+  // A FIFO or device reached through a link is refused like the FIFO or device itself.
+  const std::string link = dir + "/null-link";
+  fs::create_symlink("/dev/null", link);
+  const Outcome o = run_bounded({"compare", dir + "/a.h5", "--csv", link}, dir);
+  REQUIRE(o.status != 0);
+  REQUIRE(o.err.find("it is a device") != std::string::npos);
+  REQUIRE(fs::is_symlink(link));
+}
