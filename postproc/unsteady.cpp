@@ -50,7 +50,7 @@ std::vector<Window> periods(const std::vector<ForceSample>& h, size_t last) {
   std::vector<Window> out;
   for (size_t q = peaks.size(); q-- > 1;) {
     Window w = window(h, peaks[q], peaks[q - 1], t_peak[q], t_peak[q - 1]);
-    if (w.amp_L > 1e-9) out.push_back(w);
+    if (w.amp_L > 1e-5) out.push_back(w);  // a steady flow's round-off wiggles are no period
   }
   return out;
 }
@@ -75,9 +75,9 @@ double choose_time_step(const NsParams& p, const PolarGrid& g, const NsState& s,
   const double dt_limit = cfl_time_step(p, g, s.psi, 0.9 * kNsCflLimit);
   if (p.dt <= dt_limit) return p.dt;
   if (note)
-    *note = "time step " + std::to_string(p.dt) + " s is above the stability limit " + std::to_string(dt_limit) +
-            " s (CFL " + std::to_string(0.9 * kNsCflLimit) + "): using " + std::to_string(dt_cfl) +
-            " s (CFL " + std::to_string(p.cfl) + ")";
+    *note = "time step " + std::to_string(p.dt) + " s is above the stability limit " +
+            std::to_string(dt_limit) + " s (CFL " + std::to_string(0.9 * kNsCflLimit) + "): using " +
+            std::to_string(dt_cfl) + " s (CFL " + std::to_string(p.cfl) + ")";
   return dt_cfl;
 }
 
@@ -97,6 +97,7 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
     if (o.on_step) o.on_step(s, f);
   };
   sample(cur);
+  const double t_min = o.t_min >= 0.0 ? o.t_min : (g.outer_radius() - p.a) / p.U + 10.0 * t_conv;
   res.message = "reached t_end";
   try {
     while (cur.t < o.t_end - 1e-12 * o.t_end) {
@@ -114,7 +115,7 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
       std::swap(cur, nxt);
       ++res.steps;
       sample(cur);
-      if (cur.t < o.t_min || res.steps % 50 != 0) continue;
+      if (cur.t < t_min || res.steps % 50 != 0) continue;
       // Steady: forces flat over the window.
       const double t_from = cur.t - o.steady_window * t_conv;
       if (t_from > 0.0) {

@@ -37,7 +37,8 @@ ViscousSurface viscous_surface(const PolarGrid& g, const NsParams& p, double rho
   out.pressure.assign(n, 0.0);
   for (int j = 0; j < n; ++j)
     for (int k = 1; k < n / 2; ++k)
-      out.pressure[j] += 2.0 * (q_hat[k] / std::complex<double>(0.0, k) * std::polar(1.0, k * g.theta[j])).real();
+      out.pressure[j] +=
+          2.0 * (q_hat[k] / std::complex<double>(0.0, k) * std::polar(1.0, k * g.theta[j])).real();
   return out;
 }
 
@@ -47,7 +48,8 @@ ViscousForces viscous_forces(const PolarGrid& g, const NsParams& p, double rho, 
   ViscousForces f;
   for (int j = 0; j < n; ++j) {
     const double c = std::cos(g.theta[j]), sn = std::sin(g.theta[j]);
-    const double z_xi = (-3.0 * s.zeta[j] + 4.0 * s.zeta[size_t(n) + j] - s.zeta[size_t(2 * n) + j]) / (2.0 * h);
+    const double z_xi =
+        (-3.0 * s.zeta[j] + 4.0 * s.zeta[size_t(n) + j] - s.zeta[size_t(2 * n) + j]) / (2.0 * h);
     const double tau = mu * (s.zeta[j] - 2.0 * p.omega);
     f.F_x_pressure += mu * a * z_xi * sn * dth;
     f.F_y_pressure += -mu * a * z_xi * c * dth;

@@ -1,8 +1,8 @@
 #pragma once
 // Forces, torque and separation points of the viscous flow (DESIGN §8), per unit span, from the wall:
 //   wall shear      τ_w = μ (ζ_w − 2ω)                       (u_r = 0 and u_θ = aω on r = a), Pa
-//   pressure        ∂p/∂θ|_a = μ ∂ζ/∂ξ|_0                    (θ-momentum on a wall moving tangentially, steadily)
-//   force           F = ∮ (−p n̂ + τ_w θ̂) a dθ,  n̂ = (cosθ, sinθ), θ̂ = (−sinθ, cosθ), N/m
+//   pressure        ∂p/∂θ|_a = μ ∂ζ/∂ξ|_0                    (θ-momentum on a wall moving tangentially,
+//   steadily) force           F = ∮ (−p n̂ + τ_w θ̂) a dθ,  n̂ = (cosθ, sinθ), θ̂ = (−sinθ, cosθ), N/m
 //                   pressure part by parts: F_p = μ a ∮ ζ_ξ (sinθ, −cosθ) dθ (no constant needed)
 //   torque          M = ∮ τ_w a² dθ (N·m/m),  spin power P = −M ω (W/m)
 //   coefficients    C_L = F_y/(½ρU²D), C_D = F_x/(½ρU²D), C_M = M/(½ρU²D²), D = 2a (empty when U = 0).
@@ -16,12 +16,12 @@ namespace magnus {
 
 /// Forces per unit span on the body and their coefficients.
 struct ViscousForces {
-  double F_x = 0.0, F_y = 0.0;                  ///< drag, lift, N/m
-  double F_x_pressure = 0.0, F_y_pressure = 0.0;///< pressure parts, N/m
-  double F_x_friction = 0.0, F_y_friction = 0.0;///< friction (shear) parts, N/m
-  double M = 0.0;                               ///< torque about the axis, N·m/m (CCW positive)
-  double P_spin = 0.0;                          ///< power to keep the spin, P = −Mω, W/m
-  std::optional<double> C_L, C_D, C_M;          ///< on ½ρU²·D (C_M on ½ρU²·D²)
+  double F_x = 0.0, F_y = 0.0;                    ///< drag, lift, N/m
+  double F_x_pressure = 0.0, F_y_pressure = 0.0;  ///< pressure parts, N/m
+  double F_x_friction = 0.0, F_y_friction = 0.0;  ///< friction (shear) parts, N/m
+  double M = 0.0;                                 ///< torque about the axis, N·m/m (CCW positive)
+  double P_spin = 0.0;                            ///< power to keep the spin, P = −Mω, W/m
+  std::optional<double> C_L, C_D, C_M;            ///< on ½ρU²·D (C_M on ½ρU²·D²)
   std::optional<double> C_L_pressure, C_L_friction, C_D_pressure, C_D_friction;
 };
 

@@ -40,9 +40,9 @@ std::string fmt_time(double t) {
 /// The factorisations, the influence data of the wall closure and the FFT plans of one operator.
 struct NsOperator::Impl {
   std::unique_ptr<ModeSolver> helmholtz;  ///< ζ: u_ξξ + u_θθ − σ_i u = f, σ_i = 2J_i/(νΔt), Dirichlet at R
-  std::unique_ptr<ModeSolver> poisson;    ///< ψ: u_ξξ + u_θθ = f, Neumann at R
-  std::vector<double> phi, chi;           ///< [k][i]: φ_k(ξ_i), χ_k(ξ_i)
-  std::vector<double> denom;              ///< [k]: χ_k(ξ_1) + a²Δξ²/2
+  std::unique_ptr<ModeSolver> poisson;  ///< ψ: u_ξξ + u_θθ = f, Neumann at R
+  std::vector<double> phi, chi;         ///< [k][i]: φ_k(ξ_i), χ_k(ξ_i)
+  std::vector<double> denom;            ///< [k]: χ_k(ξ_1) + a²Δξ²/2
   fftw_plan ring_r2c = nullptr, field_c2r = nullptr, field_r2c = nullptr;
   ~Impl() {
     std::lock_guard<std::mutex> lock(fftw_planner_mutex());
@@ -66,7 +66,8 @@ NsOperator::NsOperator(const NsParams& p, double dt) : p_(p), dt_(dt) {
       !finite(p.omega) || !(p.outer_over_a > 1.0) || !finite(p.outer_over_a))
     throw std::invalid_argument("NsOperator: need a > 0, nu > 0, U >= 0, finite omega and R/a > 1");
   if (p.n_theta < 8 || p.n_theta % 2 != 0)
-    throw std::invalid_argument("NsOperator: n_theta must be even and >= 8, got " + std::to_string(p.n_theta));
+    throw std::invalid_argument("NsOperator: n_theta must be even and >= 8, got " +
+                                std::to_string(p.n_theta));
   if (!(dt > 0.0) || !finite(dt)) throw std::invalid_argument("NsOperator: dt must be positive and finite");
   grid_ = ns_grid(p);
   h_ = grid_.d_xi(0);
@@ -101,7 +102,8 @@ NsOperator::NsOperator(const NsParams& p, double dt) : p_(p), dt_(dt) {
       for (int j = 0; j < n; ++j) f[size_t(i) * n + j] += c * std::cos(double(k) * grid_.theta[j]);
     }
   }
-  std::vector<double> chi_field = impl_->poisson->solve(f, std::vector<double>(n, 0.0), std::vector<double>(n, 0.0));
+  std::vector<double> chi_field =
+      impl_->poisson->solve(f, std::vector<double>(n, 0.0), std::vector<double>(n, 0.0));
   std::vector<cplx> spec(size_t(nr) * m);
   fftw_execute_dft_r2c(impl_->field_r2c, chi_field.data(), reinterpret_cast<fftw_complex*>(spec.data()));
   impl_->chi.resize(size_t(m) * nr);
@@ -143,7 +145,8 @@ std::vector<double> NsOperator::advection(const std::vector<double>& psi, const 
         N[size_t(i) * n + j] = (j1 + j2 + j3) * scale;
         rmax = std::max(rmax, std::fabs(p0[e] - p0[w]) * cx + std::fabs(pp[j] - pm[j]) * cy);
       }
-      rate_half[ib >= i_mid ? 1 : 0] = std::max(rate_half[ib >= i_mid ? 1 : 0], rmax / (grid_.r[i] * grid_.r[i]));
+      rate_half[ib >= i_mid ? 1 : 0] =
+          std::max(rate_half[ib >= i_mid ? 1 : 0], rmax / (grid_.r[i] * grid_.r[i]));
     }
   });
   if (rate) *rate = std::max({*rate, rate_half[0], rate_half[1]});
@@ -202,8 +205,9 @@ double cfl_number(const PolarGrid& g, const std::vector<double>& psi, double dt)
       if (i == 0)
         p_xi = (-3.0 * psi[j] + 4.0 * psi[size_t(n) + j] - psi[size_t(2 * n) + j]) / (2.0 * h);
       else if (i == nr - 1)
-        p_xi = (3.0 * psi[size_t(i) * n + j] - 4.0 * psi[size_t(i - 1) * n + j] + psi[size_t(i - 2) * n + j]) /
-               (2.0 * h);
+        p_xi =
+            (3.0 * psi[size_t(i) * n + j] - 4.0 * psi[size_t(i - 1) * n + j] + psi[size_t(i - 2) * n + j]) /
+            (2.0 * h);
       else
         p_xi = (psi[size_t(i + 1) * n + j] - psi[size_t(i - 1) * n + j]) / (2.0 * h);
       rate = std::max(rate, std::fabs(p_theta) / (J * h) + std::fabs(p_xi) / (J * g.d_theta));
@@ -242,9 +246,9 @@ void advance(const NsOperator& op, const NsState& old, NsState& next) {
   std::vector<double> N = op.advection(old.psi, old.zeta, &rate);
   const double cfl = p.stokes ? cfl_number(g, old.psi, dt) : rate * dt;
   if (!(cfl <= kNsCflLimit))
-    throw std::runtime_error("advance: at t = " + fmt_time(old.t) + " the CFL number is " + std::to_string(cfl) +
-                             " > " + std::to_string(kNsCflLimit) + ": the time step " + fmt_time(dt) +
-                             " is above the stability limit (reduce dt or the CFL number)");
+    throw std::runtime_error("advance: at t = " + fmt_time(old.t) + " the CFL number is " +
+                             std::to_string(cfl) + " > " + std::to_string(kNsCflLimit) + ": the time step " +
+                             fmt_time(dt) + " is above the stability limit (reduce dt or the CFL number)");
   // AB2 weights for a step dt after a step dt_prev (Euler on the first step).
   const bool first = old.N_prev.empty() || !(old.dt_prev > 0.0);
   const double r = first ? 0.0 : dt / old.dt_prev, w1 = 1.0 + 0.5 * r, w0 = -0.5 * r;
@@ -285,8 +289,8 @@ void advance(const NsOperator& op, const NsState& old, NsState& next) {
     }
   }
   auto non_finite = [&](const std::string& where) {
-    return std::runtime_error("advance: the flow turned non-finite at t = " + fmt_time(old.t + dt) + " (" + where +
-                              "); likely cause: the time step " + fmt_time(dt) +
+    return std::runtime_error("advance: the flow turned non-finite at t = " + fmt_time(old.t + dt) + " (" +
+                              where + "); likely cause: the time step " + fmt_time(dt) +
                               " is above the stability limit, or the grid is too coarse for Re");
   };
   try {
@@ -303,6 +307,16 @@ void advance(const NsOperator& op, const NsState& old, NsState& next) {
   next.N_prev = std::move(N);
   next.Gamma_flux_prev = flux;
   next.dt_prev = dt;
+}
+
+void add_vortex_blob(const PolarGrid& g, NsState& s, double x_b, double y_b, double radius, double Gamma_b) {
+  const int n = g.n_theta;
+  for (int i = 1; i < g.n_r - 1; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double dx = g.r[i] * std::cos(g.theta[j]) - x_b, dy = g.r[i] * std::sin(g.theta[j]) - y_b;
+      s.zeta[size_t(i) * n + j] +=
+          Gamma_b / (M_PI * radius * radius) * std::exp(-(dx * dx + dy * dy) / (radius * radius));
+    }
 }
 
 void ns_velocity(const PolarGrid& g, const std::vector<double>& psi, std::vector<double>& u_r,

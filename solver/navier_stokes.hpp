@@ -33,17 +33,17 @@ enum class NsOuterVorticity { inflow_outflow, zero };
 
 /// The viscous scene and its grid (SI). Re = U·2a/ν. The case-file keys map onto this.
 struct NsParams {
-  double a = 0.5;             ///< cylinder radius, m
-  double U = 1.0;             ///< freestream speed towards +x, m/s
-  double omega = 0.0;         ///< spin, rad/s, counter-clockwise positive (α = aω/U)
-  double nu = 0.01;           ///< kinematic viscosity, m²/s
-  double outer_over_a = 60.0; ///< R/a (rounded up to whole square cells when n_r = 0)
-  int n_theta = 256;          ///< points in θ (even)
-  int n_r = 0;                ///< rings; 0: square cells Δξ = Δθ
-  double dt = 0.0;            ///< time step, s; 0: from the CFL number
-  double cfl = 0.5;           ///< target CFL number Δt·max(|ψ_θ|/(JΔξ) + |ψ_ξ|/(JΔθ))
-  int threads = 2;            ///< threads for the advection and the mode solves
-  bool stokes = false;        ///< drop the advection (unsteady Stokes flow, the creeping limit)
+  double a = 0.5;              ///< cylinder radius, m
+  double U = 1.0;              ///< freestream speed towards +x, m/s
+  double omega = 0.0;          ///< spin, rad/s, counter-clockwise positive (α = aω/U)
+  double nu = 0.01;            ///< kinematic viscosity, m²/s
+  double outer_over_a = 100.0; ///< R/a (rounded up to whole square cells when n_r = 0); 100: < 0.5% from ∞
+  int n_theta = 256;           ///< points in θ (even)
+  int n_r = 0;                 ///< rings; 0: square cells Δξ = Δθ
+  double dt = 0.0;             ///< time step, s; 0: from the CFL number
+  double cfl = 0.5;            ///< target CFL number Δt·max(|ψ_θ|/(JΔξ) + |ψ_ξ|/(JΔθ))
+  int threads = 2;             ///< threads for the advection and the mode solves
+  bool stokes = false;         ///< drop the advection (unsteady Stokes flow, the creeping limit)
   NsOuterVorticity outer_vorticity = NsOuterVorticity::inflow_outflow;
 
   /// Re = U·2a/ν (0 when U = 0).
@@ -56,13 +56,13 @@ constexpr double kNsCflLimit = 0.8;
 
 /// The state of the AB2/CN scheme at time t: fields (n_r, n_θ) row-major, ring 0 = wall.
 struct NsState {
-  std::vector<double> psi;        ///< ψ, m²/s
-  std::vector<double> zeta;       ///< ζ = −∇²ψ, 1/s (ring 0: the wall vorticity ζ_w)
-  double t = 0.0;                 ///< time, s
-  double Gamma_R = 0.0;           ///< circulation on r = R, m²/s
-  std::vector<double> N_prev;     ///< advection N^{n−1} (empty: first step, AB2 starts with Euler)
-  double Gamma_flux_prev = 0.0;   ///< dΓ_R/dt at t^{n−1}, m²/s²
-  double dt_prev = 0.0;           ///< Δt of the previous step, s
+  std::vector<double> psi;       ///< ψ, m²/s
+  std::vector<double> zeta;      ///< ζ = −∇²ψ, 1/s (ring 0: the wall vorticity ζ_w)
+  double t = 0.0;                ///< time, s
+  double Gamma_R = 0.0;          ///< circulation on r = R, m²/s
+  std::vector<double> N_prev;    ///< advection N^{n−1} (empty: first step, AB2 starts with Euler)
+  double Gamma_flux_prev = 0.0;  ///< dΓ_R/dt at t^{n−1}, m²/s²
+  double dt_prev = 0.0;          ///< Δt of the previous step, s
 };
 
 /// Discrete operators for one (params, Δt): the grid, the Helmholtz and Poisson mode solvers and the
@@ -117,6 +117,11 @@ double cfl_time_step(const NsParams& p, const PolarGrid& g, const std::vector<do
 /// Impulsive start ("from rest" in the body frame): the irrotational flow without circulation,
 /// ψ = U (r − a²/r) sinθ, ζ = 0, Γ_R = 0; the first step creates the wall's vortex sheet.
 NsState impulsive_start(const NsParams& p, const PolarGrid& g);
+
+/// Add a Gaussian vortex ζ += Γ_b/(πs²)·exp(−|x − x_b|²/s²) at (x_b, y_b) (m) of circulation Γ_b (m²/s):
+/// a small one breaks the mirror symmetry of a non-spinning start so that shedding begins. ψ follows at
+/// the next step's solve.
+void add_vortex_blob(const PolarGrid& g, NsState& s, double x_b, double y_b, double radius, double Gamma_b);
 
 /// Velocity components on the grid: u_r = ψ_θ/r, u_θ = −ψ_ξ/r (central; one-sided at the wall and R), m/s.
 void ns_velocity(const PolarGrid& g, const std::vector<double>& psi, std::vector<double>& u_r,

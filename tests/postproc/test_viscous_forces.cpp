@@ -8,7 +8,8 @@
 
 using namespace magnus;
 
-TEST_CASE("[ns] forces: pure rotation has torque -4 pi mu a^2 omega, spin power 4 pi mu a^2 omega^2", "[ns]") {
+TEST_CASE("[ns] forces: pure rotation has torque -4 pi mu a^2 omega, spin power 4 pi mu a^2 omega^2",
+          "[ns]") {
   NsParams p;
   p.a = 0.1, p.U = 0.0, p.omega = 100.0, p.nu = 1.5e-5, p.outer_over_a = 20.0, p.n_theta = 64;
   const double rho = 1.2, mu = rho * p.nu;
@@ -23,7 +24,8 @@ TEST_CASE("[ns] forces: pure rotation has torque -4 pi mu a^2 omega, spin power 
   CHECK_FALSE(f.C_L.has_value());  // U = 0: coefficients undefined
 }
 
-TEST_CASE("[ns] forces: wall pressure is the theta-integral of mu zeta_xi; separation where tau_w = 0", "[ns]") {
+TEST_CASE("[ns] forces: wall pressure is the theta-integral of mu zeta_xi; separation where tau_w = 0",
+          "[ns]") {
   NsParams p;
   p.a = 0.5, p.U = 1.0, p.omega = 0.0, p.nu = 0.02, p.outer_over_a = 10.0, p.n_theta = 64;
   const double rho = 1.0, mu = rho * p.nu;
@@ -35,7 +37,8 @@ TEST_CASE("[ns] forces: wall pressure is the theta-integral of mu zeta_xi; separ
     for (int j = 0; j < g.n_theta; ++j)
       s.zeta[size_t(i) * g.n_theta + j] = g.xi[i] * std::cos(3 * g.theta[j]) + std::cos(g.theta[j]) - 0.5;
   const ViscousSurface surf = viscous_surface(g, p, rho, s);
-  for (int j = 0; j < g.n_theta; ++j) CHECK(surf.pressure[j] == Approx(mu * std::sin(3 * g.theta[j]) / 3).margin(1e-14));
+  for (int j = 0; j < g.n_theta; ++j)
+    CHECK(surf.pressure[j] == Approx(mu * std::sin(3 * g.theta[j]) / 3).margin(1e-14));
   const std::vector<double> sep = separation_angles(surf);
   REQUIRE(sep.size() == 2);
   CHECK(sep[0] == Approx(M_PI / 3).margin(2e-3));
@@ -85,7 +88,8 @@ TEST_CASE("[ns] forces: the wall formulas match a control-volume momentum balanc
   std::vector<double> gap;
   for (int n : {48, 96}) {
     NsParams p;
-    p.a = 0.5, p.U = 1.0, p.nu = 0.1, p.omega = 0.5 * p.U / p.a, p.outer_over_a = 8.0, p.n_theta = n, p.threads = 1;
+    p.a = 0.5, p.U = 1.0, p.nu = 0.1, p.omega = 0.5 * p.U / p.a, p.outer_over_a = 8.0, p.n_theta = n,
+    p.threads = 1;
     UnsteadyOptions o;
     o.t_end = 120.0, o.steady_tol = 1e-5, o.steady_window = 2.0;
     const UnsteadyResult res = run_unsteady(p, o, impulsive_start(p, ns_grid(p)));

@@ -31,7 +31,10 @@ double first_root(const std::function<double(double)>& f, double lo, double hi, 
       double a = x0, b = x1, fa = f0;
       for (int it = 0; it < 200; ++it) {
         const double c = 0.5 * (a + b), fc = f(c);
-        if (fa * fc <= 0.0) b = c; else a = c, fa = fc;
+        if (fa * fc <= 0.0)
+          b = c;
+        else
+          a = c, fa = fc;
       }
       return 0.5 * (a + b);
     }
@@ -110,14 +113,18 @@ struct BesselMode {
     lambda = first_root([this](double l) { return Z(0, l * R, l); }, 0.05, 20.0, 0.01);
   }
   double Z(int n, double x, double l) const {
-    return std::cyl_bessel_j(n, x) * std::cyl_neumann(1, l * a) - std::cyl_neumann(n, x) * std::cyl_bessel_j(1, l * a);
+    return std::cyl_bessel_j(n, x) * std::cyl_neumann(1, l * a) -
+           std::cyl_neumann(n, x) * std::cyl_bessel_j(1, l * a);
   }
   double decay(double t) const { return std::exp(-nu * lambda * lambda * t); }
   double psi(double r, double t) const {
-    return -a * a * omega * std::log(r / a) + C / lambda * (Z(0, lambda * r, lambda) - Z(0, lambda * a, lambda)) * decay(t);
+    return -a * a * omega * std::log(r / a) +
+           C / lambda * (Z(0, lambda * r, lambda) - Z(0, lambda * a, lambda)) * decay(t);
   }
   double zeta(double r, double t) const { return C * lambda * Z(0, lambda * r, lambda) * decay(t); }
-  double Gamma(double r, double t) const { return 2.0 * M_PI * (a * a * omega + r * C * Z(1, lambda * r, lambda) * decay(t)); }
+  double Gamma(double r, double t) const {
+    return 2.0 * M_PI * (a * a * omega + r * C * Z(1, lambda * r, lambda) * decay(t));
+  }
   NsParams params(int n_r) const {
     NsParams p;
     p.a = a, p.U = 0.0, p.omega = omega, p.nu = nu, p.outer_over_a = R / a, p.n_theta = 8, p.n_r = n_r;
@@ -158,12 +165,13 @@ BesselErrors bessel_errors(const BesselMode& b, int n_r, double dt, double t_end
 
 }  // namespace
 
-TEST_CASE("[ns] diffusion: the decaying Bessel mode, second order in space (psi, wall vorticity, torque)", "[ns]") {
+TEST_CASE("[ns] diffusion: the decaying Bessel mode, second order in space (psi, wall vorticity, torque)",
+          "[ns]") {
   const BesselMode b;
   const double t_end = 0.2, dt = 0.2 / 800;
   // 9, 17 rings are pre-asymptotic (orders 1.5, 1.8); from 33 rings on the orders are 1.9–2.0.
   const BesselErrors e1 = bessel_errors(b, 33, dt, t_end), e2 = bessel_errors(b, 65, dt, t_end),
-               e3 = bessel_errors(b, 129, dt, t_end);
+                     e3 = bessel_errors(b, 129, dt, t_end);
   INFO("psi errors " << e1.psi << " " << e2.psi << " " << e3.psi << "; zeta_w errors " << e1.zeta_w << " "
                      << e2.zeta_w << " " << e3.zeta_w);
   // The torque M = 2π a² μ (ζ_w − 2ω): its error is 2πa²μ times the wall vorticity's.
@@ -197,7 +205,8 @@ struct StokesMode {
   int k = 2;
   double a = 1.0, R = 3.0, nu = 1.0, lambda = 0.0, B = 0.0, C = 0.0;
   double Z(double x, double l) const {
-    return std::cyl_bessel_j(k, x) * std::cyl_neumann(k, l * R) - std::cyl_neumann(k, x) * std::cyl_bessel_j(k, l * R);
+    return std::cyl_bessel_j(k, x) * std::cyl_neumann(k, l * R) -
+           std::cyl_neumann(k, x) * std::cyl_bessel_j(k, l * R);
   }
   double dZ(double x, double l) const {  // dZ/dx
     auto dj = [this](double y) { return 0.5 * (std::cyl_bessel_j(k - 1, y) - std::cyl_bessel_j(k + 1, y)); };
@@ -206,7 +215,7 @@ struct StokesMode {
   }
   Eigen::Matrix3d M(double l) const {
     Eigen::Matrix3d m;
-    m << Z(l * a, l) / (l * l), std::pow(a, k), std::pow(a, -k),  //
+    m << Z(l * a, l) / (l * l), std::pow(a, k), std::pow(a, -k),             //
         dZ(l * a, l) / l, k * std::pow(a, k - 1), -k * std::pow(a, -k - 1),  //
         dZ(l * R, l) / l, k * std::pow(R, k - 1), -k * std::pow(R, -k - 1);
     return m;
@@ -220,7 +229,9 @@ struct StokesMode {
     B = bc(0), C = bc(1);
   }
   double decay(double t) const { return std::exp(-nu * lambda * lambda * t); }
-  double P(double r) const { return Z(lambda * r, lambda) / (lambda * lambda) + B * std::pow(r, k) + C * std::pow(r, -k); }
+  double P(double r) const {
+    return Z(lambda * r, lambda) / (lambda * lambda) + B * std::pow(r, k) + C * std::pow(r, -k);
+  }
   double dP(double r) const {
     return dZ(lambda * r, lambda) / lambda + k * B * std::pow(r, k - 1) - k * C * std::pow(r, -k - 1);
   }
@@ -274,7 +285,8 @@ TEST_CASE("[ns] wall closure: a Stokes eigenmode k = 2, both wall conditions exa
     e_psi.push_back(ep), e_w.push_back(ew);
   }
   INFO("lambda " << sm.lambda << "; psi errors " << e_psi[0] << " " << e_psi[1] << " " << e_psi[2] << " "
-                 << e_psi[3] << "; zeta_w errors " << e_w[0] << " " << e_w[1] << " " << e_w[2] << " " << e_w[3]);
+                 << e_psi[3] << "; zeta_w errors " << e_w[0] << " " << e_w[1] << " " << e_w[2] << " "
+                 << e_w[3]);
   CHECK(observed_order(e_psi[2], e_psi[3]) == Approx(2.0).margin(0.1));
   CHECK(observed_order(e_w[2], e_w[3]) == Approx(2.0).margin(0.1));
 }
@@ -290,7 +302,8 @@ TEST_CASE("[ns] Arakawa's Jacobian conserves vorticity, energy and enstrophy; it
   std::uniform_real_distribution<double> d(-1.0, 1.0);
   std::vector<double> psi(g.nodes(), 0.0), zeta(g.nodes(), 0.0);
   for (int i = 2; i < g.n_r - 2; ++i)  // zero on the two outer rings each side: no boundary flux
-    for (int j = 0; j < g.n_theta; ++j) psi[size_t(i) * g.n_theta + j] = d(rng), zeta[size_t(i) * g.n_theta + j] = d(rng);
+    for (int j = 0; j < g.n_theta; ++j)
+      psi[size_t(i) * g.n_theta + j] = d(rng), zeta[size_t(i) * g.n_theta + j] = d(rng);
   const std::vector<double> N = op.advection(psi, zeta);
   double s1 = 0.0, s_psi = 0.0, s_zeta = 0.0, scale = 0.0;
   for (size_t q = 0; q < N.size(); ++q)
@@ -308,7 +321,8 @@ TEST_CASE("[ns] Arakawa's Jacobian conserves vorticity, energy and enstrophy; it
     for (int i = 0; i < g2.n_r; ++i)
       for (int j = 0; j < n; ++j) {
         const double x = g2.xi[i], t = g2.theta[j];
-        ps[size_t(i) * n + j] = std::sin(x) * std::cos(2 * t), ze[size_t(i) * n + j] = std::cos(1.5 * x) * std::sin(t);
+        ps[size_t(i) * n + j] = std::sin(x) * std::cos(2 * t),
+                           ze[size_t(i) * n + j] = std::cos(1.5 * x) * std::sin(t);
       }
     const std::vector<double> N2 = o2.advection(ps, ze);
     double e = 0.0;

@@ -32,12 +32,15 @@ int main(int argc, char** argv) {
   };
   const PolarGrid g = ns_grid(p);
   const UnsteadyResult r = run_unsteady(p, o, impulsive_start(p, g));
-  std::printf("grid %d x %d, R/a = %.2f, dt = %.5g, steps %ld, wall %.2f s (%.3f ms/step)\n", g.n_r, g.n_theta,
-              g.outer_radius() / p.a, r.dt, r.steps, r.wall_seconds, 1e3 * r.wall_seconds / double(r.steps));
+  std::printf("grid %d x %d, R/a = %.2f, dt = %.5g, steps %ld, wall %.2f s (%.3f ms/step)\n", g.n_r,
+              g.n_theta, g.outer_radius() / p.a, r.dt, r.steps, r.wall_seconds,
+              1e3 * r.wall_seconds / double(r.steps));
   std::printf("%s; t = %.2f\n", r.message.c_str(), r.state.t);
   std::printf("C_L mean %.5f  amp %.5f  C_D mean %.5f  amp %.5f  C_M mean %.5f  St %.5f  (%s)\n", r.C_L_mean,
               r.C_L_amplitude, r.C_D_mean, r.C_D_amplitude, r.C_M_mean, r.St,
-              r.steady ? "steady" : r.periodic ? "periodic" : "neither");
+              r.steady     ? "steady"
+              : r.periodic ? "periodic"
+                           : "neither");
   if (r.steady) std::printf("recirculation length %.4f D\n", recirculation_length(g, r.state));
   return r.ok ? 0 : 1;
 }
