@@ -104,7 +104,7 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
       // Keep the CFL number near its target: the velocities grow as the wake forms.
       if (res.steps % 10 == 0) {
         const double cfl = cfl_number(g, cur.psi, dt);
-        if (cfl > 0.75 * kNsCflLimit || (p.dt <= 0.0 && cfl > 1.25 * p.cfl)) {
+        if (cfl > 0.95 * kNsCflLimit || (p.dt <= 0.0 && cfl > std::min(1.25 * p.cfl, 0.95 * kNsCflLimit))) {
           dt = cfl_time_step(p, g, cur.psi, p.cfl);
           op = std::make_unique<NsOperator>(p, dt);
         }

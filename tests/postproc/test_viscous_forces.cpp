@@ -112,3 +112,24 @@ TEST_CASE("[ns] forces: the wall formulas match a control-volume momentum balanc
   INFO("gaps " << gap[0] << " " << gap[1]);
   CHECK(magnus::test::observed_order(gap[0], gap[1]) > 1.5);
 }
+
+TEST_CASE("[ns] driver: an asked time step above the stability limit is clamped with a message", "[ns]") {
+  NsParams p;
+  p.a = 0.5, p.U = 1.0, p.nu = 0.1, p.outer_over_a = 8.0, p.n_theta = 32, p.threads = 1;
+  const PolarGrid g = ns_grid(p);
+  const NsState s = impulsive_start(p, g);
+  std::string note;
+  p.dt = 1e-4;
+  CHECK(choose_time_step(p, g, s, &note) == 1e-4);
+  CHECK(note.empty());
+  p.dt = 1.0;
+  const double dt = choose_time_step(p, g, s, &note);
+  CHECK(cfl_number(g, s.psi, dt) <= p.cfl + 1e-12);
+  CHECK(note.find("above the stability limit") != std::string::npos);
+  UnsteadyOptions o;
+  o.t_end = 20 * dt;
+  const UnsteadyResult r = run_unsteady(p, o, s);
+  CHECK(r.ok);
+  CHECK(r.message.find("above the stability limit") != std::string::npos);
+  CHECK(r.history.size() == 21);
+}

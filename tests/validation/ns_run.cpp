@@ -42,5 +42,11 @@ int main(int argc, char** argv) {
               : r.periodic ? "periodic"
                            : "neither");
   if (r.steady) std::printf("recirculation length %.4f D\n", recirculation_length(g, r.state));
+  if (const char* path = std::getenv("NS_HISTORY")) {  // t, C_L, C_D, C_M per step
+    if (FILE* f = std::fopen(path, "w")) {
+      for (const ForceSample& h : r.history) std::fprintf(f, "%.6f %.6f %.6f %.6f\n", h.t, h.C_L, h.C_D, h.C_M);
+      std::fclose(f);
+    }
+  }
   return r.ok ? 0 : 1;
 }
