@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   p.n_theta = std::atoi(argv[3]);
   p.outer_over_a = std::atof(argv[4]);
   if (argc > 6) p.cfl = std::atof(argv[6]);
+  if (const char* t = std::getenv("NS_THREADS")) p.threads = std::atoi(t);
   const bool quiet = argc > 7;
   UnsteadyOptions o;
   o.t_end = std::atof(argv[5]);
@@ -44,7 +45,8 @@ int main(int argc, char** argv) {
   if (r.steady) std::printf("recirculation length %.4f D\n", recirculation_length(g, r.state));
   if (const char* path = std::getenv("NS_HISTORY")) {  // t, C_L, C_D, C_M per step
     if (FILE* f = std::fopen(path, "w")) {
-      for (const ForceSample& h : r.history) std::fprintf(f, "%.6f %.6f %.6f %.6f\n", h.t, h.C_L, h.C_D, h.C_M);
+      for (const ForceSample& h : r.history)
+        std::fprintf(f, "%.6f %.6f %.6f %.6f\n", h.t, h.C_L, h.C_D, h.C_M);
       std::fclose(f);
     }
   }

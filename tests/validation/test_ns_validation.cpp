@@ -138,7 +138,8 @@ TEST_CASE("[validation] steady alpha 0: drag and recirculation length at Re 20 a
   compare("C_D Re 40", r40.res.C_D_mean, 1.522, "Dennis & Chang 1970");
   compare("C_D Re 40", r40.res.C_D_mean, 1.498, "Fornberg 1980");
   compare("L_r/D Re 40", r40.L_r, 2.25, "2.2-2.35, Dennis & Chang; Fornberg");
-  // Separation: τ_w changes sign at θ_s = ±(π − θ_sep), θ from the rear (+x); D&C: 43.7° (Re 20), 53.8° (Re 40).
+  // Separation: τ_w changes sign at θ_s = ±(π − θ_sep), θ from the rear (+x); D&C: 43.7° (Re 20), 53.8° (Re
+  // 40).
   auto separation_deg = [](const Run& r) {
     NsParams q;  // α = 0: τ_w = μ ζ_w, its sign is ζ_w's whatever μ
     q.omega = 0.0;
@@ -158,20 +159,30 @@ TEST_CASE("[validation] steady alpha 0: drag and recirculation length at Re 20 a
 
 TEST_CASE("[validation] Re 100, alpha 0 to 2: lift, drag, Strouhal (Stojkovic, Breuer & Durst 2002)",
           "[validation]") {
+  // Two grids per α and their Richardson value (p = 2): the drag's grid error grows with α (the boundary
+  // layer thins on the side moving against the stream): +6%, +1.9% at α = 1 on n_θ = 128, 192.
   struct Ref {
     double alpha, C_L, C_D, St;
   };
   for (const Ref& ref : {Ref{0.0, 0.0, 1.3371, 0.1650}, Ref{0.5, 1.220, 1.2770, 0.1657},
                          Ref{1.5, 3.900, 0.8180, 0.1626}, Ref{2.0, 5.48, 0.46, 0.0}}) {
-    const Run& r = run(100, ref.alpha, 192, kR, 300);
-    REQUIRE(r.res.ok);
-    std::printf("  alpha %.1f:\n", ref.alpha);
-    if (ref.alpha > 0) compare("|C_L| mean", std::fabs(r.res.C_L_mean), ref.C_L, "SBD 2002");
-    compare("C_D mean", r.res.C_D_mean, ref.C_D, "SBD 2002");
-    if (ref.St > 0) compare("St", r.res.St, ref.St, "SBD 2002");
-    if (ref.alpha > 0) CHECK(std::fabs(r.res.C_L_mean) == Approx(ref.C_L).epsilon(0.03));
-    CHECK(r.res.C_D_mean == Approx(ref.C_D).epsilon(ref.alpha < 2 ? 0.03 : 0.1));
-    if (ref.St > 0) CHECK(r.res.St == Approx(ref.St).epsilon(0.02));
-    if (ref.alpha == 2.0) CHECK(r.res.C_L_amplitude < 0.01);  // steady at α = 2
+    const Run& c = run(100, ref.alpha, 128, kR, 300);
+    const Run& f = run(100, ref.alpha, 192, kR, 300);
+    REQUIRE((c.res.ok && f.res.ok));
+    auto richardson = [](double coarse, double fine) { return fine + (fine - coarse) / (2.25 - 1.0); };
+    const double C_L = std::fabs(richardson(c.res.C_L_mean, f.res.C_L_mean));
+    const double C_D = richardson(c.res.C_D_mean, f.res.C_D_mean);
+    std::printf("  alpha %.1f (n_theta 192; Richardson 128/192):\n", ref.alpha);
+    if (ref.alpha > 0) {
+      compare("|C_L| 192", std::fabs(f.res.C_L_mean), ref.C_L, "SBD 2002");
+      compare("|C_L| Rich.", C_L, ref.C_L, "SBD 2002");
+    }
+    compare("C_D 192", f.res.C_D_mean, ref.C_D, "SBD 2002");
+    compare("C_D Rich.", C_D, ref.C_D, "SBD 2002");
+    if (ref.St > 0) compare("St 192", f.res.St, ref.St, "SBD 2002");
+    if (ref.alpha > 0) CHECK(C_L == Approx(ref.C_L).epsilon(0.015));
+    CHECK(C_D == Approx(ref.C_D).epsilon(ref.alpha < 2 ? 0.03 : 0.06));
+    if (ref.St > 0) CHECK(f.res.St == Approx(ref.St).epsilon(0.015));
+    if (ref.alpha == 2.0) CHECK(f.res.steady);  // steady at α = 2
   }
 }
