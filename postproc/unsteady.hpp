@@ -1,0 +1,65 @@
+#pragma once
+// The run driver of the viscous model: time steps from a start state to t_end, or until the flow is
+// steady or its periodic means have converged; keeps the force history; finds the shedding period
+// (successive maxima of C_L), the means and amplitudes over the last whole period, and St = f·D/U.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "postproc/viscous_forces.hpp"
+
+namespace magnus {
+
+/// How long to run and when to stop early.
+struct UnsteadyOptions {
+  double t_end = 200.0;         ///< end time, s
+  double rho = 1.0;             ///< density for the forces, kg/m³
+  double mean_tol = 1e-3;       ///< periodic: stop when the last periods' means of C_L, C_D differ < this
+  int converged_periods = 3;    ///< …over this many consecutive periods (and their lengths by < mean_tol)
+  double steady_tol = 1e-5;     ///< steady: stop when C_L, C_D vary < this over steady_window
+  double steady_window = 10.0;  ///< in convective times D/U
+  /// Never stop before this time, s; < 0: (R − a)/U + 10·D/U, when the starting vortex (shed at the
+  /// impulsive start, carrying the opposite of the bound circulation) has left the domain — until then it
+  /// tilts the force by its induced velocity ~Γ/(2πUt) and the means drift too slowly to be caught.
+  double t_min = -1.0;
+  /// Called after every step (a progress line, a checkpoint); may be empty.
+  std::function<void(const NsState&, const ViscousForces&)> on_step;
+};
+
+/// One sample of the force history.
+struct ForceSample {
+  double t = 0.0;  ///< s
+  double C_L = 0.0, C_D = 0.0, C_M = 0.0;
+  double F_x = 0.0, F_y = 0.0, M = 0.0;  ///< N/m, N/m, N·m/m
+};
+
+/// What a run reached.
+struct UnsteadyResult {
+  NsState state;                                          ///< the last state
+  std::vector<ForceSample> history;                       ///< one sample per step
+  bool steady = false;                                    ///< forces stopped changing
+  bool periodic = false;                                  ///< at least two periods found
+  bool converged = false;                                 ///< steady, or periodic means converged
+  bool ok = true;                                         ///< false: stopped on an error (see message)
+  std::string message;                                    ///< why it stopped; a clamped Δt; an error
+  double period = 0.0;                                    ///< shedding period (C_L maxima), s
+  double St = 0.0;                                        ///< Strouhal number D/(U·period)
+  double C_L_mean = 0.0, C_D_mean = 0.0, C_M_mean = 0.0;  ///< over the last period (or last sample)
+  double C_L_amplitude = 0.0, C_D_amplitude = 0.0;        ///< (max − min)/2 over the last period
+  double dt = 0.0;                                        ///< the last time step, s
+  long steps = 0;
+  double wall_seconds = 0.0;
+};
+
+/// The Δt a run uses: params.dt if set and below the limit Δt(kNsCflLimit), else from params.cfl; `note`
+/// says when an asked Δt was clamped.
+double choose_time_step(const NsParams& p, const PolarGrid& g, const NsState& s, std::string* note);
+
+/// Run from `start` (e.g. impulsive_start) with U > 0. Never throws on a failing flow: ok = false, message.
+UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState start);
+
+/// Period, means and amplitudes of a history's last whole period of C_L (maxima with parabolic timing).
+/// Returns false when fewer than two maxima are found. D and U give St.
+bool analyse_periodic(const std::vector<ForceSample>& h, double D, double U, UnsteadyResult& out);
+
+}  // namespace magnus

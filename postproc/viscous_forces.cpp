@@ -1,0 +1,110 @@
+#include "postproc/viscous_forces.hpp"
+
+#include <cmath>
+#include <complex>
+
+namespace magnus {
+
+namespace {
+
+/// ∂ζ/∂ξ on the wall ring, one-sided second order on uniform ξ, 1/s.
+std::vector<double> wall_zeta_xi(const PolarGrid& g, const NsState& s) {
+  const int n = g.n_theta;
+  const double h = g.d_xi(0);
+  std::vector<double> z_xi(n);
+  for (int j = 0; j < n; ++j)
+    z_xi[j] = (-3.0 * s.zeta[j] + 4.0 * s.zeta[size_t(n) + j] - s.zeta[size_t(2 * n) + j]) / (2.0 * h);
+  return z_xi;
+}
+
+}  // namespace
+
+ViscousSurface viscous_surface(const PolarGrid& g, const NsParams& p, double rho, const NsState& s) {
+  const int n = g.n_theta;
+  const double mu = rho * p.nu;
+  ViscousSurface out;
+  out.theta = g.theta;
+  out.zeta_xi = wall_zeta_xi(g, s);
+  out.tau_w.resize(n);
+  for (int j = 0; j < n; ++j) out.tau_w[j] = mu * (s.zeta[j] - 2.0 * p.omega);
+  // p(θ) − p̄ = Σ_{0<|k|<n/2} q̂_k/(ik) e^{ikθ}, q = μ ζ_ξ (a direct DFT: n_θ is small, called rarely).
+  std::vector<std::complex<double>> q_hat(n / 2);
+  for (int k = 1; k < n / 2; ++k) {
+    std::complex<double> sum = 0.0;
+    for (int j = 0; j < n; ++j) sum += mu * out.zeta_xi[j] * std::polar(1.0, -double(k) * g.theta[j]);
+    q_hat[k] = sum / double(n);
+  }
+  out.pressure.assign(n, 0.0);
+  for (int j = 0; j < n; ++j)
+    for (int k = 1; k < n / 2; ++k)
+      out.pressure[j] +=
+          2.0 * (q_hat[k] / std::complex<double>(0.0, k) * std::polar(1.0, k * g.theta[j])).real();
+  return out;
+}
+
+ViscousForces viscous_forces(const PolarGrid& g, const NsParams& p, double rho, const NsState& s) {
+  const int n = g.n_theta;
+  const double mu = rho * p.nu, a = p.a, dth = g.d_theta, h = g.d_xi(0);
+  ViscousForces f;
+  for (int j = 0; j < n; ++j) {
+    const double c = std::cos(g.theta[j]), sn = std::sin(g.theta[j]);
+    const double z_xi =
+        (-3.0 * s.zeta[j] + 4.0 * s.zeta[size_t(n) + j] - s.zeta[size_t(2 * n) + j]) / (2.0 * h);
+    const double tau = mu * (s.zeta[j] - 2.0 * p.omega);
+    f.F_x_pressure += mu * a * z_xi * sn * dth;
+    f.F_y_pressure += -mu * a * z_xi * c * dth;
+    f.F_x_friction += -tau * sn * a * dth;
+    f.F_y_friction += tau * c * a * dth;
+    f.M += tau * a * a * dth;
+  }
+  f.F_x = f.F_x_pressure + f.F_x_friction;
+  f.F_y = f.F_y_pressure + f.F_y_friction;
+  f.P_spin = -f.M * p.omega;
+  if (p.U > 0.0) {
+    const double q = 0.5 * rho * p.U * p.U, D = 2.0 * a;
+    f.C_L = f.F_y / (q * D);
+    f.C_D = f.F_x / (q * D);
+    f.C_M = f.M / (q * D * D);
+    f.C_L_pressure = f.F_y_pressure / (q * D);
+    f.C_L_friction = f.F_y_friction / (q * D);
+    f.C_D_pressure = f.F_x_pressure / (q * D);
+    f.C_D_friction = f.F_x_friction / (q * D);
+  }
+  return f;
+}
+
+std::vector<double> separation_angles(const ViscousSurface& surf) {
+  std::vector<double> out;
+  const size_t n = surf.tau_w.size();
+  if (n < 2) return out;
+  const double d_theta = 2.0 * M_PI / double(n);
+  for (size_t j = 0; j < n; ++j) {
+    const double t0 = surf.tau_w[j], t1 = surf.tau_w[(j + 1) % n];
+    if (t0 == 0.0) {
+      out.push_back(surf.theta[j]);
+    } else if (t0 * t1 < 0.0) {
+      const double th = surf.theta[j] + d_theta * t0 / (t0 - t1);
+      out.push_back(th >= 2.0 * M_PI ? th - 2.0 * M_PI : th);
+    }
+  }
+  return out;
+}
+
+double recirculation_length(const PolarGrid& g, const NsState& s) {
+  const int n = g.n_theta;
+  // u_r(r_i, θ = 0) = ψ_θ/r, central in θ across the node j = 0.
+  double prev = 0.0;
+  for (int i = 1; i < g.n_r; ++i) {
+    const double u = (s.psi[size_t(i) * n + 1] - s.psi[size_t(i) * n + n - 1]) / (2.0 * g.d_theta) / g.r[i];
+    if (i > 1 && prev < 0.0 && u >= 0.0) {
+      const double r0 = g.r[i - 1], r1 = g.r[i];
+      const double rs = r0 + (r1 - r0) * prev / (prev - u);
+      return (rs - g.a) / (2.0 * g.a);
+    }
+    if (i == 1 && u >= 0.0) return 0.0;  // attached: the flow leaves the rear point outwards
+    prev = u;
+  }
+  return 0.0;
+}
+
+}  // namespace magnus

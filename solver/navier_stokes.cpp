@@ -1,0 +1,344 @@
+#include "solver/navier_stokes.hpp"
+
+#include <fftw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+#include "solver/fft_modes.hpp"
+
+namespace magnus {
+
+namespace {
+
+using cplx = std::complex<double>;
+
+/// Run body(i_begin, i_end) over rings [b, e), split in two threads when the grid is large enough to pay.
+template <class F>
+void parallel_over_rings(int b, int e, int threads, long nodes, const F& body) {
+  if (threads <= 1 || nodes < 16384 || e - b < 8) return body(b, e);
+  const int mid = b + (e - b) / 2;
+  std::thread other([&body, mid, e] { body(mid, e); });
+  body(b, mid);
+  other.join();
+}
+
+std::string fmt_time(double t) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g s", t);
+  return buf;
+}
+
+}  // namespace
+
+/// The factorisations, the influence data of the wall closure and the FFT plans of one operator.
+struct NsOperator::Impl {
+  std::unique_ptr<ModeSolver> helmholtz;  ///< ζ: u_ξξ + u_θθ − σ_i u = f, σ_i = 2J_i/(νΔt), Dirichlet at R
+  std::unique_ptr<ModeSolver> poisson;  ///< ψ: u_ξξ + u_θθ = f, Neumann at R
+  std::vector<double> phi, chi;         ///< [k][i]: φ_k(ξ_i), χ_k(ξ_i)
+  std::vector<double> denom;            ///< [k]: χ_k(ξ_1) + a²Δξ²/2
+  fftw_plan ring_r2c = nullptr, field_c2r = nullptr, field_r2c = nullptr;
+  ~Impl() {
+    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    for (fftw_plan q : {ring_r2c, field_c2r, field_r2c})
+      if (q) fftw_destroy_plan(q);
+  }
+};
+
+PolarGrid ns_grid(const NsParams& p) {
+  GridRequest req;
+  req.outer_radius = p.outer_over_a;
+  req.n_theta = p.n_theta;
+  req.n_r = p.n_r;
+  req.spacing = Spacing::geometric;
+  return make_grid(req, p.a);
+}
+
+NsOperator::NsOperator(const NsParams& p, double dt) : p_(p), dt_(dt) {
+  auto finite = [](double x) { return std::isfinite(x); };
+  if (!(p.a > 0.0) || !(p.nu > 0.0) || !(p.U >= 0.0) || !finite(p.a) || !finite(p.nu) || !finite(p.U) ||
+      !finite(p.omega) || !(p.outer_over_a > 1.0) || !finite(p.outer_over_a))
+    throw std::invalid_argument("NsOperator: need a > 0, nu > 0, U >= 0, finite omega and R/a > 1");
+  if (p.n_theta < 8 || p.n_theta % 2 != 0)
+    throw std::invalid_argument("NsOperator: n_theta must be even and >= 8, got " +
+                                std::to_string(p.n_theta));
+  if (!(dt > 0.0) || !finite(dt)) throw std::invalid_argument("NsOperator: dt must be positive and finite");
+  grid_ = ns_grid(p);
+  h_ = grid_.d_xi(0);
+  const int nr = grid_.n_r, n = grid_.n_theta, m = n / 2 + 1;
+  impl_ = std::make_unique<Impl>();
+  std::vector<double> sigma(nr), zero(nr, 0.0);
+  for (int i = 0; i < nr; ++i) sigma[i] = 2.0 * grid_.r[i] * grid_.r[i] / (p.nu * dt);
+  impl_->helmholtz = std::make_unique<ModeSolver>(grid_, sigma, OuterBoundary::dirichlet, p.threads);
+  impl_->poisson = std::make_unique<ModeSolver>(grid_, zero, OuterBoundary::neumann, p.threads);
+  {
+    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    fftw_plan_with_nthreads(std::max(1, p.threads));
+    std::vector<double> real(size_t(nr) * n);
+    std::vector<cplx> spec(size_t(nr) * m);
+    auto* s = reinterpret_cast<fftw_complex*>(spec.data());
+    const unsigned flags = FFTW_ESTIMATE | FFTW_UNALIGNED;
+    impl_->ring_r2c = fftw_plan_dft_r2c_1d(n, real.data(), s, flags);
+    impl_->field_c2r = fftw_plan_many_dft_c2r(1, &n, nr, s, nullptr, 1, m, real.data(), nullptr, 1, n, flags);
+    impl_->field_r2c = fftw_plan_many_dft_r2c(1, &n, nr, real.data(), nullptr, 1, n, s, nullptr, 1, m, flags);
+    if (!impl_->ring_r2c || !impl_->field_c2r || !impl_->field_r2c)
+      throw std::runtime_error("NsOperator: FFTW planning failed");
+  }
+  // φ_k: Helmholtz response to unit wall vorticity in mode k. χ_k: ψ of −J φ_k (ψ = 0 at the wall,
+  // ψ_ξ = 0 at R), all modes in one Poisson solve of Σ_k −J φ_k cos kθ, split again by one FFT per ring.
+  impl_->phi.resize(size_t(m) * nr);
+  std::vector<double> f(size_t(nr) * n, 0.0);
+  for (int k = 0; k < m; ++k) {
+    const std::vector<double> phi = impl_->helmholtz->influence(k);
+    std::copy(phi.begin(), phi.end(), impl_->phi.begin() + size_t(k) * nr);
+    for (int i = 0; i < nr; ++i) {
+      const double c = -grid_.r[i] * grid_.r[i] * phi[i];
+      for (int j = 0; j < n; ++j) f[size_t(i) * n + j] += c * std::cos(double(k) * grid_.theta[j]);
+    }
+  }
+  std::vector<double> chi_field =
+      impl_->poisson->solve(f, std::vector<double>(n, 0.0), std::vector<double>(n, 0.0));
+  std::vector<cplx> spec(size_t(nr) * m);
+  fftw_execute_dft_r2c(impl_->field_r2c, chi_field.data(), reinterpret_cast<fftw_complex*>(spec.data()));
+  impl_->chi.resize(size_t(m) * nr);
+  impl_->denom.resize(m);
+  for (int k = 0; k < m; ++k) {
+    const double norm = (k == 0 || 2 * k == n) ? double(n) : 0.5 * n;
+    for (int i = 0; i < nr; ++i) impl_->chi[size_t(k) * nr + i] = spec[size_t(i) * m + k].real() / norm;
+    impl_->denom[k] = impl_->chi[size_t(k) * nr + 1] + 0.5 * p.a * p.a * h_ * h_;
+    if (!(std::fabs(impl_->denom[k]) > 0.0))
+      throw std::runtime_error("NsOperator: the wall closure of mode " + std::to_string(k) + " is singular");
+  }
+}
+
+NsOperator::~NsOperator() = default;
+
+std::vector<double> NsOperator::advection(const std::vector<double>& psi, const std::vector<double>& zeta,
+                                          double* rate) const {
+  const int nr = grid_.n_r, n = grid_.n_theta;
+  std::vector<double> N(size_t(nr) * n, 0.0);
+  if (rate) *rate = std::fabs(p_.omega) / grid_.d_theta;  // the wall ring: ψ_θ = 0, ψ_ξ = −a²ω
+  if (p_.stokes) return N;
+  const double scale = 1.0 / (12.0 * grid_.d_theta * h_);
+  double rate_half[2] = {0.0, 0.0};
+  const int i_mid = 1 + (nr - 2) / 2;
+  // Arakawa (1966) J = (J++ + J+× + J×+)/3 for ∂(ψ,ζ)/∂(θ,ξ) = ψ_θ ζ_ξ − ψ_ξ ζ_θ; x = θ (j), y = ξ (i).
+  parallel_over_rings(1, nr - 1, p_.threads, grid_.nodes(), [&](int ib, int ie) {
+    const double cx = 1.0 / (2.0 * grid_.d_theta * h_), cy = 1.0 / (2.0 * h_ * grid_.d_theta);
+    for (int i = ib; i < ie; ++i) {
+      double rmax = 0.0;
+      const double *pm = &psi[size_t(i - 1) * n], *p0 = &psi[size_t(i) * n], *pp = &psi[size_t(i + 1) * n];
+      const double *zm = &zeta[size_t(i - 1) * n], *z0 = &zeta[size_t(i) * n], *zp = &zeta[size_t(i + 1) * n];
+      for (int j = 0; j < n; ++j) {
+        const int e = j + 1 == n ? 0 : j + 1, w = j == 0 ? n - 1 : j - 1;
+        const double j1 = (p0[e] - p0[w]) * (zp[j] - zm[j]) - (pp[j] - pm[j]) * (z0[e] - z0[w]);
+        const double j2 = p0[e] * (zp[e] - zm[e]) - p0[w] * (zp[w] - zm[w]) - pp[j] * (zp[e] - zp[w]) +
+                          pm[j] * (zm[e] - zm[w]);
+        const double j3 = zp[j] * (pp[e] - pp[w]) - zm[j] * (pm[e] - pm[w]) - z0[e] * (pp[e] - pm[e]) +
+                          z0[w] * (pp[w] - pm[w]);
+        N[size_t(i) * n + j] = (j1 + j2 + j3) * scale;
+        rmax = std::max(rmax, std::fabs(p0[e] - p0[w]) * cx + std::fabs(pp[j] - pm[j]) * cy);
+      }
+      rate_half[ib >= i_mid ? 1 : 0] =
+          std::max(rate_half[ib >= i_mid ? 1 : 0], rmax / (grid_.r[i] * grid_.r[i]));
+    }
+  });
+  if (rate) *rate = std::max({*rate, rate_half[0], rate_half[1]});
+  return N;
+}
+
+std::vector<double> NsOperator::stream_function(const std::vector<double>& zeta, double Gamma_R) const {
+  const int nr = grid_.n_r, n = grid_.n_theta;
+  std::vector<double> f(size_t(nr) * n);
+  for (int i = 0; i < nr; ++i)
+    for (int j = 0; j < n; ++j) f[size_t(i) * n + j] = -grid_.r[i] * grid_.r[i] * zeta[size_t(i) * n + j];
+  const double R = grid_.outer_radius();
+  std::vector<double> g_outer(n);
+  for (int j = 0; j < n; ++j) g_outer[j] = p_.U * R * std::sin(grid_.theta[j]) - Gamma_R / (2.0 * M_PI);
+  return impl_->poisson->solve(f, std::vector<double>(n, 0.0), g_outer);
+}
+
+void NsOperator::close_wall(std::vector<double>& psi, std::vector<double>& zeta, double Gamma_R) const {
+  const int nr = grid_.n_r, n = grid_.n_theta, m = n / 2 + 1;
+  psi = stream_function(zeta, Gamma_R);
+  // Residual of Thom's wall row per mode, then the correction δ_k along (φ_k, χ_k) that removes it.
+  std::vector<cplx> Psi1(m), W0(m), delta(m);
+  std::vector<double> ring(psi.begin() + n, psi.begin() + 2 * n);
+  fftw_execute_dft_r2c(impl_->ring_r2c, ring.data(), reinterpret_cast<fftw_complex*>(Psi1.data()));
+  ring.assign(zeta.begin(), zeta.begin() + n);
+  fftw_execute_dft_r2c(impl_->ring_r2c, ring.data(), reinterpret_cast<fftw_complex*>(W0.data()));
+  const double c = 0.5 * p_.a * p_.a * h_ * h_;
+  for (int k = 0; k < m; ++k) {
+    const double target = k == 0 ? -double(n) * h_ * p_.a * p_.a * p_.omega : 0.0;
+    delta[k] = (target - Psi1[k] - c * W0[k]) / impl_->denom[k];
+  }
+  std::vector<cplx> spec(size_t(nr) * m);
+  std::vector<double> corr(size_t(nr) * n);
+  const double inv_n = 1.0 / n;
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::vector<double>& basis = pass == 0 ? impl_->phi : impl_->chi;
+    std::vector<double>& field = pass == 0 ? zeta : psi;
+    for (int i = 0; i < nr; ++i)
+      for (int k = 0; k < m; ++k) spec[size_t(i) * m + k] = delta[k] * basis[size_t(k) * nr + i];
+    fftw_execute_dft_c2r(impl_->field_c2r, reinterpret_cast<fftw_complex*>(spec.data()), corr.data());
+    for (size_t q = 0; q < corr.size(); ++q) field[q] += corr[q] * inv_n;
+  }
+  std::fill(psi.begin(), psi.begin() + n, 0.0);  // ψ = 0 on the wall exactly (χ_k(0) = 0: round-off only)
+}
+
+double cfl_number(const PolarGrid& g, const std::vector<double>& psi, double dt) {
+  const int nr = g.n_r, n = g.n_theta;
+  const double h = g.d_xi(0);
+  double rate = 0.0;
+  for (int i = 0; i < nr; ++i) {
+    const double J = g.r[i] * g.r[i];
+    for (int j = 0; j < n; ++j) {
+      const int e = j + 1 == n ? 0 : j + 1, w = j == 0 ? n - 1 : j - 1;
+      const double p_theta = (psi[size_t(i) * n + e] - psi[size_t(i) * n + w]) / (2.0 * g.d_theta);
+      double p_xi;
+      if (i == 0)
+        p_xi = (-3.0 * psi[j] + 4.0 * psi[size_t(n) + j] - psi[size_t(2 * n) + j]) / (2.0 * h);
+      else if (i == nr - 1)
+        p_xi =
+            (3.0 * psi[size_t(i) * n + j] - 4.0 * psi[size_t(i - 1) * n + j] + psi[size_t(i - 2) * n + j]) /
+            (2.0 * h);
+      else
+        p_xi = (psi[size_t(i + 1) * n + j] - psi[size_t(i - 1) * n + j]) / (2.0 * h);
+      rate = std::max(rate, std::fabs(p_theta) / (J * h) + std::fabs(p_xi) / (J * g.d_theta));
+    }
+  }
+  return rate * dt;
+}
+
+double cfl_time_step(const NsParams& p, const PolarGrid& g, const std::vector<double>& psi, double cfl) {
+  const double floor_rate = (2.0 * p.U + std::fabs(p.a * p.omega)) / (p.a * g.d_theta);
+  const double rate = std::max(cfl_number(g, psi, 1.0), floor_rate);
+  if (!(rate > 0.0)) return 0.1 * p.a * p.a / p.nu;  // nothing moves: the diffusion time of a cell
+  return cfl / rate;
+}
+
+NsState impulsive_start(const NsParams& p, const PolarGrid& g) {
+  NsState s;
+  const int nr = g.n_r, n = g.n_theta;
+  s.psi.resize(size_t(nr) * n);
+  s.zeta.assign(size_t(nr) * n, 0.0);
+  for (int i = 0; i < nr; ++i)
+    for (int j = 0; j < n; ++j)
+      s.psi[size_t(i) * n + j] = p.U * (g.r[i] - p.a * p.a / g.r[i]) * std::sin(g.theta[j]);
+  return s;
+}
+
+void advance(const NsOperator& op, const NsState& old, NsState& next) {
+  const PolarGrid& g = op.grid();
+  const NsParams& p = op.params();
+  const int nr = g.n_r, n = g.n_theta, iN = nr - 1;
+  const double dt = op.dt(), h = op.d_xi(), R = g.outer_radius();
+  const size_t size = size_t(nr) * n;
+  if (old.psi.size() != size || old.zeta.size() != size)
+    throw std::invalid_argument("advance: the state does not match the operator's grid");
+  double rate = 0.0;
+  std::vector<double> N = op.advection(old.psi, old.zeta, &rate);
+  const double cfl = p.stokes ? cfl_number(g, old.psi, dt) : rate * dt;
+  if (!(cfl <= kNsCflLimit))
+    throw std::runtime_error("advance: at t = " + fmt_time(old.t) + " the CFL number is " +
+                             std::to_string(cfl) + " > " + std::to_string(kNsCflLimit) + ": the time step " +
+                             fmt_time(dt) + " is above the stability limit (reduce dt or the CFL number)");
+  // AB2 weights for a step dt after a step dt_prev (Euler on the first step).
+  const bool first = old.N_prev.empty() || !(old.dt_prev > 0.0);
+  const double r = first ? 0.0 : dt / old.dt_prev, w1 = 1.0 + 0.5 * r, w0 = -0.5 * r;
+
+  // Circulation on r = R: dΓ_R/dt = Σ_j (−ψ_θ ζ + ν ζ_ξ)|_R Δθ.
+  double flux = 0.0;
+  for (int j = 0; j < n; ++j) {
+    const int e = j + 1 == n ? 0 : j + 1, w = j == 0 ? n - 1 : j - 1;
+    const double* z = &old.zeta[size_t(iN) * n];
+    const double p_theta = (old.psi[size_t(iN) * n + e] - old.psi[size_t(iN) * n + w]) / (2.0 * g.d_theta);
+    const double z_xi = (3.0 * z[j] - 4.0 * z[j - n] + z[j - 2 * n]) / (2.0 * h);
+    flux += (-p_theta * z[j] + p.nu * z_xi) * g.d_theta;
+  }
+  next.Gamma_R = old.Gamma_R + dt * (w1 * flux + w0 * old.Gamma_flux_prev);
+
+  // Outer ring: ζ = 0 on inflow; on outflow ζ_t + (ψ_θ/J) ζ_ξ = 0, explicit upwind.
+  std::vector<double> g_outer(n, 0.0);
+  if (p.outer_vorticity == NsOuterVorticity::inflow_outflow)
+    for (int j = 0; j < n; ++j) {
+      const int e = j + 1 == n ? 0 : j + 1, w = j == 0 ? n - 1 : j - 1;
+      const double u = (old.psi[size_t(iN) * n + e] - old.psi[size_t(iN) * n + w]) / (2.0 * g.d_theta);
+      const double zN = old.zeta[size_t(iN) * n + j], zM = old.zeta[size_t(iN - 1) * n + j];
+      if (u > 0.0) g_outer[j] = zN - dt * u / (R * R) * (zN - zM) / h;
+    }
+
+  // Crank–Nicolson right-hand side on rings 1…n_r−2.
+  std::vector<double> f(size, 0.0);
+  const double inv_h2 = 1.0 / (h * h), inv_t2 = 1.0 / (g.d_theta * g.d_theta);
+  for (int i = 1; i < iN; ++i) {
+    const double sigma = 2.0 * g.r[i] * g.r[i] / (p.nu * dt);
+    const double* z = &old.zeta[size_t(i) * n];
+    for (int j = 0; j < n; ++j) {
+      const int e = j + 1 == n ? 0 : j + 1, w = j == 0 ? n - 1 : j - 1;
+      const double lap = (z[j + n] - 2.0 * z[j] + z[j - n]) * inv_h2 + (z[e] - 2.0 * z[j] + z[w]) * inv_t2;
+      double adv = w1 * N[size_t(i) * n + j];
+      if (!first) adv += w0 * old.N_prev[size_t(i) * n + j];
+      f[size_t(i) * n + j] = -sigma * z[j] - lap + 2.0 / p.nu * adv;
+    }
+  }
+  auto non_finite = [&](const std::string& where) {
+    return std::runtime_error("advance: the flow turned non-finite at t = " + fmt_time(old.t + dt) + " (" +
+                              where + "); likely cause: the time step " + fmt_time(dt) +
+                              " is above the stability limit, or the grid is too coarse for Re");
+  };
+  try {
+    next.zeta = op.impl_->helmholtz->solve(f, std::vector<double>(n, 0.0), g_outer);
+  } catch (const std::invalid_argument&) {  // ModeSolver refuses non-finite data
+    throw non_finite("vorticity right-hand side");
+  }
+  if (!std::isfinite(next.Gamma_R)) throw non_finite("circulation at R");
+  op.close_wall(next.psi, next.zeta, next.Gamma_R);
+  for (size_t q = 0; q < size; ++q)
+    if (!std::isfinite(next.zeta[q]) || !std::isfinite(next.psi[q]))
+      throw non_finite("ring " + std::to_string(q / n));
+  next.t = old.t + dt;
+  next.N_prev = std::move(N);
+  next.Gamma_flux_prev = flux;
+  next.dt_prev = dt;
+}
+
+void add_vortex_blob(const PolarGrid& g, NsState& s, double x_b, double y_b, double radius, double Gamma_b) {
+  const int n = g.n_theta;
+  for (int i = 1; i < g.n_r - 1; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double dx = g.r[i] * std::cos(g.theta[j]) - x_b, dy = g.r[i] * std::sin(g.theta[j]) - y_b;
+      s.zeta[size_t(i) * n + j] +=
+          Gamma_b / (M_PI * radius * radius) * std::exp(-(dx * dx + dy * dy) / (radius * radius));
+    }
+}
+
+void ns_velocity(const PolarGrid& g, const std::vector<double>& psi, std::vector<double>& u_r,
+                 std::vector<double>& u_theta) {
+  const int nr = g.n_r, n = g.n_theta;
+  const double h = g.d_xi(0);
+  u_r.assign(size_t(nr) * n, 0.0);
+  u_theta.assign(size_t(nr) * n, 0.0);
+  for (int i = 0; i < nr; ++i)
+    for (int j = 0; j < n; ++j) {
+      const int e = j + 1 == n ? 0 : j + 1, w = j == 0 ? n - 1 : j - 1;
+      const size_t q = size_t(i) * n + j;
+      double p_xi;
+      if (i == 0)
+        p_xi = (-3.0 * psi[q] + 4.0 * psi[q + n] - psi[q + 2 * n]) / (2.0 * h);
+      else if (i == nr - 1)
+        p_xi = (3.0 * psi[q] - 4.0 * psi[q - n] + psi[q - 2 * n]) / (2.0 * h);
+      else
+        p_xi = (psi[q + n] - psi[q - n]) / (2.0 * h);
+      u_r[q] = (psi[size_t(i) * n + e] - psi[size_t(i) * n + w]) / (2.0 * g.d_theta) / g.r[i];
+      u_theta[q] = -p_xi / g.r[i];
+    }
+}
+
+}  // namespace magnus

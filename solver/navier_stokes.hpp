@@ -1,0 +1,133 @@
+#pragma once
+// 2D incompressible laminar Navier–Stokes past the spinning cylinder (DESIGN §8), vorticity–streamfunction
+// on the log-polar grid ξ = ln(r/a) (geometric spacing, uniform Δξ), J = r²:
+//     ψ_ξξ + ψ_θθ = −J ζ,     J ζ_t + ψ_θ ζ_ξ − ψ_ξ ζ_θ = ν (ζ_ξξ + ζ_θθ),     u_r = ψ_θ/r, u_θ = −ψ_ξ/r.
+//
+// Time step (AB2/CN): the advection N = ψ_θ ζ_ξ − ψ_ξ ζ_θ is Arakawa's Jacobian (energy and enstrophy
+// conserving) extrapolated by Adams–Bashforth 2; diffusion is Crank–Nicolson, so per step
+//     ζ^{n+1}_ξξ + ζ^{n+1}_θθ − σ_i ζ^{n+1} = −σ_i ζ^n − Lζ^n + (2/ν)·N^{n+1/2},    σ_i = 2 J_i/(ν Δt),
+// one ModeSolver (Helmholtz shift per ring), then the Poisson solve for ψ^{n+1} (a second ModeSolver).
+//
+// Wall (ring 0), no slip: ψ = 0 (Dirichlet) and ψ_ξ = −a²ω. The second condition is imposed through the
+// Poisson equation on the wall ring with the centred derivative on a ghost ring ψ_{−1} = ψ_1 + 2Δξ a²ω:
+//     (ψ_1 − 2ψ_0 + ψ_{−1})/Δξ² + (ψ_0)_θθ = −a² ζ_w   ⇔   ψ_1 + (a²Δξ²/2)·ζ_w = −Δξ a²ω        (Thom).
+// ζ_w^{n+1} is the unknown that makes it hold at t^{n+1}: per Fourier mode k, ζ^{n+1} = ζ* + ζ̂_w,k φ_k and
+// ψ^{n+1} = ψ* + ζ̂_w,k χ_k (φ_k: Helmholtz response to unit wall vorticity, χ_k: its ψ), so the closure is
+// one scalar per mode:  ζ̂_w,k = (−Δξ a²ω δ_k0 − ψ̂*_{1,k}) / (χ_k(ξ_1) + a²Δξ²/2).  Exact at every step.
+//
+// Far field at R: ψ_ξ = U R sinθ − Γ_R/(2π) (Neumann: the freestream's tangential velocity, the normal
+// velocity free so the wake's displacement flux can leave), with Γ_R the circulation on r = R, advanced
+// (AB2) by the exact balance dΓ_R/dt = ∮ (−u_r ζ + ν ∂ζ/∂r) R dθ. This is mode 0: the wall and the
+// vorticity inside decide it, nothing imposes it. Vorticity at R: ζ = 0 where u_r < 0 (inflow); where the
+// wake leaves, the convective condition ζ_t + (u_r/r) ζ_ξ = 0, i.e. ζ_t + (ψ_θ/J) ζ_ξ = 0 (explicit upwind).
+#include <memory>
+#include <vector>
+
+#include "mesh/polar_grid.hpp"
+#include "solver/mode_solver.hpp"
+
+namespace magnus {
+
+/// Vorticity on the outer ring: ζ = 0 on inflow and convected out on outflow (default), or ζ = 0 all round.
+enum class NsOuterVorticity { inflow_outflow, zero };
+
+/// The viscous scene and its grid (SI). Re = U·2a/ν. The case-file keys map onto this.
+struct NsParams {
+  double a = 0.5;               ///< cylinder radius, m
+  double U = 1.0;               ///< freestream speed towards +x, m/s
+  double omega = 0.0;           ///< spin, rad/s, counter-clockwise positive (α = aω/U)
+  double nu = 0.01;             ///< kinematic viscosity, m²/s
+  double outer_over_a = 100.0;  ///< R/a (rounded up to whole square cells when n_r = 0); 100: < 0.5% from ∞
+  int n_theta = 256;            ///< points in θ (even)
+  int n_r = 0;                  ///< rings; 0: square cells Δξ = Δθ
+  double dt = 0.0;              ///< time step, s; 0: from the CFL number
+  double cfl = 0.5;             ///< target CFL number Δt·max(|ψ_θ|/(JΔξ) + |ψ_ξ|/(JΔθ))
+  /// Threads for the advection and the mode solves. 1 by default: measured at Re 100, n_θ = 192 on this
+  /// 2-core machine, 2 threads took 64.5 s against 38.9 s (FFTW's thread pool and per-step thread starts
+  /// cost more than they save on ~27k nodes; at n_θ = 512 the two were level).
+  int threads = 1;
+  bool stokes = false;  ///< drop the advection (unsteady Stokes flow, the creeping limit)
+  NsOuterVorticity outer_vorticity = NsOuterVorticity::inflow_outflow;
+
+  /// Re = U·2a/ν (0 when U = 0).
+  double reynolds() const { return nu > 0.0 ? U * 2.0 * a / nu : 0.0; }
+};
+
+/// The CFL number above which advance() refuses to step (AB2 with centred advection: its stability
+/// region on the imaginary axis is thin; diffusion is implicit and sets no limit).
+constexpr double kNsCflLimit = 0.8;
+
+/// The state of the AB2/CN scheme at time t: fields (n_r, n_θ) row-major, ring 0 = wall.
+struct NsState {
+  std::vector<double> psi;       ///< ψ, m²/s
+  std::vector<double> zeta;      ///< ζ = −∇²ψ, 1/s (ring 0: the wall vorticity ζ_w)
+  double t = 0.0;                ///< time, s
+  double Gamma_R = 0.0;          ///< circulation on r = R, m²/s
+  std::vector<double> N_prev;    ///< advection N^{n−1} (empty: first step, AB2 starts with Euler)
+  double Gamma_flux_prev = 0.0;  ///< dΓ_R/dt at t^{n−1}, m²/s²
+  double dt_prev = 0.0;          ///< Δt of the previous step, s
+};
+
+/// Discrete operators for one (params, Δt): the grid, the Helmholtz and Poisson mode solvers and the
+/// wall-closure influence data. Immutable; a new Δt = a new operator (factoring costs ~ a few steps).
+class NsOperator {
+ public:
+  /// Throws std::invalid_argument on ν ≤ 0, a ≤ 0, U < 0, odd or small n_θ, dt ≤ 0 or non-finite values.
+  NsOperator(const NsParams& p, double dt);
+  ~NsOperator();
+  NsOperator(const NsOperator&) = delete;
+  NsOperator& operator=(const NsOperator&) = delete;
+
+  const NsParams& params() const { return p_; }
+  const PolarGrid& grid() const { return grid_; }
+  double dt() const { return dt_; }
+  double d_xi() const { return h_; }
+
+  /// Advection N = ψ_θ ζ_ξ − ψ_ξ ζ_θ by Arakawa's Jacobian on rings 1…n_r−2 (0 on rings 0, n_r−1), m²/s².
+  /// rate (optional): max over those rings of |ψ_θ|/(JΔξ) + |ψ_ξ|/(JΔθ) (central), 1/s: CFL = rate·Δt.
+  std::vector<double> advection(const std::vector<double>& psi, const std::vector<double>& zeta,
+                                double* rate = nullptr) const;
+  /// ψ from ζ with the far-field data (Neumann ψ_ξ = U R sinθ − Γ_R/2π) and ψ = 0 on the wall, m²/s.
+  std::vector<double> stream_function(const std::vector<double>& zeta, double Gamma_R) const;
+  /// The closure: ζ_w (and ψ) such that ψ = 0 and Thom's ψ_ξ = −a²ω hold on the wall; zeta's rings
+  /// 1…n_r−1 are kept, its wall ring and psi are overwritten.
+  void close_wall(std::vector<double>& psi, std::vector<double>& zeta, double Gamma_R) const;
+
+  struct Impl;
+
+ private:
+  NsParams p_;
+  PolarGrid grid_;
+  double dt_, h_;
+  std::unique_ptr<Impl> impl_;
+  friend void advance(const NsOperator&, const NsState&, NsState&);
+};
+
+/// The grid of the parameters: geometric spacing, R rounded up to square cells when n_r = 0.
+PolarGrid ns_grid(const NsParams& p);
+
+/// One AB2/CN step of op.dt() from old to next (next may not alias old). Throws std::runtime_error when the
+/// CFL number of old exceeds kNsCflLimit or the new fields are not finite (message: time and likely cause).
+void advance(const NsOperator& op, const NsState& old, NsState& next);
+
+/// CFL number Δt·max_ij(|ψ_θ|/(J Δξ) + |ψ_ξ|/(J Δθ)) of a state (central differences), dimensionless.
+double cfl_number(const PolarGrid& g, const std::vector<double>& psi, double dt);
+
+/// Δt (s) that gives the CFL number `cfl` for the state, using at least the speed |U| + |aω| + U (the
+/// impulsive start's 2U at the shoulders plus the wall speed).
+double cfl_time_step(const NsParams& p, const PolarGrid& g, const std::vector<double>& psi, double cfl);
+
+/// Impulsive start ("from rest" in the body frame): the irrotational flow without circulation,
+/// ψ = U (r − a²/r) sinθ, ζ = 0, Γ_R = 0; the first step creates the wall's vortex sheet.
+NsState impulsive_start(const NsParams& p, const PolarGrid& g);
+
+/// Add a Gaussian vortex ζ += Γ_b/(πs²)·exp(−|x − x_b|²/s²) at (x_b, y_b) (m) of circulation Γ_b (m²/s):
+/// a small one breaks the mirror symmetry of a non-spinning start so that shedding begins. ψ follows at
+/// the next step's solve.
+void add_vortex_blob(const PolarGrid& g, NsState& s, double x_b, double y_b, double radius, double Gamma_b);
+
+/// Velocity components on the grid: u_r = ψ_θ/r, u_θ = −ψ_ξ/r (central; one-sided at the wall and R), m/s.
+void ns_velocity(const PolarGrid& g, const std::vector<double>& psi, std::vector<double>& u_r,
+                 std::vector<double>& u_theta);
+
+}  // namespace magnus

@@ -1,0 +1,135 @@
+// Forces of the viscous flow: the pure-rotation torque, the surface pressure's θ-integral, separation
+// points, and the wall formulas against a control-volume momentum balance on a ring of a computed flow.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "postproc/unsteady.hpp"
+#include "support.hpp"
+
+using namespace magnus;
+
+TEST_CASE("[ns] forces: pure rotation has torque -4 pi mu a^2 omega, spin power 4 pi mu a^2 omega^2",
+          "[ns]") {
+  NsParams p;
+  p.a = 0.1, p.U = 0.0, p.omega = 100.0, p.nu = 1.5e-5, p.outer_over_a = 20.0, p.n_theta = 64;
+  const double rho = 1.2, mu = rho * p.nu;
+  const PolarGrid g = ns_grid(p);
+  NsState s;
+  s.psi.assign(g.nodes(), 0.0), s.zeta.assign(g.nodes(), 0.0);
+  const ViscousForces f = viscous_forces(g, p, rho, s);
+  CHECK(f.M == Approx(-4.0 * M_PI * mu * p.a * p.a * p.omega).epsilon(1e-12));
+  CHECK(f.P_spin == Approx(4.0 * M_PI * mu * p.a * p.a * p.omega * p.omega).epsilon(1e-12));
+  CHECK(std::fabs(f.F_x) < 1e-15);
+  CHECK(std::fabs(f.F_y) < 1e-15);
+  CHECK_FALSE(f.C_L.has_value());  // U = 0: coefficients undefined
+}
+
+TEST_CASE("[ns] forces: wall pressure is the theta-integral of mu zeta_xi; separation where tau_w = 0",
+          "[ns]") {
+  NsParams p;
+  p.a = 0.5, p.U = 1.0, p.omega = 0.0, p.nu = 0.02, p.outer_over_a = 10.0, p.n_theta = 64;
+  const double rho = 1.0, mu = rho * p.nu;
+  const PolarGrid g = ns_grid(p);
+  NsState s;
+  s.psi.assign(g.nodes(), 0.0), s.zeta.assign(g.nodes(), 0.0);
+  // ζ = ξ·cos3θ + (cosθ − 0.5): ζ_ξ|_0 = cos3θ exactly (one-sided, linear in ξ), τ_w ∝ cosθ − 0.5.
+  for (int i = 0; i < g.n_r; ++i)
+    for (int j = 0; j < g.n_theta; ++j)
+      s.zeta[size_t(i) * g.n_theta + j] = g.xi[i] * std::cos(3 * g.theta[j]) + std::cos(g.theta[j]) - 0.5;
+  const ViscousSurface surf = viscous_surface(g, p, rho, s);
+  for (int j = 0; j < g.n_theta; ++j)
+    CHECK(surf.pressure[j] == Approx(mu * std::sin(3 * g.theta[j]) / 3).margin(1e-14));
+  const std::vector<double> sep = separation_angles(surf);
+  REQUIRE(sep.size() == 2);
+  CHECK(sep[0] == Approx(M_PI / 3).margin(2e-3));
+  CHECK(sep[1] == Approx(5 * M_PI / 3).margin(2e-3));
+  // F_p = −∮ p n̂ a dθ = 0 for p ∝ sin3θ; the friction part ∮ τ_w θ̂ a dθ of τ_w = μ(cosθ − 0.5): F_y = πμa.
+  const ViscousForces f = viscous_forces(g, p, rho, s);
+  CHECK(std::fabs(f.F_x_pressure) < 1e-15);
+  CHECK(std::fabs(f.F_y_pressure) < 1e-15);
+  CHECK(f.F_y_friction == Approx(M_PI * mu * p.a).epsilon(1e-12));
+  CHECK(std::fabs(f.F_x_friction) < 1e-15);
+}
+
+namespace {
+
+/// Force on the body from the momentum balance of the fluid between the body and ring ic (steady flow):
+/// F = ∮ [(−p + τ_rr − ρu_r²) r̂ + (τ_rθ − ρ u_r u_θ) θ̂] r dθ, the pressure part by parts with
+/// ∂p/∂θ = ρ r [ν ∂ζ/∂r − (u_r ∂u_θ/∂r + (u_θ/r) ∂u_θ/∂θ + u_r u_θ/r)] (θ-momentum on the ring).
+void control_volume_force(const PolarGrid& g, const NsParams& p, double rho, const NsState& s, int ic,
+                          double& F_x, double& F_y) {
+  std::vector<double> u_r, u_t;
+  ns_velocity(g, s.psi, u_r, u_t);
+  const int n = g.n_theta;
+  const double h = g.d_xi(0), r = g.r[ic], mu = rho * p.nu, dth = g.d_theta;
+  F_x = F_y = 0.0;
+  for (int j = 0; j < n; ++j) {
+    const int e = (j + 1) % n, w = (j + n - 1) % n;
+    auto at = [n](int i, int jj) { return size_t(i) * n + jj; };
+    const double ur = u_r[at(ic, j)], ut = u_t[at(ic, j)];
+    const double dur_dr = (u_r[at(ic + 1, j)] - u_r[at(ic - 1, j)]) / (2 * h * r);
+    const double dut_dr = (u_t[at(ic + 1, j)] - u_t[at(ic - 1, j)]) / (2 * h * r);
+    const double dur_dth = (u_r[at(ic, e)] - u_r[at(ic, w)]) / (2 * dth);
+    const double dut_dth = (u_t[at(ic, e)] - u_t[at(ic, w)]) / (2 * dth);
+    const double dz_dr = (s.zeta[at(ic + 1, j)] - s.zeta[at(ic - 1, j)]) / (2 * h * r);
+    const double dp_dth = rho * r * (p.nu * dz_dr - (ur * dut_dr + ut / r * dut_dth + ur * ut / r));
+    const double tau_rr = 2 * mu * dur_dr, tau_rt = mu * (dut_dr - ut / r + dur_dth / r);
+    const double fr = tau_rr - rho * ur * ur, ft = tau_rt - rho * ur * ut;
+    const double c = std::cos(g.theta[j]), sn = std::sin(g.theta[j]);
+    F_x += (dp_dth * sn + fr * c - ft * sn) * r * dth;  // −∮p cosθ dθ = ∮ p_θ sinθ dθ
+    F_y += (-dp_dth * c + fr * sn + ft * c) * r * dth;  // −∮p sinθ dθ = −∮ p_θ cosθ dθ
+  }
+}
+
+}  // namespace
+
+TEST_CASE("[ns] forces: the wall formulas match a control-volume momentum balance (steady Re 10, alpha 0.5)",
+          "[ns]") {
+  std::vector<double> gap;
+  for (int n : {48, 96}) {
+    NsParams p;
+    p.a = 0.5, p.U = 1.0, p.nu = 0.1, p.omega = 0.5 * p.U / p.a, p.outer_over_a = 8.0, p.n_theta = n,
+    p.threads = 1;
+    UnsteadyOptions o;
+    o.t_end = 120.0, o.steady_tol = 1e-5, o.steady_window = 2.0;
+    const UnsteadyResult res = run_unsteady(p, o, impulsive_start(p, ns_grid(p)));
+    REQUIRE(res.ok);
+    REQUIRE(res.steady);
+    const PolarGrid g = ns_grid(p);
+    const ViscousForces f = viscous_forces(g, p, o.rho, res.state);
+    int ic = 0;
+    while (g.r[ic] < 2.0 * p.a) ++ic;
+    double Fx = 0.0, Fy = 0.0;
+    control_volume_force(g, p, o.rho, res.state, ic, Fx, Fy);
+    const double q = 0.5 * o.rho * p.U * p.U * 2 * p.a;
+    INFO("n_theta " << n << ": wall C_D " << f.F_x / q << " C_L " << f.F_y / q << "; ring C_D " << Fx / q
+                    << " C_L " << Fy / q);
+    CHECK(f.F_y < 0.0);  // counter-clockwise spin: lift towards −y
+    CHECK(Fx == Approx(f.F_x).epsilon(0.012));
+    CHECK(Fy == Approx(f.F_y).epsilon(0.025));
+    gap.push_back(std::hypot(Fx - f.F_x, Fy - f.F_y) / q);
+  }
+  INFO("gaps " << gap[0] << " " << gap[1]);
+  CHECK(magnus::test::observed_order(gap[0], gap[1]) > 1.5);
+}
+
+TEST_CASE("[ns] driver: an asked time step above the stability limit is clamped with a message", "[ns]") {
+  NsParams p;
+  p.a = 0.5, p.U = 1.0, p.nu = 0.1, p.outer_over_a = 8.0, p.n_theta = 32, p.threads = 1;
+  const PolarGrid g = ns_grid(p);
+  const NsState s = impulsive_start(p, g);
+  std::string note;
+  p.dt = 1e-4;
+  CHECK(choose_time_step(p, g, s, &note) == 1e-4);
+  CHECK(note.empty());
+  p.dt = 1.0;
+  const double dt = choose_time_step(p, g, s, &note);
+  CHECK(cfl_number(g, s.psi, dt) <= p.cfl + 1e-12);
+  CHECK(note.find("above the stability limit") != std::string::npos);
+  UnsteadyOptions o;
+  o.t_end = 20 * dt;
+  const UnsteadyResult r = run_unsteady(p, o, s);
+  CHECK(r.ok);
+  CHECK(r.message.find("above the stability limit") != std::string::npos);
+  CHECK(r.history.size() == 21);
+}

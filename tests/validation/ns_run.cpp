@@ -1,0 +1,54 @@
+// A small driver of the viscous run, for timing and memory (/usr/bin/time -v) and for the validation
+// figures: ns_run Re alpha n_theta R_over_a t_end [cfl] [quiet]. D = 1 m, U = 1 m/s, ρ = 1 kg/m³.
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "postproc/unsteady.hpp"
+
+int main(int argc, char** argv) {
+  using namespace magnus;
+  if (argc < 6) {
+    std::fprintf(stderr, "usage: ns_run Re alpha n_theta R_over_a t_end [cfl] [quiet]\n");
+    return 2;
+  }
+  NsParams p;
+  p.a = 0.5;
+  p.U = 1.0;
+  p.nu = p.U * 2.0 * p.a / std::atof(argv[1]);
+  p.omega = std::atof(argv[2]) * p.U / p.a;
+  p.n_theta = std::atoi(argv[3]);
+  p.outer_over_a = std::atof(argv[4]);
+  if (argc > 6) p.cfl = std::atof(argv[6]);
+  if (const char* t = std::getenv("NS_THREADS")) p.threads = std::atoi(t);
+  const bool quiet = argc > 7;
+  UnsteadyOptions o;
+  o.t_end = std::atof(argv[5]);
+  double next_print = 0.0;
+  o.on_step = [&](const NsState& s, const ViscousForces& f) {
+    if (quiet || s.t < next_print) return;
+    next_print += 5.0;
+    std::printf("t = %7.2f  C_L = %9.5f  C_D = %8.5f  C_M = %9.5f\n", s.t, *f.C_L, *f.C_D, *f.C_M);
+    std::fflush(stdout);
+  };
+  const PolarGrid g = ns_grid(p);
+  const UnsteadyResult r = run_unsteady(p, o, impulsive_start(p, g));
+  std::printf("grid %d x %d, R/a = %.2f, dt = %.5g, steps %ld, wall %.2f s (%.3f ms/step)\n", g.n_r,
+              g.n_theta, g.outer_radius() / p.a, r.dt, r.steps, r.wall_seconds,
+              1e3 * r.wall_seconds / double(r.steps));
+  std::printf("%s; t = %.2f\n", r.message.c_str(), r.state.t);
+  std::printf("C_L mean %.5f  amp %.5f  C_D mean %.5f  amp %.5f  C_M mean %.5f  St %.5f  (%s)\n", r.C_L_mean,
+              r.C_L_amplitude, r.C_D_mean, r.C_D_amplitude, r.C_M_mean, r.St,
+              r.steady     ? "steady"
+              : r.periodic ? "periodic"
+                           : "neither");
+  if (r.steady) std::printf("recirculation length %.4f D\n", recirculation_length(g, r.state));
+  if (const char* path = std::getenv("NS_HISTORY")) {  // t, C_L, C_D, C_M per step
+    if (FILE* f = std::fopen(path, "w")) {
+      for (const ForceSample& h : r.history)
+        std::fprintf(f, "%.6f %.6f %.6f %.6f\n", h.t, h.C_L, h.C_D, h.C_M);
+      std::fclose(f);
+    }
+  }
+  return r.ok ? 0 : 1;
+}

@@ -1,0 +1,190 @@
+// The viscous model against published 2D results (label `validation`, minutes: ctest -L validation or
+// magnus_tests "[validation]"). D = 1 m, U = 1 m/s, ρ = 1 kg/m³; every run starts impulsively from rest.
+// Each case prints its figures (ours, published, difference, grid, wall time).
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <tuple>
+
+#include "postproc/unsteady.hpp"
+
+using namespace magnus;
+
+namespace {
+
+struct Run {
+  UnsteadyResult res;
+  PolarGrid grid;
+  double L_r = 0.0;  ///< recirculation length, D (steady runs)
+};
+
+/// One run (cached: the convergence study reuses the finest grid of the Re 100 check).
+const Run& run(double Re, double alpha, int n_theta, double R_over_a, double t_end) {
+  static std::map<std::tuple<double, double, int, double>, Run> cache;
+  const auto key = std::make_tuple(Re, alpha, n_theta, R_over_a);
+  auto it = cache.find(key);
+  if (it != cache.end()) return it->second;
+  NsParams p;
+  p.a = 0.5, p.U = 1.0, p.nu = 1.0 / Re, p.omega = alpha * p.U / p.a;
+  p.n_theta = n_theta, p.outer_over_a = R_over_a;
+  UnsteadyOptions o;
+  o.t_end = t_end;
+  Run r;
+  r.grid = ns_grid(p);
+  NsState start = impulsive_start(p, r.grid);
+  // A weak vortex (Γ = 0.1% of U·D) off the axis behind the body breaks the mirror symmetry at α = 0.
+  add_vortex_blob(r.grid, start, 1.5, 0.3, 0.25, 1e-3);
+  r.res = run_unsteady(p, o, std::move(start));
+  if (r.res.steady) r.L_r = recirculation_length(r.grid, r.res.state);
+  std::printf(
+      "Re %g alpha %g, %d x %d, R/a %.1f: %s at t = %.1f; C_L %.4f (amp %.4f) C_D %.4f St %.4f; "
+      "L_r %.3f D; %ld steps of %.4g s, wall %.1f s\n",
+      Re, alpha, r.grid.n_r, n_theta, r.grid.outer_radius() / p.a, r.res.message.c_str(), r.res.state.t,
+      r.res.C_L_mean, r.res.C_L_amplitude, r.res.C_D_mean, r.res.St, r.L_r, r.res.steps, r.res.dt,
+      r.res.wall_seconds);
+  std::fflush(stdout);
+  return cache.emplace(key, std::move(r)).first->second;
+}
+
+void compare(const char* what, double ours, double published, const char* source) {
+  std::printf("  %-14s ours %9.4f  published %9.4f (%s)  difference %+6.2f%%\n", what, ours, published,
+              source, 100.0 * (ours - published) / published);
+  std::fflush(stdout);
+}
+
+/// Observed order p from three values on grids h1 > h2 > h3 (any ratios): bisection on
+/// (f1 − f2)/(f2 − f3) = (h1^p − h2^p)/(h2^p − h3^p).
+double observed_order3(double f1, double f2, double f3, double h1, double h2, double h3) {
+  const double q = (f1 - f2) / (f2 - f3);
+  auto g = [&](double p) {
+    return (std::pow(h1, p) - std::pow(h2, p)) / (std::pow(h2, p) - std::pow(h3, p)) - q;
+  };
+  double lo = 0.1, hi = 8.0;
+  if (g(lo) * g(hi) > 0.0) return std::nan("");
+  for (int it = 0; it < 100; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (g(lo) * g(mid) <= 0.0 ? hi : lo) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+constexpr double kR = 100.0;  // default R/a = 50 D
+
+}  // namespace
+
+TEST_CASE("[validation] Re 100, alpha 1: mean lift, drag, Strouhal (Stojkovic, Breuer & Durst 2002)",
+          "[validation]") {
+  const Run& r = run(100, 1.0, 256, kR, 250);
+  REQUIRE(r.res.ok);
+  REQUIRE(r.res.periodic);
+  compare("|C_L| mean", std::fabs(r.res.C_L_mean), 2.504, "SBD 2002");
+  compare("C_D mean", r.res.C_D_mean, 1.108, "SBD 2002");
+  compare("St", r.res.St, 0.1658, "SBD 2002");
+  compare("C_L amplitude", r.res.C_L_amplitude, 0.3616, "SBD 2002");
+  CHECK(r.res.C_L_mean < 0.0);  // CCW spin: lift towards −y
+  CHECK(std::fabs(r.res.C_L_mean) == Approx(2.504).epsilon(0.01));
+  CHECK(r.res.C_D_mean == Approx(1.108).epsilon(0.01));
+  CHECK(r.res.St == Approx(0.1658).epsilon(0.01));
+  CHECK(r.res.C_L_amplitude == Approx(0.3616).epsilon(0.03));
+}
+
+TEST_CASE("[validation] Re 100, alpha 1: grid convergence on three grids, observed order, Richardson",
+          "[validation]") {
+  const Run& r1 = run(100, 1.0, 128, kR, 250);
+  const Run& r2 = run(100, 1.0, 192, kR, 250);
+  const Run& r3 = run(100, 1.0, 256, kR, 250);
+  REQUIRE((r1.res.periodic && r2.res.periodic && r3.res.periodic));
+  const double h1 = 1.0 / 128, h2 = 1.0 / 192, h3 = 1.0 / 256;
+  struct Q {
+    const char* name;
+    double f1, f2, f3, ref;
+  };
+  for (const Q& q : {Q{"|C_L| mean", -r1.res.C_L_mean, -r2.res.C_L_mean, -r3.res.C_L_mean, 2.504},
+                     Q{"C_D mean", r1.res.C_D_mean, r2.res.C_D_mean, r3.res.C_D_mean, 1.108},
+                     Q{"St", r1.res.St, r2.res.St, r3.res.St, 0.1658}}) {
+    const double p = observed_order3(q.f1, q.f2, q.f3, h1, h2, h3);
+    const double richardson =
+        q.f3 + (q.f3 - q.f2) / (std::pow(h2 / h3, 2.0) - 1.0);  // with the design order 2
+    std::printf(
+        "  %-10s n_theta 128 / 192 / 256: %.5f %.5f %.5f  observed order %.2f  Richardson (p = 2) %.5f"
+        "  (published %.4f, %+.2f%%)\n",
+        q.name, q.f1, q.f2, q.f3, p, richardson, q.ref, 100.0 * (richardson - q.ref) / q.ref);
+    std::fflush(stdout);
+    if (std::string(q.name) != "St") CHECK((p > 1.5 && p < 3.5));  // St barely moves: its order is noise
+  }
+}
+
+TEST_CASE("[validation] Re 100, alpha 1: doubling R changes C_L, C_D, St by < 0.5%", "[validation]") {
+  const Run& a = run(100, 1.0, 128, kR, 400);
+  const Run& b = run(100, 1.0, 128, 2 * kR, 400);
+  REQUIRE((a.res.periodic && b.res.periodic));
+  auto rel = [](double x, double y) { return std::fabs(y - x) / std::fabs(x); };
+  std::printf("  R/a %g -> %g: C_L %+.3f%%, C_D %+.3f%%, St %+.3f%%\n", kR, 2 * kR,
+              100 * rel(a.res.C_L_mean, b.res.C_L_mean), 100 * rel(a.res.C_D_mean, b.res.C_D_mean),
+              100 * rel(a.res.St, b.res.St));
+  CHECK(rel(a.res.C_L_mean, b.res.C_L_mean) < 0.005);
+  CHECK(rel(a.res.C_D_mean, b.res.C_D_mean) < 0.005);
+  CHECK(rel(a.res.St, b.res.St) < 0.005);
+}
+
+TEST_CASE("[validation] steady alpha 0: drag and recirculation length at Re 20 and 40", "[validation]") {
+  const Run& r20 = run(20, 0.0, 192, kR, 300);
+  const Run& r40 = run(40, 0.0, 192, kR, 300);
+  REQUIRE((r20.res.steady && r40.res.steady));
+  compare("C_D Re 20", r20.res.C_D_mean, 2.045, "Dennis & Chang 1970");
+  compare("C_D Re 20", r20.res.C_D_mean, 2.000, "Fornberg 1980");
+  compare("L_r/D Re 20", r20.L_r, 0.93, "Dennis & Chang 1970");
+  compare("C_D Re 40", r40.res.C_D_mean, 1.522, "Dennis & Chang 1970");
+  compare("C_D Re 40", r40.res.C_D_mean, 1.498, "Fornberg 1980");
+  compare("L_r/D Re 40", r40.L_r, 2.25, "2.2-2.35, Dennis & Chang; Fornberg");
+  // Separation: τ_w changes sign at θ_s = ±(π − θ_sep), θ from the rear (+x); D&C: 43.7° (Re 20), 53.8° (Re
+  // 40).
+  auto separation_deg = [](const Run& r) {
+    NsParams q;  // α = 0: τ_w = μ ζ_w, its sign is ζ_w's whatever μ
+    q.omega = 0.0;
+    const std::vector<double> th = separation_angles(viscous_surface(r.grid, q, 1.0, r.res.state));
+    for (double t : th)  // skip the rear stagnation point θ = 0 (τ_w = 0 there by symmetry)
+      if (t > 0.05 && t < M_PI) return 180.0 / M_PI * t;
+    return 0.0;
+  };
+  compare("theta_s Re 20", separation_deg(r20), 43.7, "Dennis & Chang 1970");
+  compare("theta_s Re 40", separation_deg(r40), 53.8, "Dennis & Chang 1970");
+  CHECK(separation_deg(r20) == Approx(43.7).epsilon(0.03));
+  CHECK(separation_deg(r40) == Approx(53.8).epsilon(0.03));
+  // Between the two references (they differ by 2%); the recirculation lengths within their spread.
+  CHECK(r20.res.C_D_mean == Approx(2.0225).epsilon(0.02));
+  CHECK(r40.res.C_D_mean == Approx(1.510).epsilon(0.02));
+  CHECK(r20.L_r == Approx(0.93).epsilon(0.03));
+  CHECK((r40.L_r > 2.2 && r40.L_r < 2.35));
+}
+
+TEST_CASE("[validation] Re 100, alpha 0 to 2: lift, drag, Strouhal (Stojkovic, Breuer & Durst 2002)",
+          "[validation]") {
+  // Two grids per α and their Richardson value (p = 2): the drag's grid error grows with α (the boundary
+  // layer thins on the side moving against the stream): +6%, +1.9% at α = 1 on n_θ = 128, 192.
+  struct Ref {
+    double alpha, C_L, C_D, St;
+  };
+  for (const Ref& ref : {Ref{0.0, 0.0, 1.3371, 0.1650}, Ref{0.5, 1.220, 1.2770, 0.1657},
+                         Ref{1.5, 3.900, 0.8180, 0.1626}, Ref{2.0, 5.48, 0.46, 0.0}}) {
+    const Run& c = run(100, ref.alpha, 128, kR, 300);
+    const Run& f = run(100, ref.alpha, 192, kR, 300);
+    REQUIRE((c.res.ok && f.res.ok));
+    auto richardson = [](double coarse, double fine) { return fine + (fine - coarse) / (2.25 - 1.0); };
+    const double C_L = std::fabs(richardson(c.res.C_L_mean, f.res.C_L_mean));
+    const double C_D = richardson(c.res.C_D_mean, f.res.C_D_mean);
+    std::printf("  alpha %.1f (n_theta 192; Richardson 128/192):\n", ref.alpha);
+    if (ref.alpha > 0) {
+      compare("|C_L| 192", std::fabs(f.res.C_L_mean), ref.C_L, "SBD 2002");
+      compare("|C_L| Rich.", C_L, ref.C_L, "SBD 2002");
+    }
+    compare("C_D 192", f.res.C_D_mean, ref.C_D, "SBD 2002");
+    compare("C_D Rich.", C_D, ref.C_D, "SBD 2002");
+    if (ref.St > 0) compare("St 192", f.res.St, ref.St, "SBD 2002");
+    if (ref.alpha > 0) CHECK(C_L == Approx(ref.C_L).epsilon(0.015));
+    CHECK(C_D == Approx(ref.C_D).epsilon(ref.alpha < 2 ? 0.03 : 0.06));
+    if (ref.St > 0) CHECK(f.res.St == Approx(ref.St).epsilon(0.015));
+    if (ref.alpha == 2.0) CHECK(f.res.steady);  // steady at α = 2
+  }
+}
