@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "io/finite.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/text_format.hpp"
 #include "postproc/forces.hpp"
@@ -48,6 +49,7 @@ std::string num(double v, const char* spec = "{:.6g}") { return fmt::format(fmt:
 }  // namespace
 
 std::string summary_text(const FlowResult& r, const std::string& output_path) {
+  check_finite(r);  // nothing that is not finite is printed
   const Case& c = r.c;
   const PolarGrid& g = r.grid;
   const Forces& f = r.forces;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "io/atomic_file.hpp"
+#include "io/finite.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/schema.hpp"
 #include "io/xdmf.hpp"
@@ -93,6 +94,7 @@ void write_file(const FlowResult& r, H5Writer& w) {
 }  // namespace
 
 void write_result(const FlowResult& r, const std::string& path, int compression) {
+  check_finite(r);  // nothing that is not finite is written
   write_hdf5_atomic(
       path, [&](H5Writer& w) { write_file(r, w); }, {{xdmf_path(path), xdmf_text(r, base_of(path))}},
       compression);

@@ -2,7 +2,6 @@
 
 #include <fmt/core.h>
 
-#include "postproc/finite.hpp"
 #include "postproc/plan.hpp"
 #include "postproc/tolerance.hpp"
 #include "solver/memory.hpp"
@@ -68,7 +67,6 @@ FlowResult run_planned(const RunPlan& plan, int threads, size_t max_bytes) {
         c.grid.tolerance, c.grid.n_theta, to_string(c.grid.spacing), to_string(c.solver.stencil),
         plan.choice.trail, plan.choice_s * 1e3);
   }
-  check_finite(r);  // the last line of defence: nothing not finite is printed or written
   return r;
 }
 

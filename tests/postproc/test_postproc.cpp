@@ -3,7 +3,6 @@
 
 #include "mesh/fd_weights.hpp"
 #include "physics/exact.hpp"
-#include "postproc/finite.hpp"
 #include "postproc/forces.hpp"
 #include "support.hpp"
 
@@ -167,24 +166,6 @@ TEST_CASE("pure rotation (U = 0): zero force, undefined coefficients, no divisio
   REQUIRE(r.forces.circulation_measured == Approx(c.scene.Gamma()).epsilon(1e-10));
   REQUIRE(r.errors.psi_max_rel < 1e-12);  // ln r is exact on any grid
   REQUIRE(r.stagnation.empty());
-}
-
-TEST_CASE("the last line of defence names the first figure or field that is not finite",
-          "[postproc][finite]") {
-  FlowResult r = run_case(make_case(1.0, 16));
-  REQUIRE(first_non_finite(r) == "");
-  REQUIRE_NOTHROW(check_finite(r));
-  FlowResult f = r;
-  f.fields.psi[1 * 16 + 2] = INFINITY;
-  CHECK(first_non_finite(f) == "field psi at (i, j) = (1, 2)");
-  f.forces.cl = NAN;
-  CHECK(first_non_finite(f) == "C_L");
-  CHECK_THROWS_WITH(check_finite(f),
-                    "C_L is not finite (NaN or infinite: the inputs are beyond double precision); "
-                    "nothing was written");
-  FlowResult s = r;
-  s.surface.pressure[3] = -INFINITY;
-  CHECK(first_non_finite(s) == "surface pressure at j = 3");
 }
 
 TEST_CASE("stagnation points: numeric and exact both sorted by θ, for topspin and backspin", "[postproc]") {
