@@ -1,5 +1,5 @@
 #pragma once
-// Forces, torque and separation points of the viscous flow (DESIGN §8), per unit span, from the wall:
+// Forces, torque and separation points of the viscous flow, per unit span, from the wall:
 //   wall shear      τ_w = μ (ζ_w − 2ω)                       (u_r = 0 and u_θ = aω on r = a), Pa
 //   pressure        ∂p/∂θ|_a = μ ∂ζ/∂ξ|_0                    (θ-momentum on a wall moving tangentially,
 //   steadily) force           F = ∮ (−p n̂ + τ_w θ̂) a dθ,  n̂ = (cosθ, sinθ), θ̂ = (−sinθ, cosθ), N/m
@@ -36,7 +36,7 @@ struct ViscousSurface {
 /// The surface values of a state; ρ in kg/m³ (μ = ρν). The pressure is the spectral θ-integral of μ ζ_ξ.
 ViscousSurface viscous_surface(const PolarGrid& g, const NsParams& p, double rho, const NsState& s);
 
-/// Forces, torque and coefficients of a state (DESIGN §8 formulas above).
+/// Forces, torque and coefficients of a state (the formulas above).
 ViscousForces viscous_forces(const PolarGrid& g, const NsParams& p, double rho, const NsState& s);
 
 /// Separation (and reattachment) points: θ in [0, 2π) where τ_w changes sign, linear between nodes, rad.

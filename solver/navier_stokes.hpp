@@ -1,5 +1,5 @@
 #pragma once
-// 2D incompressible laminar Navier–Stokes past the spinning cylinder (DESIGN §8), vorticity–streamfunction
+// 2D incompressible laminar Navier–Stokes past the spinning cylinder, vorticity–streamfunction
 // on the log-polar grid ξ = ln(r/a) (geometric spacing, uniform Δξ), J = r²:
 //     ψ_ξξ + ψ_θθ = −J ζ,     J ζ_t + ψ_θ ζ_ξ − ψ_ξ ζ_θ = ν (ζ_ξξ + ζ_θθ),     u_r = ψ_θ/r, u_θ = −ψ_ξ/r.
 //
