@@ -323,7 +323,7 @@ TEST_CASE("every shipped case runs and meets the expected figures beside it", "[
   }
 }
 
-TEST_CASE("outputs never overwrite inputs, each other or a directory; a directory is not a case file",
+TEST_CASE("outputs never overwrite inputs, each other or a directory, a directory is not a case file",
           "[app][cli]") {
   const std::string dir = test::temp_dir("cli-clobber");
   std::ofstream(dir + "/case.toml") << scene + "[grid]\nn_theta = 16\n";

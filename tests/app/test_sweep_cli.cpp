@@ -31,7 +31,7 @@ std::pair<unsigned long, unsigned long> png_size(const std::string& path) {
 
 }  // namespace
 
-TEST_CASE("magnus sweep: table, CSV, HDF5 and plot; bad ranges give one line and no files",
+TEST_CASE("magnus sweep: table, CSV, HDF5 and plot, bad ranges give one line and no files",
           "[app][sweep][cli]") {
   const std::string dir = test::temp_dir("sweep-cli");
   const std::string case_path = dir + "/case.toml";

@@ -63,7 +63,7 @@ TEST_CASE("numerical keys keep their defaults", "[app][case]") {
   REQUIRE(c.scene.Gamma() == Approx(2 * M_PI * 0.01 * 100));
 }
 
-TEST_CASE("spin_ratio sets ω = αU/a; the model 'given' sets Γ", "[app][case]") {
+TEST_CASE("spin_ratio sets ω = αU/a, the model 'given' sets Γ", "[app][case]") {
   const Case c = parse("[cylinder]\nradius = 0.5\nspin_ratio = 2\n[flow]\nspeed = 4.0\n");
   REQUIRE(c.scene.spin == Approx(16.0));
   const Case g = parse(scene + "[circulation]\nmodel = \"given\"\nvalue = -3.5\n");

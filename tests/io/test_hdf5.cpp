@@ -112,7 +112,7 @@ TEST_CASE("HDF5 round trip: every dataset and attribute of format 2, with units,
   REQUIRE(f.attr_string("/stagnation/theta", "units") == "rad");
 }
 
-TEST_CASE("only the fields asked for are written; U = 0 marks Cp undefined", "[postproc][hdf5]") {
+TEST_CASE("only the fields asked for are written, U = 0 marks Cp undefined", "[postproc][hdf5]") {
   const std::string dir = test::temp_dir("hdf5-sel");
   Case c = test::make_case(0.0, 16);
   c.scene.speed = 0.0;

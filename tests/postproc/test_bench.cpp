@@ -39,7 +39,7 @@ TEST_CASE("bench: every rung of the ladder, errors against exact, observed order
   REQUIRE(bench_table(rows).find("p C_L") != std::string::npos);
 }
 
-TEST_CASE("bench: uniform spacing skips the 9-point stencil; CHOLMOD rungs above the cap are skipped",
+TEST_CASE("bench: uniform spacing skips the 9-point stencil, CHOLMOD rungs above the cap are skipped",
           "[app][bench]") {
   BenchOptions opt;
   opt.ladder = {16, 32};

@@ -119,7 +119,7 @@ TEST_CASE("freestream far field: the error floor is (a/R)² to within a factor 2
   REQUIRE(*e.errors.cl_rel < 0.1 * floor);
 }
 
-TEST_CASE("surface Cp against exact; stagnation points on the body and in the flow", "[postproc]") {
+TEST_CASE("surface Cp against exact, stagnation points on the body and in the flow", "[postproc]") {
   SECTION("α = 1: surface points at 30° and 150°") {
     const FlowResult r = run_case(make_case(1.0, 256));
     REQUIRE(*r.errors.cp_surface_max_abs < 2e-3);

@@ -31,7 +31,7 @@ double naive_lift(const Case& c) {
 
 }  // namespace
 
-TEST_CASE("round-off: the reported lift keeps its accuracy at large α and tiny U; the naive form does not",
+TEST_CASE("round-off: the reported lift keeps its accuracy at large α and tiny U, the naive form does not",
           "[postproc][roundoff]") {
   struct Hard {
     const char* label;

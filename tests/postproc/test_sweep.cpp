@@ -87,7 +87,7 @@ TEST_CASE("a sweep equals one run per point to 1e-12, with two linear solves in 
   }
 }
 
-TEST_CASE("two solves however many points; U = 0 and the wrong circulation model are refused",
+TEST_CASE("two solves however many points, U = 0 and the wrong circulation model are refused",
           "[app][sweep]") {
   const Case c = test::make_case(1.0, 32);
   std::vector<double> many;

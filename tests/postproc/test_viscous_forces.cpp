@@ -24,7 +24,7 @@ TEST_CASE("[ns] forces: pure rotation has torque -4 pi mu a^2 omega, spin power 
   CHECK_FALSE(f.C_L.has_value());  // U = 0: coefficients undefined
 }
 
-TEST_CASE("[ns] forces: wall pressure is the theta-integral of mu zeta_xi; separation where tau_w = 0",
+TEST_CASE("[ns] forces: wall pressure is the theta-integral of mu zeta_xi, separation where tau_w = 0",
           "[ns]") {
   NsParams p;
   p.a = 0.5, p.U = 1.0, p.omega = 0.0, p.nu = 0.02, p.outer_over_a = 10.0, p.n_theta = 64;
