@@ -114,11 +114,11 @@ std::string data_dir() {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    const fs::path installed = exe.parent_path().parent_path() / MAGNUS_INSTALL_DATA_DIR;
-    if (fs::is_directory(installed, ec)) return installed.string();
-  }
-  return MAGNUS_DATA_DIR;
+  // A binary in the build tree reads the source's data/; any other (an installed one) the data installed
+  // beside it, <prefix>/share/magnus/data — never the source tree, which an installed copy may outlive.
+  if (!ec && fs::equivalent(exe.parent_path(), fs::path(MAGNUS_BUILD_DIR), ec)) return MAGNUS_DATA_DIR;
+  return ec ? std::string(MAGNUS_DATA_DIR)
+            : (exe.parent_path().parent_path() / MAGNUS_INSTALL_DATA_DIR).string();
 }
 
 std::string viscous_reference_path() { return data_dir() + "/viscous_lift_reference.toml"; }

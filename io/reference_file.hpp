@@ -14,8 +14,8 @@ ViscousReference parse_viscous_reference(const std::string& toml_text, const std
 /// Read and parse a reference file. Throws std::runtime_error with one line.
 ViscousReference load_viscous_reference(const std::string& path);
 
-/// The data directory: $MAGNUS_DATA_DIR if set and non-empty; else <prefix>/share/magnus/data beside an
-/// installed binary (found from /proc/self/exe); else the source tree's data/ (a build-tree binary).
+/// The data directory: $MAGNUS_DATA_DIR if set and non-empty; else the source tree's data/ for the binary
+/// in the build tree; else <prefix>/share/magnus/data beside the binary (found from /proc/self/exe).
 std::string data_dir();
 
 /// data_dir() + "/viscous_lift_reference.toml".

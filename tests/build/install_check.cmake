@@ -31,4 +31,14 @@ execute_process(COMMAND "${prefix}/bin/magnus" sweep "${prefix}/share/magnus/cas
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "installed magnus sweep failed (${rc}): ${err}")
 endif()
+# The installed binary reads the installed reference data (not the source tree's): the sweep lists it.
+if(NOT out MATCHES "Stojkovi" OR err MATCHES "reference data not shown")
+  message(FATAL_ERROR "installed magnus sweep did not find its reference data: ${err}")
+endif()
+file(RENAME "${prefix}/share/magnus/data" "${prefix}/share/magnus/data-moved")
+execute_process(COMMAND "${prefix}/bin/magnus" sweep "${prefix}/share/magnus/cases/spin_ratio_1.toml"
+  --spin-ratio 0:2:1 WORKING_DIRECTORY "${work}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT err MATCHES "reference data not shown")
+  message(FATAL_ERROR "with its data moved away, the installed magnus still found reference data: ${out}")
+endif()
 message(STATUS "installed magnus ran from ${work}")
