@@ -102,14 +102,15 @@ TEST_CASE("[ns] forces: the wall formulas match a control-volume momentum balanc
     double Fx = 0.0, Fy = 0.0;
     control_volume_force(g, p, o.rho, res.state, ic, Fx, Fy);
     const double q = 0.5 * o.rho * p.U * p.U * 2 * p.a;
-    INFO("n_theta " << n << ": wall C_D " << f.F_x / q << " C_L " << f.F_y / q << "; ring C_D " << Fx / q
+    // Printed (not only on failure), so the README's figures come from this test.
+    WARN("n_theta " << n << ": wall C_D " << f.F_x / q << " C_L " << f.F_y / q << "; ring C_D " << Fx / q
                     << " C_L " << Fy / q);
     CHECK(f.F_y < 0.0);  // counter-clockwise spin: lift towards −y
     CHECK(Fx == Approx(f.F_x).epsilon(0.012));
     CHECK(Fy == Approx(f.F_y).epsilon(0.025));
     gap.push_back(std::hypot(Fx - f.F_x, Fy - f.F_y) / q);
   }
-  INFO("gaps " << gap[0] << " " << gap[1]);
+  WARN("gaps " << gap[0] << " " << gap[1]);
   CHECK(magnus::test::observed_order(gap[0], gap[1]) > 1.5);
 }
 

@@ -21,8 +21,8 @@ struct Run {
 
 /// One run (cached: the convergence study reuses the finest grid of the Re 100 check).
 const Run& run(double Re, double alpha, int n_theta, double R_over_a, double t_end) {
-  static std::map<std::tuple<double, double, int, double>, Run> cache;
-  const auto key = std::make_tuple(Re, alpha, n_theta, R_over_a);
+  static std::map<std::tuple<double, double, int, double, double>, Run> cache;
+  const auto key = std::make_tuple(Re, alpha, n_theta, R_over_a, t_end);
   auto it = cache.find(key);
   if (it != cache.end()) return it->second;
   NsParams p;
