@@ -191,7 +191,7 @@ std::vector<AttrSpec> make_attributes() {
               [](FlowResult& r, double v) { r.errors.cp_surface_max_abs = v; }),
           "error Cp surface max abs", "cp_surface_max_abs", "{:.3e}"),
       row(num(
-              E, "cl_rel", "1", "|F_y − F_y,KJ| / |F_y,KJ| (undefined when U = 0)",
+              E, "cl_rel", "1", "|F_y − F_y,KJ| / |F_y,KJ|; when Γ = 0, |F_y|/(ρU²a) (undefined when U = 0)",
               [](const FlowResult& r) { return r.errors.cl_rel; },
               [](FlowResult& r, double v) { r.errors.cl_rel = v; }),
           "error C_L rel", "cl_rel", "{:.3e}"),

@@ -44,12 +44,12 @@ ViscousSurface viscous_surface(const PolarGrid& g, const NsParams& p, double rho
 
 ViscousForces viscous_forces(const PolarGrid& g, const NsParams& p, double rho, const NsState& s) {
   const int n = g.n_theta;
-  const double mu = rho * p.nu, a = p.a, dth = g.d_theta, h = g.d_xi(0);
+  const double mu = rho * p.nu, a = p.a, dth = g.d_theta;
+  const std::vector<double> zeta_xi = wall_zeta_xi(g, s);
   ViscousForces f;
   for (int j = 0; j < n; ++j) {
     const double c = std::cos(g.theta[j]), sn = std::sin(g.theta[j]);
-    const double z_xi =
-        (-3.0 * s.zeta[j] + 4.0 * s.zeta[size_t(n) + j] - s.zeta[size_t(2 * n) + j]) / (2.0 * h);
+    const double z_xi = zeta_xi[j];
     const double tau = mu * (s.zeta[j] - 2.0 * p.omega);
     f.F_x_pressure += mu * a * z_xi * sn * dth;
     f.F_y_pressure += -mu * a * z_xi * c * dth;

@@ -17,6 +17,21 @@ namespace magnus {
 
 namespace {
 
+/// ∂ψ/∂θ at node (i, j), centred across the periodic seam; psi row-major (n_r, n).
+double psi_theta_at(const std::vector<double>& psi, int i, int j, int n, double d_theta) {
+  const int e = j + 1 == n ? 0 : j + 1, w = j == 0 ? n - 1 : j - 1;
+  return (psi[size_t(i) * n + e] - psi[size_t(i) * n + w]) / (2.0 * d_theta);
+}
+
+/// ∂ψ/∂ξ at node (i, j), second order: one-sided at the wall (i = 0) and at R (i = nr − 1), centred inside;
+/// uniform Δξ = h.
+double psi_xi_at(const std::vector<double>& psi, int i, int j, int n, int nr, double h) {
+  const size_t q = size_t(i) * n + j;
+  if (i == 0) return (-3.0 * psi[q] + 4.0 * psi[q + n] - psi[q + 2 * n]) / (2.0 * h);
+  if (i == nr - 1) return (3.0 * psi[q] - 4.0 * psi[q - n] + psi[q - 2 * n]) / (2.0 * h);
+  return (psi[q + n] - psi[q - n]) / (2.0 * h);
+}
+
 using cplx = std::complex<double>;
 
 /// Run body(i_begin, i_end) over rings [b, e), split in two threads when the grid is large enough to pay.
@@ -199,17 +214,8 @@ double cfl_number(const PolarGrid& g, const std::vector<double>& psi, double dt)
   for (int i = 0; i < nr; ++i) {
     const double J = g.r[i] * g.r[i];
     for (int j = 0; j < n; ++j) {
-      const int e = j + 1 == n ? 0 : j + 1, w = j == 0 ? n - 1 : j - 1;
-      const double p_theta = (psi[size_t(i) * n + e] - psi[size_t(i) * n + w]) / (2.0 * g.d_theta);
-      double p_xi;
-      if (i == 0)
-        p_xi = (-3.0 * psi[j] + 4.0 * psi[size_t(n) + j] - psi[size_t(2 * n) + j]) / (2.0 * h);
-      else if (i == nr - 1)
-        p_xi =
-            (3.0 * psi[size_t(i) * n + j] - 4.0 * psi[size_t(i - 1) * n + j] + psi[size_t(i - 2) * n + j]) /
-            (2.0 * h);
-      else
-        p_xi = (psi[size_t(i + 1) * n + j] - psi[size_t(i - 1) * n + j]) / (2.0 * h);
+      const double p_theta = psi_theta_at(psi, i, j, n, g.d_theta);
+      const double p_xi = psi_xi_at(psi, i, j, n, nr, h);
       rate = std::max(rate, std::fabs(p_theta) / (J * h) + std::fabs(p_xi) / (J * g.d_theta));
     }
   }
@@ -327,17 +333,9 @@ void ns_velocity(const PolarGrid& g, const std::vector<double>& psi, std::vector
   u_theta.assign(size_t(nr) * n, 0.0);
   for (int i = 0; i < nr; ++i)
     for (int j = 0; j < n; ++j) {
-      const int e = j + 1 == n ? 0 : j + 1, w = j == 0 ? n - 1 : j - 1;
       const size_t q = size_t(i) * n + j;
-      double p_xi;
-      if (i == 0)
-        p_xi = (-3.0 * psi[q] + 4.0 * psi[q + n] - psi[q + 2 * n]) / (2.0 * h);
-      else if (i == nr - 1)
-        p_xi = (3.0 * psi[q] - 4.0 * psi[q - n] + psi[q - 2 * n]) / (2.0 * h);
-      else
-        p_xi = (psi[q + n] - psi[q - n]) / (2.0 * h);
-      u_r[q] = (psi[size_t(i) * n + e] - psi[size_t(i) * n + w]) / (2.0 * g.d_theta) / g.r[i];
-      u_theta[q] = -p_xi / g.r[i];
+      u_r[q] = psi_theta_at(psi, i, j, n, g.d_theta) / g.r[i];
+      u_theta[q] = -psi_xi_at(psi, i, j, n, nr, h) / g.r[i];
     }
 }
 

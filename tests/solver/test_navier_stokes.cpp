@@ -12,15 +12,10 @@
 #include "support.hpp"
 
 using namespace magnus;
+using magnus::test::max_abs;
 using magnus::test::observed_order;
 
 namespace {
-
-double max_abs(const std::vector<double>& v) {
-  double m = 0.0;
-  for (double x : v) m = std::max(m, std::fabs(x));
-  return m;
-}
 
 /// Smallest root of f in (lo, hi) by a scan and bisection.
 double first_root(const std::function<double(double)>& f, double lo, double hi, double step) {

@@ -4,6 +4,9 @@
 #include <cstdlib>
 #include <string>
 
+#include <fmt/core.h>
+
+#include "io/atomic_file.hpp"
 #include "postproc/unsteady.hpp"
 
 int main(int argc, char** argv) {
@@ -43,11 +46,15 @@ int main(int argc, char** argv) {
               : r.periodic ? "periodic"
                            : "neither");
   if (r.steady) std::printf("recirculation length %.4f D\n", recirculation_length(g, r.state));
-  if (const char* path = std::getenv("NS_HISTORY")) {  // t, C_L, C_D, C_M per step
-    if (FILE* f = std::fopen(path, "w")) {
-      for (const ForceSample& h : r.history)
-        std::fprintf(f, "%.6f %.6f %.6f %.6f\n", h.t, h.C_L, h.C_D, h.C_M);
-      std::fclose(f);
+  if (const char* path = std::getenv("NS_HISTORY")) {  // t, C_L, C_D, C_M per step, written atomically
+    std::string text;
+    for (const ForceSample& h : r.history)
+      text += fmt::format("{:.6f} {:.6f} {:.6f} {:.6f}\n", h.t, h.C_L, h.C_D, h.C_M);
+    try {
+      write_text_output(path, text);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "ns_run: %s\n", e.what());
+      return 1;
     }
   }
   return r.ok ? 0 : 1;

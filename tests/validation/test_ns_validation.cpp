@@ -138,8 +138,8 @@ TEST_CASE("[validation] steady alpha 0: drag and recirculation length at Re 20 a
   compare("C_D Re 40", r40.res.C_D_mean, 1.522, "Dennis & Chang 1970");
   compare("C_D Re 40", r40.res.C_D_mean, 1.498, "Fornberg 1980");
   compare("L_r/D Re 40", r40.L_r, 2.25, "2.2-2.35, Dennis & Chang; Fornberg");
-  // Separation: τ_w changes sign at θ_s = ±(π − θ_sep), θ from the rear (+x); D&C: 43.7° (Re 20), 53.8° (Re
-  // 40).
+  // Separation: τ_w changes sign at the separation angle, measured from the rear stagnation point (θ = 0,
+  // +x); D&C: 43.7° (Re 20), 53.8° (Re 40).
   auto separation_deg = [](const Run& r) {
     NsParams q;  // α = 0: τ_w = μ ζ_w, its sign is ζ_w's whatever μ
     q.omega = 0.0;
@@ -162,7 +162,7 @@ TEST_CASE("[validation] steady alpha 0: drag and recirculation length at Re 20 a
 TEST_CASE("[validation] Re 100, alpha 0 to 2: lift, drag, Strouhal (Stojkovic, Breuer & Durst 2002)",
           "[validation]") {
   // Two grids per α and their Richardson value (p = 2): the drag's grid error grows with α (the boundary
-  // layer thins on the side moving against the stream): +6%, +1.9% at α = 1 on n_θ = 128, 192.
+  // layer thins on the side moving against the stream); α = 1 has its own tests above.
   struct Ref {
     double alpha, C_L, C_D, St;
   };
