@@ -188,6 +188,11 @@ void H5Writer::make_scale(const std::string& scale_path, const std::string& name
   check(H5DSset_scale(open(scale_path), name.c_str()), "cannot make " + scale_path + " a dimension scale");
 }
 
+void H5Writer::link(const std::string& path, const std::string& new_path) {
+  check(H5Lcreate_hard(file_, path.c_str(), file_, new_path.c_str(), H5P_DEFAULT, H5P_DEFAULT),
+        "cannot name " + path + " also " + new_path);
+}
+
 void H5Writer::attach_scale(const std::string& path, const std::string& scale_path, unsigned dim) {
   Handle d(H5Dopen2(file_, path.c_str(), H5P_DEFAULT), H5Dclose);
   Handle sc(H5Dopen2(file_, scale_path.c_str(), H5P_DEFAULT), H5Dclose);

@@ -52,6 +52,8 @@ class H5Writer {
   void make_scale(const std::string& scale_path, const std::string& name);
   /// Attach the dimension scale at scale_path to dimension dim of the dataset at path (H5DSattach_scale).
   void attach_scale(const std::string& path, const std::string& scale_path, unsigned dim);
+  /// A second name (hard link) for the object at path: one object, no copy (H5Lcreate_hard).
+  void link(const std::string& path, const std::string& new_path);
   /// gzip level (0–9) of the double datasets written from now on, with the shuffle filter; 0: none.
   void set_compression(int level);
   int compression() const { return compression_; }

@@ -87,6 +87,10 @@ void write_file(const FlowResult& r, H5Writer& w) {
     w.attach_scale(p, "/grid/theta", 1);
   }
   for (const auto& p : on_theta) w.attach_scale(p, "/grid/theta", 0);
+  // A netCDF reader (h5netcdf, so xarray) resolves a dimension in the variable's group or a parent group,
+  // not in a sibling like /grid: the scales are named in the root group too (hard links, no copy).
+  w.link("/grid/r", "/r");
+  w.link("/grid/theta", "/theta");
 
   write_mesh(r, w);
 }

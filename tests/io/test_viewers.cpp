@@ -97,3 +97,29 @@ TEST_CASE("ParaView's XDMF reader and both Xdmf3 readers open the .xmf", "[viewe
   CAPTURE(test::slurp(dir + "/out.txt"));
   REQUIRE(status == 0);
 }
+
+TEST_CASE("xarray (h5netcdf) sees the fields' dimensions as r and theta, with their values", "[viewers]") {
+  if (!runs("/usr/bin/python3 -c 'import xarray, h5netcdf'")) {
+    WARN("skipped: xarray or h5netcdf is not installed (apt-get install python3-xarray python3-h5netcdf)");
+    return;
+  }
+  const std::string dir = test::temp_dir("viewer-xarray");
+  const FlowResult r = write_flow(dir);
+  std::ofstream(dir + "/check.py")
+      << "import sys, xarray as xr, numpy as np\n"
+         "path, nr, nt = sys.argv[1] + '/flow.h5', int(sys.argv[2]), int(sys.argv[3])\n"
+         "f = xr.open_dataset(path, engine='h5netcdf', group='fields', phony_dims='access')\n"
+         "for name in f.data_vars:\n"
+         "    assert f[name].dims == ('r', 'theta'), (name, f[name].dims)\n"
+         "assert f['psi'].shape == (nr, nt)\n"
+         "root = xr.open_dataset(path, engine='h5netcdf', phony_dims='access')\n"
+         "assert root['r'].dims == ('r',) and root['theta'].dims == ('theta',)\n"
+         "assert root['r'].values[0] > 0 and np.all(np.diff(root['theta'].values) > 0)\n"
+         "print('ok')\n";
+  const int status =
+      std::system(("/usr/bin/python3 '" + dir + "/check.py' '" + dir + "' " + std::to_string(r.grid.n_r) +
+                   " " + std::to_string(r.grid.n_theta) + " >'" + dir + "/out.txt' 2>&1")
+                      .c_str());
+  CAPTURE(test::slurp(dir + "/out.txt"));
+  REQUIRE(status == 0);
+}
