@@ -44,4 +44,25 @@ Outcome magnus_cmd(const std::vector<std::string>& args, const std::string& dir)
 
 size_t lines(const std::string& s) { return size_t(std::count(s.begin(), s.end(), '\n')); }
 
+std::pair<unsigned long, unsigned long> png_size(const std::string& path) {
+  const std::string b = slurp(path);
+  if (b.size() < 100 || b.compare(1, 3, "PNG") != 0 || b.compare(12, 4, "IHDR") != 0) return {0, 0};
+  if (b.compare(b.size() - 8, 4, "IEND") != 0) return {0, 0};
+  auto be32 = [&](size_t at) {
+    const auto* u = reinterpret_cast<const unsigned char*>(b.data()) + at;
+    return (unsigned long)u[0] << 24 | (unsigned long)u[1] << 16 | (unsigned long)u[2] << 8 | u[3];
+  };
+  return {be32(16), be32(20)};
+}
+
+int run_script(const std::string& interpreter, const std::string& dir, const std::string& script,
+               const std::vector<std::string>& args, std::string* output) {
+  std::ofstream(dir + "/check.py") << script;
+  std::string cmd = interpreter + " '" + dir + "/check.py'";
+  for (const auto& a : args) cmd += " '" + a + "'";
+  const int status = std::system((cmd + " >'" + dir + "/out.txt' 2>&1").c_str());
+  if (output) *output = slurp(dir + "/out.txt");
+  return status;
+}
+
 }  // namespace magnus::test

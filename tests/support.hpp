@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 #include "postproc/pipeline.hpp"
 
@@ -59,6 +60,14 @@ Outcome magnus_cmd(const std::vector<std::string>& args, const std::string& dir)
 
 /// A file's bytes.
 std::string slurp(const std::string& path);
+
+/// Width and height of a complete PNG file, from its IHDR chunk; (0, 0) if it is not a PNG or has no IEND.
+std::pair<unsigned long, unsigned long> png_size(const std::string& path);
+
+/// Run `interpreter dir/script.py args…` with the script's text written there first; returns the exit
+/// status, and the combined output in *output.
+int run_script(const std::string& interpreter, const std::string& dir, const std::string& script,
+               const std::vector<std::string>& args, std::string* output);
 
 /// Number of lines (newlines) in s.
 size_t lines(const std::string& s);

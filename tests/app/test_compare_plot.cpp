@@ -38,17 +38,6 @@ std::vector<std::string> split(const std::string& s, char sep) {
   return out;
 }
 
-std::pair<unsigned long, unsigned long> png_size(const std::string& path) {
-  const std::string b = slurp(path);
-  if (b.size() < 100 || b.compare(1, 3, "PNG") != 0 || b.compare(12, 4, "IHDR") != 0) return {0, 0};
-  auto be32 = [&](size_t at) {
-    const auto* u = reinterpret_cast<const unsigned char*>(b.data()) + at;
-    return (unsigned long)u[0] << 24 | (unsigned long)u[1] << 16 | (unsigned long)u[2] << 8 | u[3];
-  };
-  if (b.compare(b.size() - 8, 4, "IEND") != 0) return {0, 0};
-  return {be32(16), be32(20)};
-}
-
 }  // namespace
 
 TEST_CASE("magnus compare reads back exactly what magnus run wrote", "[app][compare]") {
@@ -169,7 +158,7 @@ TEST_CASE("magnus plot writes complete PNGs of the stated size for every shipped
     for (const auto& suffix : expected) {
       const std::string png = pics + "/" + stem + suffix;
       CHECK(o.out.find(png) != std::string::npos);
-      CHECK(png_size(png) == std::pair<unsigned long, unsigned long>(320, 240));
+      CHECK(test::png_size(png) == std::pair<unsigned long, unsigned long>(320, 240));
     }
     // U = 0: Cp is undefined, the two Cp pictures are skipped with a note each.
     CHECK(lines(o.err) == (still ? 2u : 0u));
@@ -196,8 +185,8 @@ TEST_CASE("magnus plot skips what the file lacks and fails in one line when noth
   REQUIRE(o.status == 0);
   CHECK(lines(o.err) == 1);
   CHECK(o.err.find("/fields/cp") != std::string::npos);
-  CHECK(png_size(dir + "/r_streamlines.png") == std::pair<unsigned long, unsigned long>(1000, 800));
-  CHECK(png_size(dir + "/r_surface_cp.png") == std::pair<unsigned long, unsigned long>(1000, 800));
+  CHECK(test::png_size(dir + "/r_streamlines.png") == std::pair<unsigned long, unsigned long>(1000, 800));
+  CHECK(test::png_size(dir + "/r_surface_cp.png") == std::pair<unsigned long, unsigned long>(1000, 800));
   CHECK_FALSE(fs::exists(dir + "/r_cp.png"));
 
   // The library call reports the same.
@@ -242,7 +231,7 @@ TEST_CASE("magnus plot draws a sweep file as C_L against α, or against Γ for a
   CAPTURE(o.err);
   REQUIRE(o.status == 0);
   CHECK(o.out.find(dir + "/s_cl.png") != std::string::npos);
-  CHECK(png_size(dir + "/s_cl.png") == std::pair<unsigned long, unsigned long>(640, 480));
+  CHECK(test::png_size(dir + "/s_cl.png") == std::pair<unsigned long, unsigned long>(640, 480));
   // The numeric points are drawn where C_L = −2πα puts them.
   const LiftSweep s = read_lift_sweep(dir + "/s.h5");
   REQUIRE(s.x.size() == 7);
@@ -267,5 +256,5 @@ TEST_CASE("magnus plot draws a sweep file as C_L against α, or against Γ for a
   CHECK(c.x.front() == Approx(-5.0));
   CHECK(lift_figure(c, nullptr).page.xlabel.find("Γ (m^2/s)") != std::string::npos);
   CHECK(magnus_cmd({"plot", dir + "/c.h5"}, dir).status == 0);
-  CHECK(png_size(dir + "/c_cl.png").first == 1000);
+  CHECK(test::png_size(dir + "/c_cl.png").first == 1000);
 }

@@ -16,20 +16,7 @@ using namespace magnus;
 using namespace magnus::test;
 namespace fs = std::filesystem;
 
-namespace {
-
-/// PNG width and height from the IHDR chunk (0, 0 if not a PNG).
-std::pair<unsigned long, unsigned long> png_size(const std::string& path) {
-  const std::string b = slurp(path);
-  if (b.size() < 24 || b.compare(1, 3, "PNG") != 0 || b.compare(12, 4, "IHDR") != 0) return {0, 0};
-  auto be32 = [&](size_t at) {
-    const auto* u = reinterpret_cast<const unsigned char*>(b.data()) + at;
-    return (unsigned long)u[0] << 24 | (unsigned long)u[1] << 16 | (unsigned long)u[2] << 8 | u[3];
-  };
-  return {be32(16), be32(20)};
-}
-
-}  // namespace
+namespace {}  // namespace
 
 TEST_CASE("magnus sweep: table, CSV, HDF5 and plot, bad ranges give one line and no files",
           "[app][sweep][cli]") {
@@ -103,7 +90,7 @@ TEST_CASE("magnus sweep: table, CSV, HDF5 and plot, bad ranges give one line and
     }
     H5Fclose(f);
   }
-  CHECK(png_size(dir + "/s.png") == std::pair<unsigned long, unsigned long>(400, 300));
+  CHECK(test::png_size(dir + "/s.png") == std::pair<unsigned long, unsigned long>(400, 300));
   for (const auto& e : fs::directory_iterator(dir))
     CHECK(e.path().filename().string().find(".tmp-") == std::string::npos);
 
