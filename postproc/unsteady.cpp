@@ -81,9 +81,11 @@ double choose_time_step(const NsParams& p, const PolarGrid& g, const NsState& s,
   return dt_cfl;
 }
 
-UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState start) {
+UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState start,
+                            std::vector<ForceSample> history) {
   const auto clock0 = std::chrono::steady_clock::now();
   UnsteadyResult res;
+  res.history = std::move(history);
   if (!(p.U > 0.0)) throw std::invalid_argument("run_unsteady: needs U > 0 (coefficients and St use U)");
   const PolarGrid g = ns_grid(p);
   const double D = 2.0 * p.a, t_conv = D / p.U;
@@ -91,16 +93,18 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
   double dt = choose_time_step(p, g, start, &note);
   auto op = std::make_unique<NsOperator>(p, dt);
   NsState cur = std::move(start), nxt;
+  // Record a state's forces (a resumed history already holds its first sample); false: asked to stop.
   auto sample = [&](const NsState& s) {
     const ViscousForces f = viscous_forces(g, p, o.rho, s);
-    res.history.push_back({s.t, *f.C_L, *f.C_D, *f.C_M, f.F_x, f.F_y, f.M});
-    if (o.on_step) o.on_step(s, f);
+    if (res.history.empty() || s.t > res.history.back().t)
+      res.history.push_back({s.t, *f.C_L, *f.C_D, *f.C_M, f.F_x, f.F_y, f.M});
+    return !o.on_step || o.on_step(s, f);
   };
-  sample(cur);
+  bool go_on = sample(cur);
   const double t_min = o.t_min >= 0.0 ? o.t_min : (g.outer_radius() - p.a) / p.U + 10.0 * t_conv;
   res.message = "reached t_end";
   try {
-    while (cur.t < o.t_end - 1e-12 * o.t_end) {
+    while (go_on && cur.t < o.t_end - 1e-12 * o.t_end) {
       // Keep the CFL number near its target: the velocities grow as the wake forms.
       if (res.steps % 10 == 0) {
         const double cfl = cfl_number(g, cur.psi, dt);
@@ -114,7 +118,7 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
       advance(*op, cur, nxt);
       std::swap(cur, nxt);
       ++res.steps;
-      sample(cur);
+      go_on = sample(cur);
       if (cur.t < t_min || res.steps % 50 != 0) continue;
       // Steady: forces flat over the window.
       const double t_from = cur.t - o.steady_window * t_conv;
@@ -149,6 +153,10 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
   } catch (const std::exception& e) {
     res.ok = false;
     res.message = e.what();
+  }
+  if (!go_on) {
+    res.interrupted = true;
+    res.message = "interrupted";
   }
   if (!note.empty()) res.message += "; " + note;
   res.periodic = !res.steady && analyse_periodic(res.history, D, p.U, res);

@@ -22,8 +22,9 @@ struct UnsteadyOptions {
   /// impulsive start, carrying the opposite of the bound circulation) has left the domain — until then it
   /// tilts the force by its induced velocity ~Γ/(2πUt) and the means drift too slowly to be caught.
   double t_min = -1.0;
-  /// Called after every step (a progress line, a checkpoint); may be empty.
-  std::function<void(const NsState&, const ViscousForces&)> on_step;
+  /// Called after every step (a progress line, a checkpoint, a snapshot); may be empty. Returning false
+  /// stops the run there (Ctrl-C): the result is then marked interrupted.
+  std::function<bool(const NsState&, const ViscousForces&)> on_step;
 };
 
 /// One sample of the force history.
@@ -41,6 +42,7 @@ struct UnsteadyResult {
   bool periodic = false;                                  ///< at least two periods found
   bool converged = false;                                 ///< steady, or periodic means converged
   bool ok = true;                                         ///< false: stopped on an error (see message)
+  bool interrupted = false;                               ///< on_step asked to stop (a partial result)
   std::string message;                                    ///< why it stopped; a clamped Δt; an error
   double period = 0.0;                                    ///< shedding period (C_L maxima), s
   double St = 0.0;                                        ///< Strouhal number D/(U·period)
@@ -55,8 +57,10 @@ struct UnsteadyResult {
 /// says when an asked Δt was clamped.
 double choose_time_step(const NsParams& p, const PolarGrid& g, const NsState& s, std::string* note);
 
-/// Run from `start` (e.g. impulsive_start) with U > 0. Never throws on a failing flow: ok = false, message.
-UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState start);
+/// Run from `start` (e.g. impulsive_start, or a checkpoint's state with its `history` so far) with U > 0.
+/// Never throws on a failing flow: ok = false, message.
+UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState start,
+                            std::vector<ForceSample> history = {});
 
 /// Period, means and amplitudes of a history's last whole period of C_L (maxima with parabolic timing).
 /// Returns false when fewer than two maxima are found. D and U give St.

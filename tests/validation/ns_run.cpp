@@ -29,10 +29,11 @@ int main(int argc, char** argv) {
   o.t_end = std::atof(argv[5]);
   double next_print = 0.0;
   o.on_step = [&](const NsState& s, const ViscousForces& f) {
-    if (quiet || s.t < next_print) return;
+    if (quiet || s.t < next_print) return true;
     next_print += 5.0;
     std::printf("t = %7.2f  C_L = %9.5f  C_D = %8.5f  C_M = %9.5f\n", s.t, *f.C_L, *f.C_D, *f.C_M);
     std::fflush(stdout);
+    return true;
   };
   const PolarGrid g = ns_grid(p);
   const UnsteadyResult r = run_unsteady(p, o, impulsive_start(p, g));
