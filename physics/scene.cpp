@@ -13,6 +13,10 @@ double Scene::Gamma() const {
 
 double Scene::spin_ratio() const { return speed > 0.0 ? radius * spin / speed : 0.0; }
 
+double Scene::reynolds() const { return viscosity > 0.0 ? speed * 2.0 * radius / viscosity : 0.0; }
+
+double Scene::reference_speed() const { return speed > 0.0 ? speed : radius * std::fabs(spin); }
+
 std::optional<Overflow> find_overflow(const Scene& s, double outer_radius, const SceneKeys& k) {
   const double a = s.radius, U = s.speed, rho = s.density, w = s.spin, G = s.Gamma(), p = s.pressure_inf;
   struct Factor {
@@ -74,6 +78,10 @@ const char* to_string(Method m) {
   return m == Method::automatic ? "auto" : m == Method::cholmod ? "cholmod" : "fft";
 }
 const char* to_string(StencilKind s) { return s == StencilKind::five_point ? "5-point" : "9-point"; }
+const char* to_string(FlowModel m) { return m == FlowModel::potential ? "potential" : "navier-stokes"; }
+const char* to_string(TimeMode m) {
+  return m == TimeMode::automatic ? "auto" : m == TimeMode::steady ? "steady" : "unsteady";
+}
 
 const std::vector<std::string>& field_names() {
   static const std::vector<std::string> names = {"psi",      "u_r", "u_theta",   "u_x",      "u_y",

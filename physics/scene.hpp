@@ -13,6 +13,11 @@ enum class Spacing { geometric, uniform };
 enum class FarField { exact, freestream };
 enum class Method { automatic, cholmod, fft };
 enum class StencilKind { five_point, nine_point };
+/// The fluid model: ideal (inviscid, irrotational) or 2D laminar Navier–Stokes.
+enum class FlowModel { potential, navier_stokes };
+/// How a navier-stokes case is run: "auto" (march in time; stop when steady or periodic), "steady"
+/// (march until steady), "unsteady" (march to time.end or converged periodic means).
+enum class TimeMode { automatic, steady, unsteady };
 
 /// The physical scene: a cylinder of radius a spinning at ω in a freestream U towards +x.
 struct Scene {
@@ -23,11 +28,17 @@ struct Scene {
   double pressure_inf = 0.0;       ///< p∞, Pa
   bool circulation_given = false;  ///< circulation model "given" (else "spin": Γ = 2πa²ω)
   double circulation_value = 0.0;  ///< Γ for the model "given", m^2/s
+  double viscosity = 0.0;          ///< ν, m^2/s (kinematic); 0: not given (potential flow only)
 
   /// Γ = 2πa²ω (spin model) or the given value, m^2/s.
   double Gamma() const;
   /// α = aω/U; 0 when U = 0 (undefined: callers that report it check U first).
   double spin_ratio() const;
+  /// Re = U·2a/ν; 0 when ν or U is 0 (undefined: callers check viscosity and speed first).
+  double reynolds() const;
+  /// The reference speed of the time unit and the coefficients' dynamic pressure: U, or the wall speed
+  /// a|ω| when U = 0 (a spinning cylinder in still fluid), m/s.
+  double reference_speed() const;
 };
 
 /// The grid asked for: the domain, the spacing and the resolution (or a tolerance that picks it).
@@ -38,6 +49,8 @@ struct GridRequest {
   int n_r = 0;  ///< 0: chosen from the spacing (square cells)
   Spacing spacing = Spacing::geometric;
   bool spacing_given = false;  ///< grid.spacing was stated (file or --set): a tolerance search keeps it
+  bool outer_radius_given = false;  ///< domain.outer_radius was stated (else each model's default)
+  bool n_theta_given = false;       ///< grid.n_theta was stated (else each model's default)
   double tolerance = 0.0;      ///< target relative lift error; 0: the grid as given
 };
 
@@ -47,17 +60,32 @@ struct SolverChoice {
   StencilKind stencil = StencilKind::five_point;
 };
 
+/// Time marching of a navier-stokes case ([time]). Times are in convective units D/U_ref, D = 2a,
+/// U_ref = Scene::reference_speed().
+struct TimeRequest {
+  TimeMode mode = TimeMode::automatic;
+  double end = 300.0;                 ///< t_end, D/U_ref, > 0
+  double dt = 0.0;                    ///< Δt, D/U_ref; 0: from the CFL number
+  double cfl = 0.5;                   ///< target CFL number, (0, 0.8]
+  double mean_tolerance = 1e-3;       ///< stop when the last periods' means of C_L, C_D agree to this
+  double checkpoint_interval = 10.0;  ///< checkpoint every this many D/U_ref; 0: none
+};
+
 /// What a run writes.
 struct OutputRequest {
   std::string file = "magnus.h5";
   std::optional<std::vector<std::string>> fields;  ///< absent: all fields; [] none
   int compression = 0;                             ///< gzip level of the large datasets, 0 (none) … 9
+  int snapshots = 0;                ///< navier-stokes: keep the last N states for an XDMF time series
+  double snapshot_interval = 0.25;  ///< between snapshots, D/U_ref, > 0
 };
 
-/// One case: the four parts, its title and its resolved TOML text (stored in results).
+/// One case: the parts, its title and its resolved TOML text (stored in results).
 struct Case {
   std::string title = "Spinning cylinder";
+  FlowModel model = FlowModel::potential;
   Scene scene;
+  TimeRequest time;  ///< navier-stokes only
   GridRequest grid;
   SolverChoice solver;
   OutputRequest output;
@@ -89,6 +117,8 @@ const char* to_string(Spacing);
 const char* to_string(FarField);
 const char* to_string(Method);
 const char* to_string(StencilKind);
+const char* to_string(FlowModel);  ///< "potential" | "navier-stokes"
+const char* to_string(TimeMode);   ///< "auto" | "steady" | "unsteady"
 
 /// The (n_r, n_θ) fields a result can hold (output.fields), in file order.
 const std::vector<std::string>& field_names();
