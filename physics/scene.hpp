@@ -49,8 +49,6 @@ struct GridRequest {
   int n_r = 0;  ///< 0: chosen from the spacing (square cells)
   Spacing spacing = Spacing::geometric;
   bool spacing_given = false;  ///< grid.spacing was stated (file or --set): a tolerance search keeps it
-  bool outer_radius_given = false;  ///< domain.outer_radius was stated (else each model's default)
-  bool n_theta_given = false;       ///< grid.n_theta was stated (else each model's default)
   double tolerance = 0.0;      ///< target relative lift error; 0: the grid as given
 };
 
@@ -59,6 +57,11 @@ struct SolverChoice {
   Method method = Method::automatic;
   StencilKind stencil = StencilKind::five_point;
 };
+
+/// The navier-stokes model's defaults where they differ from potential flow's: the wake needs a far
+/// outer boundary (R/a) and the boundary layer fewer θ points than potential flow's round-off accuracy.
+constexpr double kNsDefaultOuterRadius = 100.0;
+constexpr int kNsDefaultNTheta = 192;
 
 /// Time marching of a navier-stokes case ([time]). Times are in convective units D/U_ref, D = 2a,
 /// U_ref = Scene::reference_speed().
