@@ -11,12 +11,13 @@ namespace magnus {
 
 std::string first_non_finite(const FlowResult& r) {
   for (const AttrSpec& a : result_attributes()) {
-    if (!a.number) continue;
+    if (!a.number || !applies(a.models, r)) continue;
     const std::optional<double> v = a.number(r);
     if (v && !std::isfinite(*v)) return fmt::format("{} ({}@{})", a.description, a.group, a.name);
   }
   const size_t n_theta = size_t(r.grid.n_theta);
   for (const DatasetSpec& d : result_datasets()) {
+    if (!applies(d.models, r)) continue;
     const std::vector<double> v = d.values(r);
     for (size_t q = 0; q < v.size(); ++q) {
       if (std::isfinite(v[q])) continue;

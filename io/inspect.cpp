@@ -45,8 +45,17 @@ std::string line(const std::string& name, const std::string& value, const std::s
                        : fmt::format("  {:<26}{}  [{}]\n", name, value, units);
 }
 
+/// Whether the file holds a navier-stokes result (its root attribute model).
+bool is_viscous(const ResultFile& f) {
+  return f.has_attr("/", "model") && f.attr_string("/", "model") == "navier-stokes";
+}
+
+/// Whether a schema entry for `m` belongs in the file (the model's own entries only).
+bool belongs(Models m, const ResultFile& f) { return m == Models::all || (m == Models::viscous) == is_viscous(f); }
+
 /// Every attribute of a group: the schema's first (undefined ones marked), then any others the file holds.
 std::string group_text(const ResultFile& f, const std::string& group, const char* heading, bool strict) {
+  if (!f.has(group)) return "";
   std::string s = fmt::format("\n{}\n", heading);
   std::set<std::string> undefined;
   if (f.has_attr(group, "undefined")) {
@@ -60,7 +69,7 @@ std::string group_text(const ResultFile& f, const std::string& group, const char
   }
   std::set<std::string> shown;
   for (const AttrSpec& a : result_attributes()) {
-    if (group != a.group || group == "/") continue;
+    if (group != a.group || group == "/" || !belongs(a.models, f)) continue;
     shown.insert(a.name);
     if (f.has_attr(group, a.name))
       s += line(a.name, value_text(f, group, a.name), a.units);
@@ -117,12 +126,18 @@ std::string describe_flow(const ResultFile& f) {
                                        "/surface/theta", "/surface/u_theta", "/surface/pressure"};
   const std::string surface_undefined =
       f.has_attr("/surface", "undefined") ? f.attr_string("/surface", "undefined") : "";
-  if (surface_undefined.find("cp") == std::string::npos)
-    expected.insert(expected.end(), {"/surface/cp", "/surface/cp_exact"});
+  const bool viscous = is_viscous(f);
+  if (surface_undefined.find("cp") == std::string::npos) {
+    expected.push_back("/surface/cp");
+    if (!viscous) expected.push_back("/surface/cp_exact");
+  }
   if (version >= 2) {
-    for (const char* p : {"/stagnation/r", "/stagnation/theta", "/stagnation/r_exact",
-                          "/stagnation/theta_exact", "/mesh/points", "/mesh/quads"})
-      expected.push_back(p);
+    for (const char* p : {"/mesh/points", "/mesh/quads"}) expected.push_back(p);
+    if (viscous)
+      expected.insert(expected.end(), {"/surface/shear_stress", "/separation/theta", "/history/t"});
+    else
+      expected.insert(expected.end(),
+                      {"/stagnation/r", "/stagnation/theta", "/stagnation/r_exact", "/stagnation/theta_exact"});
     for (const DatasetSpec* d : field_datasets())
       if (f.has("/mesh/" + d->path.substr(8))) expected.push_back(d->path);
   }

@@ -31,8 +31,8 @@ void check_disk_space(const std::string& path, size_t needed, size_t free_bytes)
 }
 
 void check_output_space(const Case& c, const std::string& path) {
-  const FieldSelection sel = select_fields(c.output.fields);
-  int fields = 0;
+  const FieldSelection sel = select_fields(c.output.fields, c.model);
+  int fields = 2 * c.output.snapshots;  // each snapshot: ψ and ζ
   for (bool on : sel.on) fields += on;
   const GridShape g = grid_shape(c.grid);
   std::optional<size_t> free_bytes = free_bytes_for(path);

@@ -35,6 +35,7 @@ void write_file(const FlowResult& r, H5Writer& w) {
   };
 
   for (const AttrSpec& a : result_attributes()) {
+    if (!applies(a.models, r)) continue;
     const H5Writer::id g = group(a.group);
     if (a.kind == AttrKind::text) {
       w.attr(g, a.name, a.text(r));
@@ -53,9 +54,10 @@ void write_file(const FlowResult& r, H5Writer& w) {
   }
 
   const size_t nr = r.grid.n_r, nt = r.grid.n_theta;
-  const FieldSelection selected = select_fields(r.c.output.fields);
+  const FieldSelection selected = select_fields(r.c.output.fields, r.c.model);
   std::vector<std::string> on_grid, on_theta;
   for (const DatasetSpec& d : result_datasets()) {
+    if (!applies(d.models, r)) continue;
     const std::vector<double> v = d.values(r);
     const std::string name = d.path.substr(d.path.rfind('/') + 1);
     const bool is_field = d.path.rfind("/fields/", 0) == 0;

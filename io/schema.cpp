@@ -36,18 +36,78 @@ AttrSpec row(AttrSpec a, const char* label, const char* csv, const char* spec) {
 
 std::optional<double> opt(double v) { return v; }
 
+AttrSpec only(Models m, AttrSpec a) {
+  a.models = m;
+  return a;
+}
+
+DatasetSpec only(Models m, DatasetSpec d) {
+  d.models = m;
+  return d;
+}
+
+/// The viscous part of a result being read back (created on first use).
+ViscousPart& vis(FlowResult& r) {
+  if (!r.viscous) r.viscous.emplace();
+  return *r.viscous;
+}
+
+/// A viscous number attribute: group, name, units, description, the member it reads and writes.
+AttrSpec vnum(const char* group, const char* name, const char* units, const char* description,
+              std::optional<double> ViscousPart::*m) {
+  return only(Models::viscous,
+              num(
+                  group, name, units, description, [m](const FlowResult& r) { return r.viscous ? (*r.viscous).*m : std::nullopt; },
+                  [m](FlowResult& r, double v) { vis(r).*m = v; }));
+}
+
+AttrSpec vnum(const char* group, const char* name, const char* units, const char* description,
+              double ViscousPart::*m) {
+  return only(Models::viscous,
+              num(
+                  group, name, units, description, [m](const FlowResult& r) { return r.viscous ? opt((*r.viscous).*m) : std::nullopt; },
+                  [m](FlowResult& r, double v) { vis(r).*m = v; }));
+}
+
+/// A viscous force attribute of the last step (ViscousForces member; set_number fills it back).
+template <class T>
+AttrSpec vlast(const char* name, const char* units, const char* description, T ViscousForces::*m) {
+  return only(Models::viscous, num(
+                                   "/forces", name, units, description,
+                                   [m](const FlowResult& r) -> std::optional<double> {
+                                     if (!r.viscous) return std::nullopt;
+                                     return r.viscous->last.*m;
+                                   },
+                                   [m](FlowResult& r, double v) { vis(r).last.*m = v; }));
+}
+
 std::vector<AttrSpec> make_attributes() {
   const char* P = "/parameters";
   const char* F = "/forces";
   const char* E = "/errors";
   const char* T = "/timing";
-  return {
+  std::vector<AttrSpec> table = {
       text("/", "format", "\"magnus-flow\"", [](const FlowResult&) { return std::string("magnus-flow"); }),
       integer("/", "format_version", "version of this layout; readers accept 1 and 2",
               [](const FlowResult&) { return opt(double(kFlowFormatVersion)); }),
       text("/", "software_version", "magnus version that wrote the file",
            [](const FlowResult&) { return std::string(MAGNUS_VERSION); }),
-      text("/", "model", "flow model: potential", [](const FlowResult&) { return std::string("potential"); }),
+      text(
+          "/", "model", "flow model: potential or navier-stokes",
+          [](const FlowResult& r) { return std::string(to_string(r.c.model)); },
+          [](FlowResult& r, const std::string& v) {
+            r.c.model = v == "navier-stokes" ? FlowModel::navier_stokes : FlowModel::potential;
+          }),
+      only(Models::viscous,
+           text(
+               "/", "status", "why the navier-stokes run stopped",
+               [](const FlowResult& r) { return r.viscous ? r.viscous->status : std::string(); },
+               [](FlowResult& r, const std::string& v) { vis(r).status = v; })),
+      only(Models::viscous,
+           integer(
+               "/", "partial", "1: interrupted or stopped on an error before its end (a partial result)",
+               [](const FlowResult& r) { return opt(r.viscous && r.viscous->partial ? 1.0 : 0.0); },
+               [](FlowResult& r, double v) { vis(r).partial = v != 0.0; })),
       text(
           "/", "case", "the resolved case as TOML", [](const FlowResult& r) { return r.c.source_text; },
           [](FlowResult& r, const std::string& v) { r.c.source_text = v; }),
@@ -227,6 +287,68 @@ std::vector<AttrSpec> make_attributes() {
           [](const FlowResult& r) { return opt(r.timing.postproc_s); },
           [](FlowResult& r, double v) { r.timing.postproc_s = v; }),
   };
+  // Potential flow's own entries: its solvers and the errors against its exact solution.
+  for (AttrSpec& a : table) {
+    const std::string g = a.group, n = a.name;
+    if (g == E || (g == P && (n == "far_field" || n == "method" || n == "stencil" || n == "circulation_model")))
+      a.models = Models::potential;
+  }
+  const std::vector<AttrSpec> viscous = {
+      vnum(P, "viscosity", "m^2/s", "kinematic viscosity ν", &ViscousPart::viscosity),
+      vnum(P, "reynolds", "1", "Reynolds number U·2a/ν (undefined when U = 0)", &ViscousPart::reynolds),
+      vnum(P, "time_unit", "s", "convective time unit D/U (D/(a|ω|) when U = 0)", &ViscousPart::time_unit),
+      only(Models::viscous,
+           num(
+               P, "time_end", "1", "time.end asked for, in convective units",
+               [](const FlowResult& r) { return opt(r.c.time.end); },
+               [](FlowResult& r, double v) { r.c.time.end = v; })),
+      row(vnum(F, "cl_mean", "1", "mean lift coefficient (over the last shedding period, or the last step)",
+               &ViscousPart::cl_mean),
+          "C_L mean (viscous)", "cl_mean", "{:.6g}"),
+      row(vnum(F, "cd_mean", "1", "mean drag coefficient", &ViscousPart::cd_mean), "C_D mean (viscous)",
+          "cd_mean", "{:.6g}"),
+      vnum(F, "cm_mean", "1", "mean torque coefficient M/(½ρU²·D²)", &ViscousPart::cm_mean),
+      row(vnum(F, "cl_amplitude", "1", "lift coefficient amplitude (max − min)/2 over the last period",
+               &ViscousPart::cl_amplitude),
+          "C_L amplitude", "cl_amplitude", "{:.4g}"),
+      vnum(F, "cd_amplitude", "1", "drag coefficient amplitude (max − min)/2 over the last period",
+           &ViscousPart::cd_amplitude),
+      row(vnum(F, "strouhal", "1", "Strouhal number f·D/U of the lift signal (periodic flow only)",
+               &ViscousPart::strouhal),
+          "Strouhal number", "strouhal", "{:.5g}"),
+      vnum(F, "period", "s", "shedding period (periodic flow only)", &ViscousPart::period),
+      vnum(F, "lift_mean", "N/m", "mean lift per unit span", &ViscousPart::lift_mean),
+      vnum(F, "drag_mean", "N/m", "mean drag per unit span", &ViscousPart::drag_mean),
+      vnum(F, "torque_mean", "N*m/m", "mean torque on the body per unit span, CCW positive",
+           &ViscousPart::torque_mean),
+      vnum(F, "spin_power_mean", "W/m", "mean power to keep the spin, −M̄ω", &ViscousPart::spin_power_mean),
+      vlast("cl_pressure", "1", "pressure part of C_L at the last step", &ViscousForces::C_L_pressure),
+      vlast("cl_friction", "1", "friction part of C_L at the last step", &ViscousForces::C_L_friction),
+      vlast("cd_pressure", "1", "pressure part of C_D at the last step", &ViscousForces::C_D_pressure),
+      vlast("cd_friction", "1", "friction part of C_D at the last step", &ViscousForces::C_D_friction),
+      vlast("cm", "1", "torque coefficient at the last step", &ViscousForces::C_M),
+      vlast("torque", "N*m/m", "torque per unit span at the last step", &ViscousForces::M),
+      vlast("spin_power", "W/m", "power to keep the spin at the last step, −Mω", &ViscousForces::P_spin),
+      row(vnum(F, "cl_ideal", "1", "potential flow's lift coefficient for the same scene, −2πaω/U",
+               &ViscousPart::cl_ideal),
+          "C_L ideal (potential)", "cl_ideal", "{:.6g}"),
+      row(vnum(F, "magnus_ratio", "1",
+               "S(Re, α)/(2πρa²) = C_L,mean/C_L,ideal: the real share of the ideal lift (undefined at α = 0)",
+               &ViscousPart::magnus_ratio),
+          "S/(2πρa²)", "magnus_ratio", "{:.4f}"),
+      vnum(F, "recirculation_length", "1", "recirculation length behind the body over D (steady flow)",
+           &ViscousPart::recirculation_length),
+      vnum(F, "circulation_outer", "m^2/s", "circulation on the outer ring r = R", &ViscousPart::Gamma_R),
+      vnum(T, "t_reached", "s", "simulated time reached", &ViscousPart::t),
+      vnum(T, "dt", "s", "last time step", &ViscousPart::dt),
+      only(Models::viscous,
+           integer(
+               T, "steps", "time steps taken",
+               [](const FlowResult& r) { return r.viscous ? opt(double(r.viscous->steps)) : std::nullopt; },
+               [](FlowResult& r, double v) { vis(r).steps = long(v); })),
+  };
+  table.insert(table.end(), viscous.begin(), viscous.end());
+  return table;
 }
 
 using Member = std::vector<double> Fields::*;
@@ -274,6 +396,23 @@ DatasetSpec stagnation(const char* name, const char* units, const char* descript
           {}};
 }
 
+/// One column of the force history (one value per step).
+DatasetSpec history(const char* name, const char* units, const char* description, double ForceSample::*m) {
+  return {std::string("/history/") + name, units, description, DataShape::steps,
+          [m](const FlowResult& r) {
+            std::vector<double> v;
+            if (r.viscous)
+              for (const ForceSample& f : r.viscous->history) v.push_back(f.*m);
+            return v;
+          },
+          [m](FlowResult& r, std::vector<double> v) {
+            auto& h = vis(r).history;
+            h.resize(v.size());
+            for (size_t q = 0; q < v.size(); ++q) h[q].*m = v[q];
+          },
+          Models::viscous};
+}
+
 std::vector<DatasetSpec> make_datasets() {
   return {
       {"/grid/r", "m", "radius r_i of grid row i (dimension scale of every field's first axis)",
@@ -301,22 +440,58 @@ std::vector<DatasetSpec> make_datasets() {
       field("u_y", "m/s", "velocity component along +y", &Fields::u_y),
       field("pressure", "Pa", "pressure p = p∞ + ½ρ(U² − |u|²)", &Fields::pressure),
       field("cp", "1", "pressure coefficient (p − p∞)/(½ρU²) (undefined when U = 0)", &Fields::cp),
-      field("psi_exact", "m^2/s", "exact stream function on the same grid", &Fields::psi_exact),
-      field("psi_error", "m^2/s", "ψ − ψ_exact", &Fields::psi_error),
+      only(Models::potential,
+           field("psi_exact", "m^2/s", "exact stream function on the same grid", &Fields::psi_exact)),
+      only(Models::potential, field("psi_error", "m^2/s", "ψ − ψ_exact", &Fields::psi_error)),
+      only(Models::viscous, field("vorticity", "1/s", "vorticity ζ = −∇²ψ", &Fields::vorticity)),
       surface("theta", "rad", "angle of the body points (= /grid/theta)", &Surface::theta),
       surface("u_theta", "m/s", "velocity on the body r = a", &Surface::u_theta),
       surface("pressure", "Pa", "pressure on the body", &Surface::pressure),
       surface("cp", "1", "pressure coefficient on the body (undefined when U = 0)", &Surface::cp),
-      surface("cp_exact", "1", "exact pressure coefficient on the body (undefined when U = 0)",
-              &Surface::cp_exact),
-      stagnation("r", "m", "radius of each stagnation point, numeric (sorted by θ)", false, false),
-      stagnation("theta", "rad", "angle of each stagnation point, numeric, in [0, 2π)", false, true),
-      stagnation("r_exact", "m", "radius of each stagnation point, exact", true, false),
-      stagnation("theta_exact", "rad", "angle of each stagnation point, exact, in [0, 2π)", true, true),
+      only(Models::potential,
+           surface("cp_exact", "1", "exact pressure coefficient on the body (undefined when U = 0)",
+                   &Surface::cp_exact)),
+      only(Models::viscous,
+           surface("shear_stress", "Pa", "wall shear stress τ_w = μ(ζ_w − 2ω)", &Surface::shear_stress)),
+      only(Models::potential,
+           stagnation("r", "m", "radius of each stagnation point, numeric (sorted by θ)", false, false)),
+      only(Models::potential,
+           stagnation("theta", "rad", "angle of each stagnation point, numeric, in [0, 2π)", false, true)),
+      only(Models::potential,
+           stagnation("r_exact", "m", "radius of each stagnation point, exact", true, false)),
+      only(Models::potential,
+           stagnation("theta_exact", "rad", "angle of each stagnation point, exact, in [0, 2π)", true, true)),
+      only(Models::viscous, {"/separation/theta",
+                             "rad",
+                             "angles where the wall shear stress changes sign (separation, reattachment)",
+                             DataShape::points,
+                             [](const FlowResult& r) {
+                               return r.viscous ? r.viscous->separation : std::vector<double>();
+                             },
+                             [](FlowResult& r, std::vector<double> v) { vis(r).separation = std::move(v); }}),
+      history("t", "s", "time of each step", &ForceSample::t),
+      {"/history/t_convective", "1", "time of each step in convective units D/U", DataShape::steps,
+       [](const FlowResult& r) {
+         std::vector<double> v;
+         if (r.viscous)
+           for (const ForceSample& f : r.viscous->history) v.push_back(f.t / r.viscous->time_unit);
+         return v;
+       },
+       {}, Models::viscous},
+      history("cl", "1", "lift coefficient", &ForceSample::C_L),
+      history("cd", "1", "drag coefficient", &ForceSample::C_D),
+      history("cm", "1", "torque coefficient", &ForceSample::C_M),
+      history("lift", "N/m", "lift per unit span", &ForceSample::F_y),
+      history("drag", "N/m", "drag per unit span", &ForceSample::F_x),
+      history("torque", "N*m/m", "torque per unit span", &ForceSample::M),
   };
 }
 
 }  // namespace
+
+bool applies(Models m, const FlowResult& r) {
+  return m == Models::all || (m == Models::viscous) == r.viscous.has_value();
+}
 
 const std::vector<AttrSpec>& result_attributes() {
   static const std::vector<AttrSpec> table = make_attributes();

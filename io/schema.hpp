@@ -23,6 +23,13 @@ constexpr long kFlowFormatVersion = 2;
 /// How an attribute is stored.
 enum class AttrKind { number, integer, text };
 
+/// Which results an entry belongs to: every result, potential flow's only (errors against the exact
+/// solution) or the navier-stokes model's only (means, history). An entry that does not apply is absent.
+enum class Models { all, potential, viscous };
+
+/// Whether an entry for `m` belongs in result r.
+bool applies(Models m, const FlowResult& r);
+
 /// One attribute of a magnus-flow file.
 struct AttrSpec {
   const char* group;  ///< "/", "/parameters", "/forces", "/errors", "/timing"
@@ -40,10 +47,12 @@ struct AttrSpec {
   const char* compare_label = nullptr;   ///< row label in `magnus compare` (nullptr: not a row)
   const char* compare_csv = nullptr;     ///< its CSV column name
   const char* compare_format = nullptr;  ///< its fmt spec in the table
+  Models models = Models::all;
 };
 
 /// What a dataset's shape follows.
-enum class DataShape { n_r, n_theta, grid, points };  ///< (n_r), (n_θ), (n_r, n_θ), (k) stagnation points
+/// (n_r), (n_θ), (n_r, n_θ), (k) stagnation points, (n_steps) history, (k) separation points.
+enum class DataShape { n_r, n_theta, grid, points, steps };
 
 /// One stored dataset of a magnus-flow file.
 struct DatasetSpec {
@@ -55,6 +64,7 @@ struct DatasetSpec {
   std::function<std::vector<double>(const FlowResult&)> values;
   /// Put values read from a file back into a result; may be empty.
   std::function<void(FlowResult&, std::vector<double>)> set;
+  Models models = Models::all;
 };
 
 /// Every attribute, in file order.

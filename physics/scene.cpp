@@ -84,15 +84,22 @@ const char* to_string(TimeMode m) {
 }
 
 const std::vector<std::string>& field_names() {
-  static const std::vector<std::string> names = {"psi",      "u_r", "u_theta",   "u_x",      "u_y",
-                                                 "pressure", "cp",  "psi_exact", "psi_error"};
+  static const std::vector<std::string> names = {"psi", "u_r",       "u_theta",   "u_x",      "u_y",
+                                                 "pressure", "cp", "psi_exact", "psi_error", "vorticity"};
   return names;
+}
+
+bool field_of_model(const std::string& name, FlowModel m) {
+  if (name == "psi_exact" || name == "psi_error") return m == FlowModel::potential;
+  if (name == "vorticity") return m == FlowModel::navier_stokes;
+  return true;
 }
 
 const char* field_units(const std::string& name) {
   if (name == "psi" || name == "psi_exact" || name == "psi_error") return "m^2/s";
   if (name == "pressure") return "Pa";
   if (name == "cp") return "1";
+  if (name == "vorticity") return "1/s";
   return "m/s";
 }
 

@@ -123,9 +123,13 @@ const char* to_string(StencilKind);
 const char* to_string(FlowModel);  ///< "potential" | "navier-stokes"
 const char* to_string(TimeMode);   ///< "auto" | "steady" | "unsteady"
 
-/// The (n_r, n_θ) fields a result can hold (output.fields), in file order.
+/// The (n_r, n_θ) fields a result can hold (output.fields), in file order; psi_exact and psi_error are
+/// potential flow's, vorticity the navier-stokes model's.
 const std::vector<std::string>& field_names();
-/// Units of a field of that name ("m^2/s", "m/s", "Pa", "1").
+/// Whether a model computes the field: psi_exact, psi_error are potential flow's, vorticity is
+/// navier-stokes's, the others both's.
+bool field_of_model(const std::string& name, FlowModel m);
+/// Units of a field of that name ("m^2/s", "m/s", "Pa", "1", "1/s").
 const char* field_units(const std::string& name);
 
 }  // namespace magnus

@@ -25,17 +25,20 @@ bool FieldSelection::any_velocity() const {
   return false;
 }
 
-FieldSelection select_fields(const std::optional<std::vector<std::string>>& names) {
+FieldSelection select_fields(const std::optional<std::vector<std::string>>& names, FlowModel model) {
   FieldSelection s;
-  if (!names) return s;
+  if (!names) {
+    for (size_t k = 0; k < s.on.size(); ++k) s.on[k] = field_of_model(field_names()[k], model);
+    return s;
+  }
   s.on.assign(field_names().size(), false);
   for (const auto& n : *names) s.on[field_index(n)] = true;
   return s;
 }
 
 const std::vector<double>& Fields::get(const std::string& name) const {
-  const std::vector<double>* all[] = {&psi,      &u_r, &u_theta,   &u_x,      &u_y,
-                                      &pressure, &cp,  &psi_exact, &psi_error};
+  const std::vector<double>* all[] = {&psi,      &u_r, &u_theta,   &u_x,       &u_y,
+                                      &pressure, &cp,  &psi_exact, &psi_error, &vorticity};
   return *all[field_index(name)];
 }
 

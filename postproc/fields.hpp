@@ -10,16 +10,19 @@ namespace magnus {
 
 /// Which (n_r, n_θ) fields to compute and write; everything by default.
 struct FieldSelection {
-  std::vector<bool> on = std::vector<bool>(field_names().size(), true);
+  std::vector<bool> on = std::vector<bool>(field_names().size(), true);  ///< per field_names()
   bool has(const std::string& name) const;
   bool any_velocity() const;
 };
 /// Selection from names (absent: all; empty: none). Throws std::invalid_argument naming an unknown field.
-FieldSelection select_fields(const std::optional<std::vector<std::string>>& names);
+/// Absent names: every field of the model (field_of_model).
+FieldSelection select_fields(const std::optional<std::vector<std::string>>& names,
+                             FlowModel model = FlowModel::potential);
 
 /// Fields (n_r, n_θ), row-major; a field not selected stays empty.
 struct Fields {
   std::vector<double> psi, u_r, u_theta, u_x, u_y, pressure, cp, psi_exact, psi_error;
+  std::vector<double> vorticity;  ///< ζ = −∇²ψ, 1/s (navier-stokes)
   /// The field of a given name (one of field_names()).
   const std::vector<double>& get(const std::string& name) const;
 };
@@ -32,6 +35,7 @@ struct Surface {
   std::vector<double> u_fluct;       ///< u' = u_θ − ū, m/s
   std::vector<double> pressure;      ///< Pa
   std::vector<double> cp, cp_exact;  ///< empty when U = 0 (undefined)
+  std::vector<double> shear_stress;  ///< wall shear τ_w = μ(ζ_w − 2ω), Pa (navier-stokes)
 };
 
 /// Order of the derivative formulas matching a stencil: 2 (5-point) or 6 (9-point).

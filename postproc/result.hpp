@@ -2,8 +2,11 @@
 // Everything one run produces, post-processed from ψ: what the files and the summary show.
 #include <string>
 #include <vector>
+#include <optional>
+
 #include "postproc/fields.hpp"
 #include "postproc/forces.hpp"
+#include "postproc/unsteady.hpp"
 
 namespace magnus {
 
@@ -20,6 +23,39 @@ struct RunInfo {
   int threads = 1;
 };
 
+/// One stored state of a navier-stokes run (output.snapshots): an XDMF time series plays them.
+struct Snapshot {
+  double t = 0.0;                        ///< time, s
+  std::vector<double> psi, vorticity;    ///< ψ (m²/s), ζ (1/s), (n_r, n_θ) row-major
+};
+
+/// What the navier-stokes model adds to a result. Means and amplitudes are over the last whole shedding
+/// period when the flow is periodic, else the last step's values.
+struct ViscousPart {
+  double viscosity = 0.0;                ///< ν, m²/s
+  std::optional<double> reynolds;        ///< U·2a/ν (undefined when U = 0)
+  double time_unit = 0.0;                ///< D/U_ref, s (U_ref = U, or a|ω| when U = 0)
+  std::string status;                    ///< why the run stopped (steady, converged, t_end, interrupted…)
+  bool steady = false, periodic = false, converged = false;
+  bool partial = false;                  ///< interrupted (Ctrl-C) or stopped on an error before the end
+  double t = 0.0;                        ///< the time reached, s
+  double dt = 0.0;                       ///< the last time step, s
+  long steps = 0;
+  double Gamma_R = 0.0;                  ///< circulation on the outer ring r = R, m²/s
+  ViscousForces last;                    ///< forces at the last step (pressure and friction parts)
+  std::optional<double> cl_mean, cd_mean, cm_mean, cl_amplitude, cd_amplitude;
+  std::optional<double> strouhal;        ///< f·D/U from the lift signal (periodic only)
+  std::optional<double> period;          ///< shedding period, s (periodic only)
+  double lift_mean = 0.0, drag_mean = 0.0, torque_mean = 0.0;  ///< N/m, N/m, N·m/m
+  double spin_power_mean = 0.0;          ///< −M̄ω, W/m
+  std::optional<double> cl_ideal;        ///< potential flow's C_L for the same scene, −2πα
+  std::optional<double> magnus_ratio;    ///< S(Re, α)/(2πρa²) = C_L,mean / C_L,ideal (undefined at α = 0)
+  std::vector<double> separation;        ///< angles where τ_w = 0, rad in [0, 2π)
+  std::optional<double> recirculation_length;  ///< behind the body along +x, over D (steady flow)
+  std::vector<ForceSample> history;      ///< one sample per step
+  std::vector<Snapshot> snapshots;       ///< the last output.snapshots states, oldest first
+};
+
 struct FlowResult {
   Case c;
   PolarGrid grid;
@@ -30,6 +66,7 @@ struct FlowResult {
   std::vector<StagnationPoint> stagnation, stagnation_exact;
   Timing timing;
   RunInfo info;
+  std::optional<ViscousPart> viscous;  ///< present for navier-stokes results
 };
 
 /// Fields, surface, forces, stagnation points and errors from the superposition basis ψ_U, ψ_Γ
