@@ -35,6 +35,22 @@ void check_accepted(const Case& c) {
     finding("a range check let a value through", c.source_text);
   if (c.grid.n_theta < 8 || c.grid.n_theta % 2 != 0 || c.grid.n_r < 0 || c.output.file.empty())
     finding("a grid or output check let a value through", c.source_text);
+  // The viscosity (given, or derived from Re) and the Reynolds number: finite, and ν > 0 when given.
+  if (!std::isfinite(c.scene.viscosity) || c.scene.viscosity < 0 || !std::isfinite(c.scene.reynolds()) ||
+      (c.scene.reynolds_given && !(c.scene.reynolds_value > 0 && c.scene.viscosity > 0)))
+    finding("a viscosity check let a value through", c.source_text);
+  if (c.model == FlowModel::navier_stokes) {
+    const TimeRequest& t = c.time;
+    if (!(c.scene.viscosity > 0) || (c.scene.speed == 0 && c.scene.spin == 0) || c.scene.circulation_given ||
+        c.grid.tolerance != 0 || c.grid.spacing != Spacing::geometric ||
+        !std::isfinite(c.scene.reference_speed() * 2.0 * c.scene.radius / c.scene.viscosity))
+      finding("a navier-stokes case check let a value through", c.source_text);
+    if (!(t.end > 0 && std::isfinite(t.end) && t.dt >= 0 && std::isfinite(t.dt) && t.cfl > 0 &&
+          t.cfl <= 0.8 && t.mean_tolerance > 0 && t.mean_tolerance <= 0.1 && t.checkpoint_interval >= 0 &&
+          std::isfinite(t.checkpoint_interval) && c.output.snapshots >= 0 && c.output.snapshots <= 10000 &&
+          c.output.snapshot_interval > 0 && std::isfinite(c.output.snapshot_interval)))
+      finding("a [time] or snapshot check let a value through", c.source_text);
+  }
   // The resolved case is stored in every result and echoed: it must be a valid case that resolves to itself.
   Case again;
   try {

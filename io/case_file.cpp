@@ -181,6 +181,8 @@ void apply_override(toml::table& t, const std::string& spec) {
   // An override of one of a mutually exclusive group replaces the others of its group.
   if (section == "cylinder" && (key == "spin" || key == "spin_ratio" || key == "rpm"))
     for (const char* k : {"spin", "spin_ratio", "rpm"}) target->erase(k);
+  if (section == "flow" && (key == "viscosity" || key == "reynolds"))
+    for (const char* k : {"viscosity", "reynolds"}) target->erase(k);
   try {
     toml::table parsed = parse_toml("v = " + text, "--set " + spec);
     target->insert_or_assign(key, parsed["v"]);
@@ -219,8 +221,39 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
   auto positive = [](double v) { return v > 0.0; };
   auto any = [](double) { return true; };
   c.title = r.word("", "title", c.title);
-  // The scene's physical keys are required: a file that omits one is an error, not a demo.
+  const bool ns = r.word("model", "flow", "potential", {"potential", "navier-stokes"}) == "navier-stokes";
+  c.model = ns ? FlowModel::navier_stokes : FlowModel::potential;
+  // Each model's own keys. The viscous model computes the circulation, and has its own grid spacing, far
+  // field and solver; potential flow is not marched in time.
   const std::string model = r.word("circulation", "model", "spin", {"spin", "given"});
+  if (ns) {
+    const char* circulation = "navier-stokes computes the circulation (an output of the viscous model)";
+    if (model == "given")
+      r.fail("circulation.model",
+             fmt::format("\"given\" is only used with model.flow = \"potential\": {}", circulation));
+    if (r.has("circulation", "value"))
+      r.fail("circulation.value",
+             fmt::format("is only used with model.flow = \"potential\": {}", circulation));
+    if (r.word("grid", "spacing", "geometric", {"geometric", "uniform"}) == "uniform")
+      r.fail("grid.spacing",
+             "\"uniform\" is only used with model.flow = \"potential\": the navier-stokes grid is geometric");
+    const std::vector<std::pair<std::string, const char*>> potential_only = {
+        {"domain.far_field", "sets its own far-field conditions"},
+        {"grid.tolerance", "takes the grid as given (grid.n_theta, grid.n_r)"},
+        {"solver.method", "has its own solver"},
+        {"solver.stencil", "has its own discretisation"}};
+    for (const auto& [k, why] : potential_only)
+      if (r.has(k.substr(0, k.find('.')), k.substr(k.find('.') + 1)))
+        r.fail(k, fmt::format("is only used with model.flow = \"potential\": navier-stokes {}", why));
+  } else {
+    std::vector<std::string> ns_only;
+    for (const auto& k : case_key_table().at("time")) ns_only.push_back("time." + k);
+    ns_only.insert(ns_only.end(), {"output.snapshots", "output.snapshot_interval"});
+    for (const auto& k : ns_only)
+      if (r.has(k.substr(0, k.find('.')), k.substr(k.find('.') + 1)))
+        r.fail(k, "is only used with model.flow = \"navier-stokes\"");
+  }
+  // The scene's physical keys are required: a file that omits one is an error, not a demo.
   c.scene.circulation_given = model == "given";
   r.require("cylinder", "radius", "the cylinder radius a, m");
   r.require("flow", "speed", "the freestream speed U, m/s");
@@ -232,6 +265,9 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
       r.fail("cylinder." + k, fmt::format("conflicts with cylinder.{}: give exactly one of them", spin_key));
     spin_key = k;
   }
+  if (spin_key.empty() && ns)
+    r.fail("cylinder.spin",
+           "required key is missing: give one of cylinder.spin (rad/s), cylinder.spin_ratio or cylinder.rpm");
   if (spin_key.empty() && !c.scene.circulation_given)
     r.fail("cylinder.spin",
            "required key is missing: give one of cylinder.spin (rad/s), cylinder.spin_ratio or "
@@ -241,6 +277,21 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
       "flow", "speed", c.scene.speed, [](double v) { return v >= 0.0; }, ">= 0 (m/s)");
   c.scene.density = r.number("flow", "density", c.scene.density, positive, "> 0 (kg/m^3)");
   c.scene.pressure_inf = r.number("flow", "pressure", c.scene.pressure_inf, any, "finite (Pa)");
+  // The viscosity: ν or Re = U·2a/ν, exactly one; required for navier-stokes, reported for potential flow.
+  const bool has_nu = r.has("flow", "viscosity"), has_re = r.has("flow", "reynolds");
+  if (has_nu && has_re) r.fail("flow.reynolds", "conflicts with flow.viscosity: give exactly one of them");
+  if (ns && !has_nu && !has_re)
+    r.fail("flow.viscosity",
+           "required key is missing: model.flow = \"navier-stokes\" needs flow.viscosity (nu, m^2/s) or "
+           "flow.reynolds (Re = U*2a/nu)");
+  c.scene.viscosity = r.number("flow", "viscosity", 0.0, positive, "> 0 (m^2/s)");
+  if (has_re) {
+    c.scene.reynolds_given = true;
+    c.scene.reynolds_value = r.number("flow", "reynolds", 0.0, positive, "> 0 (Re = U*2a/nu)");
+    if (c.scene.speed == 0.0)
+      r.fail("flow.reynolds", "needs flow.speed > 0 (Re = U*2a/nu); give flow.viscosity instead");
+    c.scene.viscosity = c.scene.speed * 2.0 * c.scene.radius / c.scene.reynolds_value;
+  }
   if (spin_key == "spin_ratio") {
     const double alpha = r.number("cylinder", "spin_ratio", 0.0, any, "finite");
     if (c.scene.speed == 0.0 && alpha != 0.0)
@@ -261,9 +312,15 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
     r.fail("cylinder.spin_ratio",
            fmt::format("gives a spin omega = alpha*U/a that is not finite (a = {}, U = {})", c.scene.radius,
                        c.scene.speed));
+  // Navier-stokes allows still fluid around a spinning cylinder (the time unit is then D/(a|ω|)); with
+  // neither U nor ω nothing moves.
+  if (ns && c.scene.speed == 0.0 && c.scene.spin == 0.0)
+    r.fail("flow.speed",
+           "0 needs a spinning cylinder with model.flow = \"navier-stokes\" (cylinder.spin != 0): in still "
+           "fluid nothing else moves");
   c.grid.outer_radius = r.number(
-      "domain", "outer_radius", c.grid.outer_radius, [](double v) { return v > 1.0 && v <= 1e12; },
-      "> 1 and <= 1e12 (R/a)");
+      "domain", "outer_radius", ns ? kNsDefaultOuterRadius : c.grid.outer_radius,
+      [](double v) { return v > 1.0 && v <= 1e12; }, "> 1 and <= 1e12 (R/a)");
   SceneKeys keys;
   if (!spin_key.empty()) keys.spin = "cylinder." + spin_key;
   if (spin_key == "spin_ratio" || spin_key == "rpm")
@@ -276,8 +333,8 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
                          ? FarField::exact
                          : FarField::freestream;
   c.grid.n_theta = int(r.integer(
-      "grid", "n_theta", c.grid.n_theta, [](long v) { return v >= 8 && v <= (1 << 20) && v % 2 == 0; },
-      "even, >= 8 and <= 1048576"));
+      "grid", "n_theta", ns ? kNsDefaultNTheta : c.grid.n_theta,
+      [](long v) { return v >= 8 && v <= (1 << 20) && v % 2 == 0; }, "even, >= 8 and <= 1048576"));
   c.grid.n_r = int(r.integer(
       "grid", "n_r", c.grid.n_r, [](long v) { return v == 0 || (v >= 3 && v <= (1 << 22)); },
       "0 (square cells) or 3 ... 4194304"));
@@ -301,6 +358,27 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
   c.output.compression = int(r.integer(
       "output", "compression", c.output.compression, [](long v) { return v >= 0 && v <= 9; },
       "an integer from 0 (none) to 9"));
+  if (ns) {
+    const std::string mode = r.word("time", "mode", "auto", {"auto", "steady", "unsteady"});
+    c.time.mode = mode == "auto"     ? TimeMode::automatic
+                  : mode == "steady" ? TimeMode::steady
+                                     : TimeMode::unsteady;
+    auto non_negative = [](double v) { return v >= 0.0; };
+    c.time.end = r.number("time", "end", c.time.end, positive, "> 0 (D/U)");
+    c.time.dt = r.number("time", "dt", c.time.dt, non_negative, ">= 0 (D/U; 0: from time.cfl)");
+    c.time.cfl = r.number(
+        "time", "cfl", c.time.cfl, [](double v) { return v > 0.0 && v <= 0.8; }, "> 0 and <= 0.8");
+    c.time.mean_tolerance = r.number(
+        "time", "mean_tolerance", c.time.mean_tolerance, [](double v) { return v > 0.0 && v <= 0.1; },
+        "> 0 and <= 0.1");
+    c.time.checkpoint_interval = r.number("time", "checkpoint_interval", c.time.checkpoint_interval,
+                                          non_negative, ">= 0 (D/U; 0: none)");
+    c.output.snapshots = int(r.integer(
+        "output", "snapshots", c.output.snapshots, [](long v) { return v >= 0 && v <= 10000; },
+        "an integer from 0 (none) to 10000"));
+    c.output.snapshot_interval =
+        r.number("output", "snapshot_interval", c.output.snapshot_interval, positive, "> 0 (D/U)");
+  }
   for (const auto& f : c.output.fields.value_or(std::vector<std::string>{})) {
     const auto& names = field_names();
     if (std::find(names.begin(), names.end(), f) == names.end()) {
@@ -359,14 +437,25 @@ std::string to_toml(const Case& c) {
     std::string s = fmt::format("{}", v);
     return s.find_first_of(".eE") == std::string::npos ? s + ".0" : s;
   };
+  // A navier-stokes case leaves out the keys of potential flow's circulation, far field and solver (they
+  // would be errors), and adds its model, [time] and snapshots; a potential case writes none of these.
+  const bool ns = c.model == FlowModel::navier_stokes;
   std::string t = fmt::format("title = {}\n", str(c.title));
+  if (ns) t += fmt::format("\n[model]\nflow = {}\n", str(to_string(c.model)));
   t += fmt::format("\n[cylinder]\nradius = {}\nspin = {}\n", num(c.scene.radius), num(c.scene.spin));
   t += fmt::format("\n[flow]\nspeed = {}\ndensity = {}\npressure = {}\n", num(c.scene.speed),
                    num(c.scene.density), num(c.scene.pressure_inf));
-  t += fmt::format("\n[circulation]\nmodel = {}\n", str(c.scene.circulation_given ? "given" : "spin"));
-  if (c.scene.circulation_given) t += fmt::format("value = {}\n", num(c.scene.circulation_value));
-  t += fmt::format("\n[domain]\nouter_radius = {}\nfar_field = {}\n", num(c.grid.outer_radius),
-                   str(to_string(c.grid.far_field)));
+  // The viscosity as given: a given Re stays the input (ν follows U and a), not the ν derived from it.
+  if (c.scene.reynolds_given)
+    t += fmt::format("reynolds = {}\n", num(c.scene.reynolds_value));
+  else if (c.scene.viscosity > 0.0)
+    t += fmt::format("viscosity = {}\n", num(c.scene.viscosity));
+  if (!ns) {
+    t += fmt::format("\n[circulation]\nmodel = {}\n", str(c.scene.circulation_given ? "given" : "spin"));
+    if (c.scene.circulation_given) t += fmt::format("value = {}\n", num(c.scene.circulation_value));
+  }
+  t += fmt::format("\n[domain]\nouter_radius = {}\n", num(c.grid.outer_radius));
+  if (!ns) t += fmt::format("far_field = {}\n", str(to_string(c.grid.far_field)));
   // With a tolerance the grid and stencil are chosen at run time (and stored in /parameters).
   // With a tolerance and no stated spacing the search chooses it too: the resolved case leaves it out.
   t += "\n[grid]\n";
@@ -376,8 +465,15 @@ std::string to_toml(const Case& c) {
     t += fmt::format("tolerance = {}\n", num(c.grid.tolerance));
   else
     t += fmt::format("n_theta = {}\nn_r = {}\n", c.grid.n_theta, c.grid.n_r);
-  t += fmt::format("\n[solver]\nmethod = {}\n", str(to_string(c.solver.method)));
-  if (c.grid.tolerance == 0.0) t += fmt::format("stencil = {}\n", str(to_string(c.solver.stencil)));
+  if (!ns) {
+    t += fmt::format("\n[solver]\nmethod = {}\n", str(to_string(c.solver.method)));
+    if (c.grid.tolerance == 0.0) t += fmt::format("stencil = {}\n", str(to_string(c.solver.stencil)));
+  } else {
+    t += fmt::format(
+        "\n[time]\nmode = {}\nend = {}\ndt = {}\ncfl = {}\nmean_tolerance = {}\ncheckpoint_interval = {}\n",
+        str(to_string(c.time.mode)), num(c.time.end), num(c.time.dt), num(c.time.cfl),
+        num(c.time.mean_tolerance), num(c.time.checkpoint_interval));
+  }
   t += fmt::format("\n[output]\nfile = {}\n", str(c.output.file));
   if (c.output.fields) {
     std::string list;
@@ -385,6 +481,9 @@ std::string to_toml(const Case& c) {
     t += fmt::format("fields = [{}]\n", list);
   }
   if (c.output.compression > 0) t += fmt::format("compression = {}\n", c.output.compression);
+  if (ns)
+    t += fmt::format("snapshots = {}\nsnapshot_interval = {}\n", c.output.snapshots,
+                     num(c.output.snapshot_interval));
   return t;
 }
 

@@ -20,7 +20,9 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
 /// Read and parse a case file. Throws CaseError (missing file, bad TOML, bad keys or values).
 Case load_case(const std::string& path, const std::vector<std::string>& overrides = {});
 
-/// The resolved case as TOML: every key with its final value.
+/// The resolved case as TOML: every key of its model with its final value. The viscosity is written as given
+/// (flow.viscosity or flow.reynolds); a navier-stokes case adds [model], [time] and the snapshot keys and
+/// leaves out potential flow's [circulation], domain.far_field and [solver].
 std::string to_toml(const Case& c);
 
 /// Every valid "section.key".

@@ -11,13 +11,15 @@ namespace magnus {
 const std::map<std::string, std::vector<std::string>>& case_key_table() {
   static const std::map<std::string, std::vector<std::string>> s = {
       {"", {"title"}},
+      {"model", {"flow"}},
       {"cylinder", {"radius", "spin", "spin_ratio", "rpm"}},
-      {"flow", {"speed", "density", "pressure"}},
+      {"flow", {"speed", "density", "pressure", "viscosity", "reynolds"}},
       {"circulation", {"model", "value"}},
       {"domain", {"outer_radius", "far_field"}},
       {"grid", {"n_theta", "n_r", "spacing", "tolerance"}},
       {"solver", {"method", "stencil"}},
-      {"output", {"file", "fields", "compression"}},
+      {"time", {"mode", "end", "dt", "cfl", "mean_tolerance", "checkpoint_interval"}},
+      {"output", {"file", "fields", "compression", "snapshots", "snapshot_interval"}},
   };
   return s;
 }
@@ -55,14 +57,17 @@ std::string nearest_key(const std::string& key) {
                                                              {"flow.rho", "flow.density"},
                                                              {"cylinder.omega", "cylinder.spin"},
                                                              {"cylinder.alpha", "cylinder.spin_ratio"},
-                                                             {"cylinder.a", "cylinder.radius"}};
+                                                             {"cylinder.a", "cylinder.radius"},
+                                                             {"flow.nu", "flow.viscosity"},
+                                                             {"flow.re", "flow.reynolds"},
+                                                             {"model", "model.flow"},
+                                                             {"flow.model", "model.flow"}};
   if (const auto it = aliases.find(key); it != aliases.end()) return it->second;
   // Keys of the design (docs/design.md) that mean something else and this version does not read: never
   // "corrected".
-  for (const char* other :
-       {"cylinder.span", "flow.direction", "flow.viscosity", "flow.reynolds", "flow.course", "model.flow"})
+  for (const char* other : {"cylinder.span", "flow.direction", "flow.course"})
     if (key == other) return "";
-  // The edit distance is at least the difference in length, and no valid key is longer than 20 characters:
+  // The edit distance is at least the difference in length, and no valid key is longer than 24 characters:
   // a key this long is never near one (and a megabyte key would cost seconds).
   if (key.size() > 64) return "";
   // Near spellings only: within 2 edits and a third of the length, compared in the key's own section when it

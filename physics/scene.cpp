@@ -33,7 +33,7 @@ std::optional<Overflow> find_overflow(const Scene& s, double outer_radius, const
   };
   const Factor fa{&k.radius, a}, fU{&k.speed, U}, frho{&k.density, rho}, fw{&k.spin, w}, fp{&k.pressure, p};
   const double u_max = 2.0 * U + std::fabs(G) / (2.0 * M_PI * a), R = outer_radius * a;
-  const std::vector<std::tuple<const char*, double, std::vector<Factor>>> checks = {
+  std::vector<std::tuple<const char*, double, std::vector<Factor>>> checks = {
       {"the circulation Γ", G, gamma},
       {"the spin ratio α = aω/U", s.spin_ratio(), {fa, fw, fU}},
       {"U²", U * U, {fU}},
@@ -52,6 +52,16 @@ std::optional<Overflow> find_overflow(const Scene& s, double outer_radius, const
       {"the streamfunction at the outer boundary U·R + |Γ|/(2π)·ln(R/a)",
        U * R + std::fabs(G) / (2.0 * M_PI) * std::log(outer_radius), with({fU, fa}, gamma)},
   };
+  // The viscosity, when given: ν derived from a given Re, or Re derived from a given ν (U_ref: U, or the wall
+  // speed a|ω| in still fluid).
+  if (s.reynolds_given)
+    checks.emplace_back("the viscosity ν = U·2a/Re", s.viscosity,
+                        std::vector<Factor>{fU, fa, {&k.reynolds, s.reynolds_value}});
+  else if (s.viscosity != 0.0)
+    checks.emplace_back(U > 0.0 ? "the Reynolds number Re = U·2a/ν" : "the wall Reynolds number a|ω|·2a/ν",
+                        s.reference_speed() * 2.0 * a / s.viscosity,
+                        U > 0.0 ? std::vector<Factor>{fU, fa, {&k.viscosity, s.viscosity}}
+                                : std::vector<Factor>{fa, fw, {&k.viscosity, s.viscosity}});
   for (const auto& [quantity, value, factors] : checks) {
     bool inputs_nonzero = true;
     for (const auto& f : factors) inputs_nonzero = inputs_nonzero && f.value != 0.0;

@@ -29,6 +29,8 @@ struct Scene {
   bool circulation_given = false;  ///< circulation model "given" (else "spin": Γ = 2πa²ω)
   double circulation_value = 0.0;  ///< Γ for the model "given", m^2/s
   double viscosity = 0.0;          ///< ν, m^2/s (kinematic); 0: not given (potential flow only)
+  bool reynolds_given = false;  ///< flow.reynolds was given: ν = U·2a/Re (else flow.viscosity or neither)
+  double reynolds_value = 0.0;  ///< Re as given in flow.reynolds (echoed as given), else 0
 
   /// Γ = 2πa²ω (spin model) or the given value, m^2/s.
   double Gamma() const;
@@ -106,14 +108,17 @@ struct Overflow {
 /// The case-file keys the scene's inputs came from (spin: "cylinder.spin", ".spin_ratio" or ".rpm").
 struct SceneKeys {
   std::string radius = "cylinder.radius", spin = "cylinder.spin", speed = "flow.speed",
-              density = "flow.density", pressure = "flow.pressure", circulation = "circulation.value";
+              density = "flow.density", pressure = "flow.pressure", circulation = "circulation.value",
+              viscosity = "flow.viscosity", reynolds = "flow.reynolds";
   double spin_value = 0.0;  ///< the value given for `spin` in its own units (α, rev/min); 0: ω itself
 };
 
 /// The first of Γ, α = aω/U, U², ρU², ½ρU²·2a, Γ, ρUΓ, the seed ΔP = 2ρUaω, 4ρUΓ/(2πa), F_seed = 4ρUa²ω, S =
 /// 2πρa², the surface speed 2U + |Γ|/(2πa) and pressure p∞ ± ½ρ(2U + |Γ|/(2πa))², and ψ(R) ≈ U·R +
-/// |Γ|/(2π)·ln(R/a) (R = outer_radius·a), C_L = −Γ/(Ua) and the free stagnation radius |Γ|/(2πU) that is not
-/// finite, or that a product of non-zero inputs underflows below the smallest normal double; empty if none.
+/// |Γ|/(2π)·ln(R/a) (R = outer_radius·a), C_L = −Γ/(Ua), the free stagnation radius |Γ|/(2πU) and, when a
+/// viscosity is given, ν = U·2a/Re (from flow.reynolds) or the Reynolds number U_ref·2a/ν (from
+/// flow.viscosity, U_ref = reference_speed()) that is not finite, or that a product of non-zero inputs
+/// underflows below the smallest normal double; empty if none.
 std::optional<Overflow> find_overflow(const Scene& s, double outer_radius, const SceneKeys& keys = {});
 
 const char* to_string(Spacing);
