@@ -381,10 +381,15 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
   }
   for (const auto& f : c.output.fields.value_or(std::vector<std::string>{})) {
     const auto& names = field_names();
-    if (std::find(names.begin(), names.end(), f) == names.end()) {
+    if (std::find(names.begin(), names.end(), f) == names.end() || !field_of_model(f, c.model)) {
       std::string list;
-      for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-      r.fail("output.fields", fmt::format("unknown field \"{}\" (fields: {})", f, list));
+      for (const auto& n : names)
+        if (field_of_model(n, c.model)) list += (list.empty() ? "" : ", ") + n;
+      r.fail("output.fields", fmt::format("{} field \"{}\" (fields of {} flow: {})",
+                                          std::find(names.begin(), names.end(), f) == names.end()
+                                              ? "unknown"
+                                              : "no such",
+                                          f, to_string(c.model), list));
     }
   }
   if (c.solver.stencil == StencilKind::nine_point && c.grid.spacing == Spacing::uniform)
