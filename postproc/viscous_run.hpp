@@ -1,0 +1,38 @@
+#pragma once
+// The navier-stokes chain, written once: case → parameters → time marching from rest (or from a
+// checkpoint) → the last state post-processed into a FlowResult with its viscous part (fields, surface,
+// forces, means, history, snapshots), beside the potential-flow figures for the same scene.
+#include <functional>
+
+#include "postproc/result.hpp"
+
+namespace magnus {
+
+/// The viscous model's parameters of a case (SI): a, U, ω, ν, R/a, n_θ, n_r, Δt (s) and the CFL number.
+NsParams ns_params(const Case& c);
+
+/// A run's state at a checkpoint: enough to go on as if it had not stopped.
+struct Checkpoint {
+  NsState state;
+  std::vector<ForceSample> history;
+  std::vector<Snapshot> snapshots;
+};
+
+/// What a viscous run tells its caller while it runs (each may be empty).
+struct ViscousHooks {
+  /// After every step (a progress line; Ctrl-C): false stops the run, the result is then partial.
+  std::function<bool(const NsState&, const ViscousForces&)> on_step;
+  /// Every time.checkpoint_interval (convective units) of simulated time, and when a run fails.
+  std::function<void(const Checkpoint&)> on_checkpoint;
+};
+
+/// Throws std::invalid_argument (one line naming the key) for a case the model refuses: time.dt above the
+/// stability limit of the start, a grid too coarse for the boundary layer, U = 0 and ω = 0.
+FlowResult run_viscous(const Case& c, const ViscousHooks& hooks = {}, const Checkpoint* resume = nullptr);
+
+/// The FlowResult of a state: fields (ψ, u, p, Cp, ζ), surface (u_θ, p, Cp, τ_w), forces and the viscous
+/// part from the run's history (means, amplitudes, St, separation, the ideal figures).
+FlowResult viscous_result(const Case& c, const NsParams& p, const UnsteadyResult& run,
+                          std::vector<Snapshot> snapshots);
+
+}  // namespace magnus
