@@ -6,6 +6,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 
 #include "io/checkpoint.hpp"
@@ -54,10 +55,14 @@ void run_viscous_case(const Case& c, bool resume, bool quiet) {
   const double t0 = start ? start->state.t : 0.0;
   long steps = 0;
   bool printed = false;
+  // For the tests of --resume: kill the process outright (no clean-up) once t reaches this, in D/U.
+  const char* kill_at = std::getenv("MAGNUS_TEST_KILL_AT");
+  const double t_kill = kill_at ? std::atof(kill_at) * unit : -1.0;
 
   ViscousHooks hooks;
   hooks.on_step = [&](const NsState& s, const ViscousForces& f) {
     ++steps;
+    if (t_kill >= 0.0 && s.t >= t_kill) std::raise(SIGKILL);
     if (progress) {
       const auto now = std::chrono::steady_clock::now();
       if (now - last_print > std::chrono::milliseconds(250)) {

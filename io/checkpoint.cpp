@@ -33,8 +33,9 @@ std::string checkpoint_path(const std::string& result_path) {
 
 std::string checkpoint_key(const Case& c) {
   const NsParams p = ns_params(c);
+  const PolarGrid g = ns_grid(p);  // the grid as built: n_r = 0 asks for square cells
   return fmt::format("a={:.17g} U={:.17g} omega={:.17g} nu={:.17g} rho={:.17g} R/a={:.17g} n_theta={} n_r={}",
-                     p.a, p.U, p.omega, p.nu, c.scene.density, p.outer_over_a, p.n_theta, p.n_r);
+                     p.a, p.U, p.omega, p.nu, c.scene.density, g.outer_radius() / p.a, g.n_theta, g.n_r);
 }
 
 void write_checkpoint(const std::string& path, const Case& c, const Checkpoint& cp) {
