@@ -41,6 +41,16 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
   line("model", "navier-stokes: 2D incompressible laminar, vorticity–streamfunction, no slip held exactly");
   line("grid", fmt::format("n_θ × n_r = {} × {} ({} nodes), geometric spacing, R/a = {:.6g}", g.n_theta, g.n_r,
                            g.nodes(), g.outer_radius() / g.a));
+  // The boundary layer's thickness scales as D/√Re: the cells across it say how well the wall is resolved.
+  if (v.reynolds && *v.reynolds > 0.0) {
+    const double cells = (2.0 * g.a / std::sqrt(*v.reynolds)) / (g.r[1] - g.r[0]);
+    line("", fmt::format("boundary layer: {:.1f} wall cells across D/√Re{}", cells,
+                         cells < kWallCellsForPercent
+                             ? fmt::format(" — coarse: below {:.0f} expect errors of several % in C_D (raise "
+                                           "grid.n_theta)",
+                                           kWallCellsForPercent)
+                             : ""));
+  }
   const double unit = v.time_unit;
   const double steps_per_s = r.timing.solve_s > 0.0 ? double(v.steps) / r.timing.solve_s : 0.0;
   line("run", fmt::format("t = {} s = {} D/U, {} steps of Δt = {} s ({} D/U), {} ({:.0f} steps/s)", num(v.t),
@@ -50,13 +60,13 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
   if (!v.converged && !v.partial)
     line("", "not converged: the means below are the last period's (or the last step's); raise time.end");
   s += "\n";
-  s += fmt::format("{:<15}{:<34}{}\n", "", "viscous (this run)", "ideal (potential flow, same scene)");
+  s += fmt::format("{:<15}{:<40}{}\n", "", "viscous (this run)", "ideal (potential flow, same scene)");
   auto row = [&](const std::string& label, const std::string& a, const std::string& b) {
-    s += fmt::format("{:<15}{:<34}{}\n", label, a, b);
+    s += fmt::format("{:<15}{:<40}{}\n", label, a, b);
   };
   if (moving) {
-    const std::string amp = v.cl_amplitude ? fmt::format(" ± {}", fmt_opt(v.cl_amplitude, "{:.4f}")) : "";
-    row("C_L", fmt::format("{}{} (mean)", fmt_opt(v.cl_mean, "{:.5f}"), amp),
+    const std::string amp = v.cl_amplitude ? fmt::format(" ± {} (amplitude)", fmt_opt(v.cl_amplitude, "{:.4f}")) : "";
+    row("C_L", fmt::format("{} (mean){}", fmt_opt(v.cl_mean, "{:.5f}"), amp),
         fmt::format("{} (−2πα)   seed −4α = {}", fmt_opt(v.cl_ideal, "{:.5f}"),
                     fmt_opt(r.forces.cl_seed_estimate, "{:.5f}")));
     row("C_D", fmt::format("{} (mean)", fmt_opt(v.cd_mean, "{:.5f}")), "0 (d'Alembert)");
@@ -64,7 +74,7 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
                         fmt_opt(v.last.C_D_friction, "{:.4f}")),
         "");
     row("St = fD/U", v.strouhal ? fmt_opt(v.strouhal, "{:.5f}") : (v.steady ? "steady (no shedding)" : "no period found"),
-        "steady");
+        "— (no wake)");
     row("lift F_y", fmt::format("{} N/m (mean)", num(v.lift_mean, "{:.6g}")),
         fmt::format("{} N/m (−ρUΓ)", num(r.forces.lift_kutta_joukowski, "{:.6g}")));
     row("drag F_x", fmt::format("{} N/m (mean)", num(v.drag_mean, "{:.6g}")), "0 N/m");
