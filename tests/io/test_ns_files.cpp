@@ -1,11 +1,13 @@
 // A navier-stokes result in its file: the stored states (/snapshots) and the .xmf's time series of them,
 // read back by read_result and shown by inspect; the potential flow's sidecar is untouched.
+#include <fmt/core.h>
 #include <catch2/catch.hpp>
 
 #include <cstdlib>
 #include <filesystem>
 
 #include "io/hdf5_io.hpp"
+#include "io/inspect.hpp"
 #include "io/result_reader.hpp"
 #include "io/schema.hpp"
 #include "io/viscous_fixture.hpp"
@@ -107,4 +109,21 @@ TEST_CASE("potential flow: the sidecar is the last state's grid alone, as before
   CHECK(x.find("Collection") == std::string::npos);
   CHECK(x.find("<Time") == std::string::npos);
   CHECK(count(x, "<Grid ") == 1);
+}
+
+TEST_CASE("inspect: a navier-stokes file's history length and stored states, with units",
+          "[io][inspect][viscous]") {
+  const std::string dir = test::temp_dir("ns-inspect");
+  const FlowResult r = test::viscous_result_by_hand(1.0, 16, 10, 5);
+  write_result(r, dir + "/ns.h5");
+  const std::string s = describe_result(dir + "/ns.h5");
+  CAPTURE(s);
+  CHECK(s.find("/snapshots/vorticity") != std::string::npos);
+  CHECK(s.find("(5 × 10 × 16)  [1/s]") != std::string::npos);
+  CHECK(s.find("/snapshots/t") != std::string::npos);
+  CHECK(s.find(fmt::format("history: {} steps", r.viscous->history.size())) != std::string::npos);
+  CHECK(s.find("snapshots: 5 stored states") != std::string::npos);
+  // The per-state views are summed up in one line, not listed one by one.
+  CHECK(s.find("/mesh/snapshots/psi/3") == std::string::npos);
+  CHECK(s.find("/mesh/snapshots/") != std::string::npos);
 }
