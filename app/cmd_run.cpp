@@ -6,8 +6,10 @@
 #include <memory>
 
 #include "app/commands.hpp"
+#include "app/run_viscous.hpp"
 #include "app/threads.hpp"
 #include "io/case_file.hpp"
+#include "io/checkpoint.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/inspect.hpp"
 #include "io/output_size.hpp"
@@ -21,7 +23,7 @@ namespace magnus {
 namespace {
 
 void command_run(const std::string& case_path, const std::string& output,
-                 const std::vector<std::string>& sets, int threads, bool quiet, size_t max_bytes) {
+                 const std::vector<std::string>& sets, int threads, bool quiet, size_t max_bytes, bool resume) {
   Case c = load_case(case_path, sets);
   if (!output.empty()) {
     c.output.file = output;
@@ -31,6 +33,13 @@ void command_run(const std::string& case_path, const std::string& output,
   check_distinct_paths({case_path}, {c.output.file, xdmf_path(c.output.file)});
   check_writable(c.output.file);
   check_writable(xdmf_path(c.output.file));
+  if (c.model == FlowModel::navier_stokes) {
+    check_writable(checkpoint_path(c.output.file));
+    check_output_space(c, c.output.file);
+    run_viscous_case(c, resume, quiet);
+    return;
+  }
+  if (resume) throw std::runtime_error("--resume: only a navier-stokes case has checkpoints to resume from");
   // The grid first (a tolerance search picks it), then the free space for its file, then the solve.
   const RunPlan plan = plan_run(c, threads, max_bytes);
   check_output_space(plan.c, c.output.file);
@@ -48,7 +57,7 @@ void add_run_command(CLI::App& app) {
     std::string case_path, output;
     std::vector<std::string> sets;
     int threads = 1;
-    bool quiet = false;
+    bool quiet = false, resume = false;
     std::string tolerance;
     std::string max_memory;
   };
@@ -59,6 +68,8 @@ void add_run_command(CLI::App& app) {
   run->add_option("--set", o->sets, "override a case key: section.key=value (repeatable)");
   run->add_option("--threads", o->threads, "threads for the solver")->check(CLI::Range(1, 64));
   run->add_flag("-q,--quiet", o->quiet, "print nothing on success");
+  run->add_flag("--resume", o->resume,
+                "navier-stokes: go on from the case's checkpoint (OUTPUT.checkpoint.h5) instead of from rest");
   run->add_option(
       "--tolerance", o->tolerance,
       "target relative C_L error, 1e-14 to 0.1: choose the smallest grid and stencil (supersedes the "
@@ -82,7 +93,7 @@ void add_run_command(CLI::App& app) {
             fmt::format("--tolerance {}: must be between {:g} and {:g}", o->tolerance, 1e-14, 0.1));
       sets.push_back(fmt::format("grid.tolerance={}", tol));
     }
-    command_run(o->case_path, o->output, sets, usable_threads(o->threads), o->quiet, max_bytes);
+    command_run(o->case_path, o->output, sets, usable_threads(o->threads), o->quiet, max_bytes, o->resume);
   });
 }
 

@@ -6,6 +6,7 @@
 
 #include "io/finite.hpp"
 #include "io/hdf5_io.hpp"
+#include "io/report_viscous.hpp"
 #include "io/text_format.hpp"
 #include "postproc/forces.hpp"
 
@@ -49,6 +50,7 @@ std::string num(double v, const char* spec = "{:.6g}") { return fmt::format(fmt:
 }  // namespace
 
 std::string summary_text(const FlowResult& r, const std::string& output_path) {
+  if (r.viscous) return viscous_summary_text(r, output_path);
   check_finite(r);  // nothing that is not finite is printed
   const Case& c = r.c;
   const PolarGrid& g = r.grid;

@@ -42,6 +42,10 @@ const std::vector<double>& Fields::get(const std::string& name) const {
   return *all[field_index(name)];
 }
 
+std::vector<double>& Fields::get(const std::string& name) {
+  return const_cast<std::vector<double>&>(static_cast<const Fields&>(*this).get(name));
+}
+
 int derivative_order(StencilKind stencil) { return stencil == StencilKind::nine_point ? 6 : 2; }
 
 namespace {

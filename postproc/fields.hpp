@@ -25,6 +25,7 @@ struct Fields {
   std::vector<double> vorticity;  ///< ζ = −∇²ψ, 1/s (navier-stokes)
   /// The field of a given name (one of field_names()).
   const std::vector<double>& get(const std::string& name) const;
+  std::vector<double>& get(const std::string& name);
 };
 
 /// Values on the body r = a (n_θ).

@@ -22,7 +22,8 @@ struct Checkpoint {
 struct ViscousHooks {
   /// After every step (a progress line; Ctrl-C): false stops the run, the result is then partial.
   std::function<bool(const NsState&, const ViscousForces&)> on_step;
-  /// Every time.checkpoint_interval (convective units) of simulated time, and when a run fails.
+  /// Every time.checkpoint_interval (convective units) of simulated time, and when a run is interrupted
+  /// (not when it fails: the last good checkpoint stays).
   std::function<void(const Checkpoint&)> on_checkpoint;
 };
 

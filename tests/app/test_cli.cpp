@@ -194,7 +194,24 @@ TEST_CASE("a successful run replaces the old result and prints the summary", "[a
 /// with lift_abs_max when U = 0), C_D (cd_abs_max, U > 0), the circulation (with circulation_rel_max or
 /// circulation_abs_max), the stagnation points (stagnation_deg, [] for none, with stagnation_tol_deg) and a
 /// free point's radius (stagnation_free_r_over_a with stagnation_r_rel_tol).
+/// A navier-stokes case's expectations: its means and St against published values, each with a tolerance.
+std::string expect_problem_viscous(const toml::table& ex) {
+  static const std::vector<std::string> known = {"model",        "set",         "cl_mean",
+                                                 "cl_mean_rel_max", "cd_mean",  "cd_mean_rel_max",
+                                                 "strouhal",     "strouhal_rel_max"};
+  for (auto&& [k, v] : ex) {
+    (void)v;
+    if (std::find(known.begin(), known.end(), std::string(k.str())) == known.end())
+      return "unknown key " + std::string(k.str()) + " for a navier-stokes case";
+  }
+  for (const auto& k : known)
+    if (k != "model" && k != "set" && !ex[k].value<double>()) return "missing number " + k;
+  return "";
+}
+
 std::string expect_problem(const toml::table& ex) {
+  if (ex["model"].value<std::string>() == std::optional<std::string>("navier-stokes"))
+    return expect_problem_viscous(ex);
   static const std::vector<std::string> known = {"set",
                                                  "cl",
                                                  "cl_rel_max",
@@ -278,6 +295,13 @@ TEST_CASE("every shipped case runs and meets the expected figures beside it", "[
       CAPTURE(o.err);
       REQUIRE(o.status == 0);
       const ResultFile f(dir + "/r.h5");
+      if (ex.contains("model")) {  // navier-stokes: the means and St against published values
+        for (const char* k : {"cl_mean", "cd_mean", "strouhal"}) {
+          CAPTURE(k, f.attr_double("/forces", k));
+          REQUIRE(std::fabs(f.attr_double("/forces", k) / num(k) - 1) <= num((std::string(k) + "_rel_max").c_str()));
+        }
+        continue;
+      }
       if (ex["cl"].is_string()) {
         REQUIRE_FALSE(f.has_attr("/forces", "cl"));
         REQUIRE_FALSE(f.has_attr("/forces", "cd"));

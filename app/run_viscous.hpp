@@ -1,0 +1,13 @@
+#pragma once
+// `magnus run` for a navier-stokes case: the time marching with a progress line, Ctrl-C and checkpoints.
+#include <string>
+
+#include "physics/scene.hpp"
+
+namespace magnus {
+
+/// Run case c (navier-stokes), write its result (and remove its checkpoint once the result is complete),
+/// print the summary unless quiet. resume: continue from the case's checkpoint file.
+void run_viscous_case(const Case& c, bool resume, bool quiet);
+
+}  // namespace magnus

@@ -1,0 +1,109 @@
+#include "io/report_viscous.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+#include "io/finite.hpp"
+#include "io/hdf5_io.hpp"
+#include "io/report.hpp"
+
+namespace magnus {
+
+namespace {
+
+std::string num(double v, const char* spec = "{:.6g}") { return fmt::format(fmt::runtime(spec), v + 0.0); }
+
+std::string wall(double seconds) {
+  return seconds < 60.0 ? fmt::format("{:.3g} s", seconds)
+                        : fmt::format("{}:{:02d} min", int(seconds) / 60, int(seconds) % 60);
+}
+
+}  // namespace
+
+std::string viscous_summary_text(const FlowResult& r, const std::string& output_path) {
+  check_finite(r);  // nothing that is not finite is printed
+  const Case& c = r.c;
+  const Scene& sc = c.scene;
+  const ViscousPart& v = *r.viscous;
+  const PolarGrid& g = r.grid;
+  const bool moving = sc.speed > 0.0;
+  std::string s;
+  auto line = [&s](const std::string& label, const std::string& text) {
+    s += fmt::format("{:<15}{}\n", label, text);
+  };
+  s += fmt::format("magnus {} — {}\n", MAGNUS_VERSION, c.title);
+  line("case", fmt::format("a = {} m, ω = {} rad/s, U = {} m/s, α = aω/U = {}, ρ = {} kg/m³", num(sc.radius),
+                           num(sc.spin), num(sc.speed), moving ? num(sc.spin_ratio()) : "undefined (U = 0)",
+                           num(sc.density)));
+  line("", fmt::format("ν = {} m²/s, Re = U·2a/ν = {}", num(sc.viscosity),
+                       v.reynolds ? num(*v.reynolds, "{:.6g}") : "undefined (U = 0)"));
+  line("model", "navier-stokes: 2D incompressible laminar, vorticity–streamfunction, no slip held exactly");
+  line("grid", fmt::format("n_θ × n_r = {} × {} ({} nodes), geometric spacing, R/a = {:.6g}", g.n_theta, g.n_r,
+                           g.nodes(), g.outer_radius() / g.a));
+  // The boundary layer's thickness scales as D/√Re: the cells across it say how well the wall is resolved.
+  if (v.reynolds && *v.reynolds > 0.0) {
+    const double cells = (2.0 * g.a / std::sqrt(*v.reynolds)) / (g.r[1] - g.r[0]);
+    line("", fmt::format("boundary layer: {:.1f} wall cells across D/√Re{}", cells,
+                         cells < kWallCellsForPercent
+                             ? fmt::format(" — coarse: below {:.0f} expect errors of several % in C_D (raise "
+                                           "grid.n_theta)",
+                                           kWallCellsForPercent)
+                             : ""));
+  }
+  const double unit = v.time_unit;
+  const double steps_per_s = r.timing.solve_s > 0.0 ? double(v.steps) / r.timing.solve_s : 0.0;
+  line("run", fmt::format("t = {} s = {} D/U, {} steps of Δt = {} s ({} D/U), {} ({:.0f} steps/s)", num(v.t),
+                          num(v.t / unit, "{:.5g}"), v.steps, num(v.dt, "{:.4g}"), num(v.dt / unit, "{:.4g}"),
+                          wall(r.timing.total_s), steps_per_s));
+  line("", fmt::format("stopped: {}{}", v.status, v.partial ? " — a PARTIAL result (the file says so)" : ""));
+  if (!v.converged && !v.partial)
+    line("", "not converged: the means below are the last period's (or the last step's); raise time.end");
+  s += "\n";
+  s += fmt::format("{:<15}{:<40}{}\n", "", "viscous (this run)", "ideal (potential flow, same scene)");
+  auto row = [&](const std::string& label, const std::string& a, const std::string& b) {
+    s += fmt::format("{:<15}{:<40}{}\n", label, a, b);
+  };
+  if (moving) {
+    const std::string amp = v.cl_amplitude ? fmt::format(" ± {} (amplitude)", fmt_opt(v.cl_amplitude, "{:.4f}")) : "";
+    row("C_L", fmt::format("{} (mean){}", fmt_opt(v.cl_mean, "{:.5f}"), amp),
+        fmt::format("{} (−2πα)   seed −4α = {}", fmt_opt(v.cl_ideal, "{:.5f}"),
+                    fmt_opt(r.forces.cl_seed_estimate, "{:.5f}")));
+    row("C_D", fmt::format("{} (mean)", fmt_opt(v.cd_mean, "{:.5f}")), "0 (d'Alembert)");
+    row("", fmt::format("last step: pressure {} + friction {}", fmt_opt(v.last.C_D_pressure, "{:.4f}"),
+                        fmt_opt(v.last.C_D_friction, "{:.4f}")),
+        "");
+    row("St = fD/U", v.strouhal ? fmt_opt(v.strouhal, "{:.5f}") : (v.steady ? "steady (no shedding)" : "no period found"),
+        "— (no wake)");
+    row("lift F_y", fmt::format("{} N/m (mean)", num(v.lift_mean, "{:.6g}")),
+        fmt::format("{} N/m (−ρUΓ)", num(r.forces.lift_kutta_joukowski, "{:.6g}")));
+    row("drag F_x", fmt::format("{} N/m (mean)", num(v.drag_mean, "{:.6g}")), "0 N/m");
+    row("Magnus S", fmt::format("{} kg/m", fmt_opt(r.forces.magnus_S, "{:.6g}")),
+        fmt::format("2πρa² = {} kg/m", fmt_opt(r.forces.magnus_S_exact, "{:.6g}")));
+    line("S/(2πρa²)",
+         v.magnus_ratio
+             ? fmt::format("{}: the share of the ideal lift a real cylinder gets at Re = {}, α = {}",
+                           fmt_opt(v.magnus_ratio, "{:.4f}"), fmt_opt(v.reynolds, "{:.4g}"),
+                           num(sc.spin_ratio(), "{:.4g}"))
+             : std::string("undefined (ω = 0: no Magnus lift to compare)"));
+  } else {
+    line("C_L, C_D", "undefined (U = 0: no dynamic pressure to scale by); forces in N/m below");
+    line("forces", fmt::format("F_x = {} N/m, F_y = {} N/m (last step)", num(v.last.F_x, "{:.4g}"),
+                               num(v.last.F_y, "{:.4g}")));
+  }
+  line("torque", fmt::format("{} N·m/m (mean), spin power −Mω = {} W/m", num(v.torque_mean, "{:.6g}"),
+                             num(v.spin_power_mean, "{:.6g}")));
+  std::string sep;
+  for (double th : v.separation) sep += (sep.empty() ? "" : ", ") + fmt::format("{:.2f}°", th * 180.0 / M_PI);
+  line("separation", sep.empty() ? "none (τ_w keeps its sign)" : "τ_w = 0 at θ = " + sep + " (last step)");
+  if (v.recirculation_length) line("recirculation", fmt::format("L/D = {:.4f} (steady)", *v.recirculation_length));
+  if (v.reynolds && *v.reynolds > kReynolds3D)
+    line("note", fmt::format("Re = {:.4g} > {:.0f}: real flow past a cylinder is three-dimensional there; this is "
+                             "the 2D laminar answer, not the real one",
+                             *v.reynolds, kReynolds3D));
+  if (!output_path.empty())
+    line("output", fmt::format("{} (+ {} for ParaView)", output_path, xdmf_path(output_path)));
+  return s;
+}
+
+}  // namespace magnus

@@ -1,0 +1,212 @@
+#include "postproc/viscous_run.hpp"
+
+#include <fmt/core.h>
+
+#include <chrono>
+#include <cmath>
+#include <deque>
+#include <stdexcept>
+
+#include "physics/exact.hpp"
+#include "postproc/ns_pressure.hpp"
+
+namespace magnus {
+
+namespace {
+
+/// The convective time unit D/U_ref, s.
+double time_unit(const Scene& s) { return 2.0 * s.radius / s.reference_speed(); }
+
+/// A weak vortex (Γ = 0.1% of U·D) off the axis behind the body: it breaks the mirror symmetry of the
+/// start so that a flow that sheds starts shedding (round-off alone takes hundreds of D/U at α = 0).
+void break_symmetry(const NsParams& p, const PolarGrid& g, NsState& s) {
+  if (p.U > 0.0) add_vortex_blob(g, s, 3.0 * p.a, 0.6 * p.a, 0.5 * p.a, 1e-3 * p.U * 2.0 * p.a);
+}
+
+}  // namespace
+
+NsParams ns_params(const Case& c) {
+  NsParams p;
+  const Scene& s = c.scene;
+  p.a = s.radius;
+  p.U = s.speed;
+  p.omega = s.spin;
+  p.nu = s.viscosity;
+  p.outer_over_a = c.grid.outer_radius;
+  p.n_theta = c.grid.n_theta;
+  p.n_r = c.grid.n_r;
+  p.cfl = c.time.cfl;
+  p.dt = c.time.dt > 0.0 && s.reference_speed() > 0.0 ? c.time.dt * time_unit(s) : 0.0;
+  return p;
+}
+
+FlowResult viscous_result(const Case& c, const NsParams& p, const UnsteadyResult& run,
+                          std::vector<Snapshot> snapshots) {
+  const auto clock0 = std::chrono::steady_clock::now();
+  const Scene& sc = c.scene;
+  const double a = sc.radius, U = sc.speed, w = sc.spin, rho = sc.density, D = 2.0 * a;
+  FlowResult r;
+  r.c = c;
+  r.grid = ns_grid(p);
+  const PolarGrid& g = r.grid;
+  const NsState& st = run.state;
+  const size_t nt = size_t(g.n_theta), n = size_t(g.n_r) * nt;
+
+  // Fields: ψ and ζ as stepped; u from ψ; p from the pressure Poisson equation; Cp on ½ρU².
+  const FieldSelection sel = select_fields(c.output.fields, c.model);
+  Fields all;
+  all.psi = st.psi;
+  all.vorticity = st.zeta;
+  ns_velocity(g, st.psi, all.u_r, all.u_theta);
+  all.u_x.resize(n), all.u_y.resize(n);
+  for (size_t i = 0; i < size_t(g.n_r); ++i)
+    for (size_t j = 0; j < nt; ++j) {
+      const double cs = std::cos(g.theta[j]), sn = std::sin(g.theta[j]), ur = all.u_r[i * nt + j],
+                   ut = all.u_theta[i * nt + j];
+      all.u_x[i * nt + j] = ur * cs - ut * sn;
+      all.u_y[i * nt + j] = ur * sn + ut * cs;
+    }
+  all.pressure = ns_pressure_field(g, p, rho, sc.pressure_inf, st);
+  const std::vector<double> wall_p(all.pressure.begin(), all.pressure.begin() + long(nt));
+  const double q = 0.5 * rho * U * U;
+  if (U > 0.0)
+    for (double pv : all.pressure) all.cp.push_back((pv - sc.pressure_inf) / q);
+  for (const auto& name : field_names())
+    if (!sel.has(name)) all.get(name).clear();
+  r.fields = std::move(all);
+
+  // Surface: the wall moves with the body; its pressure is the field's wall ring (the θ-integral of
+  // μ ζ_ξ fixed by the r-momentum balance), its shear μ(ζ_w − 2ω).
+  const ViscousSurface vs = viscous_surface(g, p, rho, st);
+  Surface& s = r.surface;
+  s.theta = g.theta;
+  s.u_theta.assign(nt, a * w);
+  s.u_mean = a * w;
+  s.u_fluct.assign(nt, 0.0);
+  s.pressure.assign(wall_p.begin(), wall_p.begin() + long(nt));
+  if (U > 0.0)
+    for (double pv : s.pressure) s.cp.push_back((pv - sc.pressure_inf) / q);
+  s.shear_stress = vs.tau_w;
+
+  // Forces: the last step's, and the potential flow's figures for the same scene beside them.
+  const ViscousForces vf = viscous_forces(g, p, rho, st);
+  Forces& f = r.forces;
+  f.lift = vf.F_y;
+  f.drag = vf.F_x;
+  f.cl = vf.C_L;
+  f.cd = vf.C_D;
+  const ExactFlow ideal = exact_flow(sc);
+  f.lift_kutta_joukowski = ideal.lift(rho);
+  f.circulation_measured = 2.0 * M_PI * a * a * w;  // ∮ u_θ a dθ with u_θ = aω: no slip
+  f.delta_p_top_bottom = periodic_interpolate(s.pressure, M_PI / 2) - periodic_interpolate(s.pressure, 1.5 * M_PI);
+  f.delta_p_top_bottom_exact = ideal.delta_p_top_bottom(rho);
+  f.delta_p_seed_estimate = seed_delta_p(sc);
+  f.magnus_S_exact = 2.0 * M_PI * rho * a * a;
+
+  ViscousPart& v = r.viscous.emplace();
+  v.viscosity = sc.viscosity;
+  if (U > 0.0) v.reynolds = sc.reynolds();
+  v.time_unit = D / sc.reference_speed();
+  v.status = run.message;
+  v.steady = run.steady, v.periodic = run.periodic, v.converged = run.converged;
+  v.partial = run.interrupted || !run.ok;
+  v.t = st.t, v.dt = run.dt, v.steps = run.steps;
+  v.Gamma_R = st.Gamma_R;
+  v.last = vf;
+  if (U > 0.0) {
+    v.cl_mean = run.C_L_mean, v.cd_mean = run.C_D_mean, v.cm_mean = run.C_M_mean;
+    if (run.periodic) {
+      v.cl_amplitude = run.C_L_amplitude, v.cd_amplitude = run.C_D_amplitude;
+      v.strouhal = run.St, v.period = run.period;
+    }
+    v.lift_mean = run.C_L_mean * q * D, v.drag_mean = run.C_D_mean * q * D;
+    v.torque_mean = run.C_M_mean * q * D * D;
+    f.cl_kutta_joukowski = ideal.cl();
+    f.cl_seed_estimate = seed_cl(sc);
+    v.cl_ideal = ideal.cl();
+    if (w != 0.0) {
+      f.magnus_S = -v.lift_mean / (U * w);
+      v.magnus_ratio = run.C_L_mean / ideal.cl();
+    }
+  } else {
+    v.torque_mean = vf.M;  // U = 0: the steady torque (no coefficients)
+  }
+  v.spin_power_mean = -v.torque_mean * w;
+  for (double th : separation_angles(vs)) v.separation.push_back(th);
+  if (run.steady && U > 0.0) v.recirculation_length = recirculation_length(g, st);
+  v.history = run.history;
+  v.snapshots = std::move(snapshots);
+
+  r.timing.solve_s = run.wall_seconds;
+  r.timing.postproc_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock0).count();
+  r.timing.total_s = r.timing.solve_s + r.timing.postproc_s;
+  r.info.method = "fft";
+  return r;
+}
+
+FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoint* resume) {
+  const Scene& sc = c.scene;
+  if (c.model != FlowModel::navier_stokes)
+    throw std::invalid_argument("model.flow: run_viscous needs \"navier-stokes\"");
+  if (!(sc.viscosity > 0.0)) throw std::invalid_argument("flow.viscosity: navier-stokes needs ν > 0");
+  if (!(sc.reference_speed() > 0.0))
+    throw std::invalid_argument("flow.speed and cylinder.spin are both 0: nothing moves, there is no flow");
+  const NsParams p = ns_params(c);
+  const PolarGrid g = ns_grid(p);
+  const double unit = time_unit(sc);
+
+  NsState start;
+  if (resume) {
+    start = resume->state;
+    if (start.psi.size() != g.nodes() || start.zeta.size() != g.nodes())
+      throw std::invalid_argument("the checkpoint's grid is not the case's grid");
+  } else {
+    start = impulsive_start(p, g);
+    if (c.time.mode != TimeMode::steady) break_symmetry(p, g, start);
+  }
+  // An asked Δt above the stability limit of the start is refused (the driver would have to clamp it).
+  if (p.dt > 0.0) {
+    const double limit = cfl_time_step(p, g, start.psi, 0.9 * kNsCflLimit);
+    if (p.dt > limit)
+      throw std::invalid_argument(fmt::format(
+          "time.dt = {:g} (D/U) is above the stability limit {:.4g} of this grid and flow (CFL {:g}): leave "
+          "it out (Δt then follows time.cfl) or lower it",
+          c.time.dt, limit / unit, 0.9 * kNsCflLimit));
+  }
+
+  UnsteadyOptions o;
+  o.t_end = c.time.end * unit;
+  o.rho = sc.density;
+  o.mean_tol = c.time.mean_tolerance;
+  if (c.time.mode == TimeMode::unsteady) o.steady_tol = 0.0;  // march on: a steady flow runs to time.end
+
+  std::vector<ForceSample> history = resume ? resume->history : std::vector<ForceSample>{};
+  std::deque<Snapshot> snaps;
+  if (resume) snaps.assign(resume->snapshots.begin(), resume->snapshots.end());
+  const double snap_every = c.output.snapshot_interval * unit;
+  double next_snap = snaps.empty() ? start.t : snaps.back().t + snap_every;
+  const double ckpt_every = c.time.checkpoint_interval * unit;
+  double next_ckpt = start.t + ckpt_every;
+  // The hooks' copy of the history (a checkpoint needs it; run_unsteady keeps its own for the analysis).
+  std::vector<ForceSample> seen = history;
+  o.on_step = [&](const NsState& s, const ViscousForces& f) {
+    if (seen.empty() || s.t > seen.back().t)
+      seen.push_back({s.t, f.C_L.value_or(0.0), f.C_D.value_or(0.0), f.C_M.value_or(0.0), f.F_x, f.F_y, f.M});
+    if (c.output.snapshots > 0 && s.t >= next_snap - 1e-9 * snap_every) {
+      snaps.push_back({s.t, s.psi, s.zeta});
+      if (snaps.size() > size_t(c.output.snapshots)) snaps.pop_front();
+      next_snap = s.t + snap_every;
+    }
+    if (hooks.on_checkpoint && ckpt_every > 0.0 && s.t >= next_ckpt) {
+      hooks.on_checkpoint({s, seen, {snaps.begin(), snaps.end()}});
+      next_ckpt = s.t + ckpt_every;
+    }
+    return !hooks.on_step || hooks.on_step(s, f);
+  };
+  const UnsteadyResult run = run_unsteady(p, o, std::move(start), std::move(history));
+  if (!run.ok) throw std::runtime_error(run.message);  // the last checkpoint stays as it was
+  if (run.interrupted && hooks.on_checkpoint) hooks.on_checkpoint({run.state, run.history, {snaps.begin(), snaps.end()}});
+  return viscous_result(c, p, run, {snaps.begin(), snaps.end()});
+}
+
+}  // namespace magnus

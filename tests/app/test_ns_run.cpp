@@ -1,0 +1,157 @@
+// magnus run on navier-stokes cases: the result file and summary, bad input, Ctrl-C (a partial result and
+// a checkpoint), a killed run resumed from its checkpoint. Coarse grids: each run takes well under a second.
+#include <catch2/catch.hpp>
+#include <fmt/core.h>
+#include <fstream>
+
+#include "io/case_file.hpp"
+#include "io/checkpoint.hpp"
+#include "io/hdf5_io.hpp"
+#include "io/result_reader.hpp"
+#include "support.hpp"
+
+using namespace magnus;
+
+namespace {
+
+/// A navier-stokes case at Re, α on a coarse grid (a = 0.5 m, U = 1 m/s: the time unit D/U is 1 s).
+std::string ns_case(double Re, double alpha, double t_end, const std::string& more = "") {
+  return fmt::format(
+      "title = \"test\"\n[model]\nflow = \"navier-stokes\"\n[cylinder]\nradius = 0.5\nspin_ratio = {}\n"
+      "[flow]\nspeed = 1.0\ndensity = 1.0\nreynolds = {}\n[domain]\nouter_radius = 40.0\n[grid]\n"
+      "n_theta = 48\n[time]\nend = {}\n{}",
+      alpha, Re, t_end, more);
+}
+
+std::string write_case(const std::string& dir, const std::string& text) {
+  const std::string path = dir + "/case.toml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+bool exists(const std::string& path) { return std::ifstream(path).good(); }
+
+}  // namespace
+
+TEST_CASE("navier-stokes run: the result holds the viscous figures, the summary puts them beside the ideal",
+          "[app][ns]") {
+  const std::string dir = test::temp_dir("ns-run");
+  const auto o = test::magnus_cmd({"run", write_case(dir, ns_case(100, 1, 20)), "-o", dir + "/r.h5"}, dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  for (const char* label : {"viscous (this run)", "ideal (potential flow", "S/(2πρa²)", "Re = U·2a/ν = 100"})
+    CHECK(o.out.find(label) != std::string::npos);
+  CHECK(o.out.find("three-dimensional") == std::string::npos);
+  const FlowResult r = read_result(dir + "/r.h5");
+  REQUIRE(r.viscous);
+  REQUIRE(r.c.model == FlowModel::navier_stokes);
+  const ViscousPart& v = *r.viscous;
+  REQUIRE(v.t == Approx(20.0));  // D/U = 1 s
+  REQUIRE_FALSE(v.partial);
+  REQUIRE(v.history.size() == size_t(v.steps) + 1);
+  // The ideal lift of the same scene is −2πα exactly; the measured share S/(2πρa²) is C_L,mean over it.
+  REQUIRE(*v.cl_ideal == Approx(-2.0 * M_PI).epsilon(1e-14));
+  REQUIRE(*v.magnus_ratio == Approx(*v.cl_mean / *v.cl_ideal).epsilon(1e-14));
+  // Counter-clockwise spin lifts towards −y, less than the ideal: 0 < S/(2πρa²) < 1.
+  REQUIRE(*v.cl_mean < 0.0);
+  REQUIRE(*v.magnus_ratio > 0.0);
+  REQUIRE(*v.magnus_ratio < 1.0);
+  // The last step's parts add up to the whole.
+  REQUIRE(*v.last.C_D_pressure + *v.last.C_D_friction == Approx(*r.forces.cd).epsilon(1e-12));
+  REQUIRE(*v.last.C_L_pressure + *v.last.C_L_friction == Approx(*r.forces.cl).epsilon(1e-12));
+  REQUIRE(r.fields.vorticity.size() == size_t(r.grid.nodes()));
+  REQUIRE(r.surface.shear_stress.size() == size_t(r.grid.n_theta));
+  // No checkpoint is left behind by a complete run.
+  REQUIRE_FALSE(exists(checkpoint_path(dir + "/r.h5")));
+}
+
+TEST_CASE("navier-stokes run: above Re 200 the summary says real flow is three-dimensional", "[app][ns]") {
+  const std::string dir = test::temp_dir("ns-run-3d");
+  const auto o = test::magnus_cmd({"run", write_case(dir, ns_case(250, 0.5, 2)), "-o", dir + "/r.h5"}, dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  REQUIRE(o.out.find("Re = 250 > 200: real flow past a cylinder is three-dimensional") != std::string::npos);
+}
+
+TEST_CASE("navier-stokes run: a time step above the stability limit is one line and no output", "[app][ns]") {
+  const std::string dir = test::temp_dir("ns-run-dt");
+  const auto o =
+      test::magnus_cmd({"run", write_case(dir, ns_case(100, 1, 5, "dt = 0.5\n")), "-o", dir + "/r.h5"}, dir);
+  REQUIRE(o.status != 0);
+  REQUIRE(test::lines(o.err) == 1);
+  REQUIRE(o.err.find("time.dt = 0.5") != std::string::npos);
+  REQUIRE(o.err.find("stability limit") != std::string::npos);
+  REQUIRE_FALSE(exists(dir + "/r.h5"));
+  REQUIRE_FALSE(exists(dir + "/r.xmf"));
+}
+
+TEST_CASE("navier-stokes run: Ctrl-C writes a partial result and a checkpoint, --resume finishes the run",
+          "[app][ns]") {
+  const std::string dir = test::temp_dir("ns-run-int");
+  const std::string c = write_case(dir, ns_case(100, 1, 100000));
+  // SIGINT after 1 s: the run stops at the next step.
+  const std::string cmd = "timeout --preserve-status -s INT 1 '" + std::string(MAGNUS_EXE) + "' run '" + c + "' -o '" + dir +
+                          "/r.h5' >'" + dir + "/out.txt' 2>'" + dir + "/err.txt'";
+  const int raw = std::system(cmd.c_str());
+  INFO(test::slurp(dir + "/err.txt"));
+  REQUIRE(WIFEXITED(raw));
+  REQUIRE(WEXITSTATUS(raw) == 0);
+  const FlowResult part = read_result(dir + "/r.h5");
+  REQUIRE(part.viscous->partial);
+  REQUIRE(part.viscous->status.find("interrupted") != std::string::npos);
+  REQUIRE(ResultFile(dir + "/r.h5").attr_int("/", "partial") == 1);
+  REQUIRE(test::slurp(dir + "/out.txt").find("PARTIAL") != std::string::npos);
+  const std::string ckpt = checkpoint_path(dir + "/r.h5");
+  REQUIRE(exists(ckpt));
+  const double t_stop = part.viscous->t;
+  REQUIRE(t_stop > 1.0);
+  // Resume with a reachable end: the history goes on from the interruption, one sample per step.
+  const double t_end = t_stop + 3.0;
+  const auto o = test::magnus_cmd({"run", c, "-o", dir + "/r.h5", "--resume", "--set",
+                                   fmt::format("time.end={}", t_end)},
+                                  dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  const FlowResult done = read_result(dir + "/r.h5");
+  REQUIRE_FALSE(done.viscous->partial);
+  REQUIRE(done.viscous->t == Approx(t_end));
+  REQUIRE(done.viscous->history.front().t == 0.0);
+  for (size_t q = 1; q < done.viscous->history.size(); ++q)
+    REQUIRE(done.viscous->history[q].t > done.viscous->history[q - 1].t);
+  REQUIRE_FALSE(exists(ckpt));
+}
+
+TEST_CASE("navier-stokes run: a killed run resumes from its last checkpoint and ends where an unbroken one does",
+          "[app][ns]") {
+  const std::string dir = test::temp_dir("ns-run-kill");
+  const std::string c = write_case(dir, ns_case(100, 1, 12, "checkpoint_interval = 2.0\n"));
+  const auto whole = test::magnus_cmd({"run", c, "-o", dir + "/whole.h5"}, dir);
+  REQUIRE(whole.status == 0);
+  // SIGKILL at t = 7 D/U (MAGNUS_TEST_KILL_AT: the run kills itself there, no clean-up of any kind).
+  const std::string cmd = "MAGNUS_TEST_KILL_AT=7 '" + std::string(MAGNUS_EXE) + "' run '" + c + "' -o '" + dir +
+                          "/k.h5' >/dev/null 2>&1";
+  const int raw = std::system(cmd.c_str());
+  REQUIRE(WIFSIGNALED(raw) | (WIFEXITED(raw) && WEXITSTATUS(raw) != 0));
+  REQUIRE_FALSE(exists(dir + "/k.h5"));  // nothing half-written
+  const std::string ckpt = checkpoint_path(dir + "/k.h5");
+  REQUIRE(exists(ckpt));
+  // At most one checkpoint interval (2 D/U) is lost.
+  const FlowResult whole_r = read_result(dir + "/whole.h5");
+  const Checkpoint cp = read_checkpoint(ckpt, load_case(c, {}));
+  REQUIRE(cp.state.t >= 7.0 - 2.0);
+  REQUIRE(cp.state.t < 7.0);
+  const auto o = test::magnus_cmd({"run", c, "-o", dir + "/k.h5", "--resume"}, dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  const FlowResult resumed = read_result(dir + "/k.h5");
+  REQUIRE(resumed.viscous->t == Approx(12.0));
+  // The same flow: the restart only re-picks Δt from the CFL number (an O(Δt²) difference).
+  REQUIRE(*resumed.forces.cl == Approx(*whole_r.forces.cl).epsilon(2e-3));
+  REQUIRE(*resumed.forces.cd == Approx(*whole_r.forces.cd).epsilon(2e-3));
+  REQUIRE_FALSE(exists(ckpt));
+  // A checkpoint of another scene is refused in one line.
+  REQUIRE(test::magnus_cmd({"run", c, "-o", dir + "/k.h5", "--set", "time.end=20", "--resume"}, dir).status != 0);
+  const auto other = test::magnus_cmd({"run", c, "-o", dir + "/whole.h5", "--resume"}, dir);
+  REQUIRE(other.status != 0);
+  REQUIRE(test::lines(other.err) == 1);
+}
