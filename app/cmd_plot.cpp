@@ -14,7 +14,8 @@ void add_plot_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   auto* plot = app.add_subcommand(
       "plot",
-      "PNG pictures of a result (streamlines, the Cp field, surface Cp against exact) or of a sweep (C_L)");
+      "PNG pictures of a result (streamlines, the Cp field, surface Cp against exact; navier-stokes adds the "
+      "vorticity, C_L and C_D against time and the wall shear stress) or of a sweep (C_L)");
   plot->add_option("file", o->file, "result file (HDF5, from magnus run) or sweep file (magnus sweep -o)")
       ->required();
   plot->add_option("-o,--output-dir", o->dir, "directory for the PNGs (default: beside the result)");

@@ -18,9 +18,9 @@ namespace magnus {
 
 namespace {
 
-/// The parameters compared: the root title and every /parameters attribute of the schema.
+/// The parameters compared: the root title, the model and every /parameters attribute of the schema.
 std::vector<const AttrSpec*> params() {
-  std::vector<const AttrSpec*> out = {find_attribute("/", "title")};
+  std::vector<const AttrSpec*> out = {find_attribute("/", "title"), find_attribute("/", "model")};
   for (const AttrSpec& a : result_attributes())
     if (std::string(a.group) == "/parameters") out.push_back(&a);
   return out;
@@ -53,7 +53,12 @@ struct Quantity {
   const AttrSpec* num = nullptr;   ///< num / den (− 1 when minus_one)
   const AttrSpec* den = nullptr;
   bool minus_one = false;
+  /// The results the row belongs to: a file of the other model shows "—" there (not "undefined").
+  Models models() const { return (attr ? attr : num)->models; }
 };
+
+/// The marker of a row that does not apply to a file's model.
+constexpr const char* kNotApplicable = "—";
 
 std::vector<Quantity> quantities() {
   std::vector<Quantity> out;
@@ -72,6 +77,8 @@ std::vector<Quantity> quantities() {
 
 struct FileData {
   std::string path;
+  bool viscous = false;  // a navier-stokes result
+  bool has(Models m) const { return m == Models::all || (m == Models::viscous) == viscous; }
   std::vector<Param> params;                  // as params()
   std::vector<std::optional<double>> values;  // as quantities()
 };
@@ -81,9 +88,12 @@ FileData read(const std::string& path, const std::vector<const AttrSpec*>& ps,
   const ResultFile f(path);
   FileData d;
   d.path = path;
+  d.viscous = f.has_attr("/", "model") && f.attr_string("/", "model") == "navier-stokes";
   for (const AttrSpec* p : ps) {
     Param v;
-    if (f.has_attr(p->group, p->name)) {
+    if (std::string(p->group) == "/" && std::string(p->name) == "model") {
+      v.text = d.viscous ? "navier-stokes" : "potential";  // version 1 files hold potential flow only
+    } else if (f.has_attr(p->group, p->name)) {
       if (p->kind == AttrKind::text)
         v.text = f.attr_string(p->group, p->name);
       else
@@ -112,9 +122,24 @@ FileData read(const std::string& path, const std::vector<const AttrSpec*>& ps,
 Comparison compare_results(const std::vector<std::string>& paths) {
   if (paths.empty()) throw std::invalid_argument("compare: no result files given");
   const std::vector<const AttrSpec*> kParams = params();
-  const std::vector<Quantity> kQuantities = quantities();
+  std::vector<Quantity> kQuantities = quantities();
   std::vector<FileData> files;
   for (const auto& p : paths) files.push_back(read(p, kParams, kQuantities));
+  // Only the rows of the files' models: potential results alone show no viscous rows, and the other way
+  // round; in a mixed comparison each file shows "—" in the other model's rows.
+  {
+    std::vector<Quantity> kept;
+    std::vector<std::vector<std::optional<double>>> values(files.size());
+    for (size_t q = 0; q < kQuantities.size(); ++q) {
+      if (std::none_of(files.begin(), files.end(),
+                       [&](const FileData& f) { return f.has(kQuantities[q].models()); }))
+        continue;
+      kept.push_back(kQuantities[q]);
+      for (size_t i = 0; i < files.size(); ++i) values[i].push_back(files[i].values[q]);
+    }
+    kQuantities = std::move(kept);
+    for (size_t i = 0; i < files.size(); ++i) files[i].values = std::move(values[i]);
+  }
 
   Comparison out;
   std::vector<size_t> differ;
@@ -142,8 +167,9 @@ Comparison compare_results(const std::vector<std::string>& paths) {
   for (size_t q = 0; q < std::size(kQuantities); ++q) {
     std::vector<std::string> cells;
     for (const auto& f : files)
-      cells.push_back(f.values[q] ? fmt::format(fmt::runtime(kQuantities[q].spec), *f.values[q])
-                                  : "undefined");
+      cells.push_back(!f.has(kQuantities[q].models()) ? kNotApplicable
+                      : f.values[q] ? fmt::format(fmt::runtime(kQuantities[q].spec), *f.values[q])
+                                    : "undefined");
     value_rows.push_back({kQuantities[q].label, cells});
   }
   size_t label_w = 24;
@@ -176,7 +202,10 @@ Comparison compare_results(const std::vector<std::string>& paths) {
     t += "parameters that differ\n";
     for (const auto& [label, cells] : param_rows) row(label, cells);
   }
-  t += "lift, drag, errors\n";
+  const bool any_viscous =
+      std::any_of(files.begin(), files.end(), [](const FileData& f) { return f.viscous; });
+  t += any_viscous ? "lift, drag, errors; viscous beside ideal (— : not of that file's model)\n"
+                   : "lift, drag, errors\n";
   for (const auto& [label, cells] : value_rows) row(label, cells);
 
   // CSV: one row per file.

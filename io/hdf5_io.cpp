@@ -169,6 +169,18 @@ void H5Writer::view(id parent, const std::string& name, const std::vector<size_t
     Handle d(H5Dopen2(file_, src.source.c_str(), H5P_DEFAULT), H5Dclose);
     Handle sspace(d < 0 ? -1 : H5Dget_space(d), H5Sclose);
     if (sspace < 0) fail("cannot open " + src.source + " for the view " + name);
+    if (src.block >= 0 && s >= 0) {
+      // Block `block` along the first axis: [block, 0, …] + [1, whole, …].
+      const int rank = H5Sget_simple_extent_ndims(sspace);
+      std::vector<hsize_t> sdims(size_t(std::max(rank, 1)), 0);
+      if (rank < 1 || H5Sget_simple_extent_dims(sspace, sdims.data(), nullptr) < 0 ||
+          hsize_t(src.block) >= sdims[0])
+        fail(fmt::format("the view {} asks for block {} of {}, which has none", name, src.block, src.source));
+      std::vector<hsize_t> sstart(sdims.size(), 0), scount = sdims;
+      sstart[0] = hsize_t(src.block);
+      scount[0] = 1;
+      s = H5Sselect_hyperslab(sspace, H5S_SELECT_SET, sstart.data(), nullptr, scount.data(), nullptr);
+    }
     std::vector<hsize_t> start(dims.size(), 0), count = dims;
     if (dims.size() == 2) start[1] = src.column, count[1] = 1;
     if (s >= 0) s = H5Sselect_hyperslab(vspace, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr);

@@ -38,9 +38,10 @@ class H5Writer {
   struct ViewSource {
     std::string source;  ///< "/fields/u_x"
     size_t column = 0;
+    long block = -1;  ///< ≥ 0: only block `block` along the source's first axis (one stored state)
   };
   /// A virtual dataset (no storage of its own): a (n) or (n, k) view whose columns are whole stored
-  /// datasets of n values; columns without a source read as 0.
+  /// datasets of n values (or one block of n values of a larger one); columns without a source read as 0.
   void view(id parent, const std::string& name, const std::vector<size_t>& shape,
             const std::vector<ViewSource>& sources, const std::string& units,
             const std::string& description = "");

@@ -51,7 +51,9 @@ bool is_viscous(const ResultFile& f) {
 }
 
 /// Whether a schema entry for `m` belongs in the file (the model's own entries only).
-bool belongs(Models m, const ResultFile& f) { return m == Models::all || (m == Models::viscous) == is_viscous(f); }
+bool belongs(Models m, const ResultFile& f) {
+  return m == Models::all || (m == Models::viscous) == is_viscous(f);
+}
 
 /// Every attribute of a group: the schema's first (undefined ones marked), then any others the file holds.
 std::string group_text(const ResultFile& f, const std::string& group, const char* heading, bool strict) {
@@ -114,6 +116,29 @@ std::string stagnation_text(const ResultFile& f, double a) {
   return s.empty() ? s : "\nstagnation points\n" + s;
 }
 
+/// A navier-stokes file's time series: the force history (steps, time span in s and D/U) and the stored
+/// states (how many, when).
+std::string time_series_text(const ResultFile& f) {
+  std::string s = "\ntime series\n";
+  const double unit =
+      f.has_attr("/parameters", "time_unit") ? f.attr_double("/parameters", "time_unit") : 0.0;
+  auto span = [&](const std::vector<double>& t) {
+    if (t.empty()) return std::string();
+    std::string out = fmt::format(", t = {:.6g} … {:.6g} s", t.front(), t.back());
+    if (unit > 0) out += fmt::format(" ({:.6g} … {:.6g} D/U)", t.front() / unit, t.back() / unit);
+    return out;
+  };
+  const std::vector<double> h = f.has("/history/t") ? f.dataset("/history/t") : std::vector<double>();
+  s += fmt::format("  history: {} steps{}\n", h.size(), span(h));
+  if (f.has("/snapshots/t")) {
+    const std::vector<double> t = f.dataset("/snapshots/t");
+    s += fmt::format("  snapshots: {} stored state{}{}\n", t.size(), t.size() == 1 ? "" : "s", span(t));
+  } else {
+    s += "  snapshots: none (output.snapshots = 0)\n";
+  }
+  return s;
+}
+
 std::string describe_flow(const ResultFile& f) {
   // A result has a version and its parameters: a file with only the format attribute is not one.
   const long version = f.attr_int("/", "format_version");
@@ -136,8 +161,8 @@ std::string describe_flow(const ResultFile& f) {
     if (viscous)
       expected.insert(expected.end(), {"/surface/shear_stress", "/separation/theta", "/history/t"});
     else
-      expected.insert(expected.end(),
-                      {"/stagnation/r", "/stagnation/theta", "/stagnation/r_exact", "/stagnation/theta_exact"});
+      expected.insert(expected.end(), {"/stagnation/r", "/stagnation/theta", "/stagnation/r_exact",
+                                       "/stagnation/theta_exact"});
     for (const DatasetSpec* d : field_datasets())
       if (f.has("/mesh/" + d->path.substr(8))) expected.push_back(d->path);
   }
@@ -157,10 +182,16 @@ std::string describe_flow(const ResultFile& f) {
     if (f.has_attr(g, "undefined"))
       s += fmt::format("\n{} undefined: {}\n", g, f.attr_string(g, "undefined"));
   s += stagnation_text(f, f.has_attr("/parameters", "radius") ? f.attr_double("/parameters", "radius") : 0.0);
+  if (viscous) s += time_series_text(f);
   s += "\ndatasets\n";
-  size_t values = 0;
+  size_t values = 0, state_views = 0;
   const auto all = f.datasets();
   for (const auto& [name, shape] : all) {
+    if (name.rfind("/mesh/snapshots/", 0) == 0) {  // one view per stored state and field: summed up below
+      ++state_views;
+      values += f.dataset(name).size();
+      continue;
+    }
     std::string units = dataset_units(name);
     if (units.empty()) units = f.has_attr(name, "units") ? f.attr_string(name, "units") : "?";
     const DatasetSpec* d = find_dataset(name);
@@ -169,6 +200,9 @@ std::string describe_flow(const ResultFile& f) {
     // reported here rather than found later by whoever uses the numbers.
     values += f.dataset(name).size();
   }
+  if (state_views > 0)
+    s += fmt::format("  {:<24}{} views (FIELD/k: state k of /snapshots/FIELD, for the .xmf time series)\n",
+                     "/mesh/snapshots/…", state_views);
   s += fmt::format("\nchecked: {} datasets, {} values read back intact\n", all.size(), values);
   return s;
 }

@@ -39,6 +39,29 @@ std::vector<StagnationPoint> read_points(const ResultFile& f, bool exact, double
   return out;
 }
 
+/// The stored states of a navier-stokes run (/snapshots/t, psi, vorticity), each checked against the grid.
+void read_snapshots(const ResultFile& f, FlowResult& r) {
+  if (!f.has("/snapshots/t")) return;
+  const std::vector<double> t = f.dataset("/snapshots/t");
+  const size_t n = t.size(), nr = size_t(r.grid.n_r), nt = size_t(r.grid.n_theta), per = nr * nt;
+  std::vector<Snapshot> states(n);
+  for (size_t k = 0; k < n; ++k) states[k].t = t[k];
+  for (const auto& [name, member] :
+       {std::pair{"psi", &Snapshot::psi}, std::pair{"vorticity", &Snapshot::vorticity}}) {
+    const std::string path = std::string("/snapshots/") + name;
+    if (!f.has(path)) fail(fmt::format("'{}': /snapshots/t is there but {} is missing", f.path(), path));
+    std::vector<size_t> shape;
+    const std::vector<double> v = f.dataset(path, &shape);
+    if (shape.size() != 3 || shape[0] != n || shape[1] != nr || shape[2] != nt)
+      fail(fmt::format("'{}': {} is not ({} × {} × {}): one state per time on the grid", f.path(), path, n,
+                       nr, nt));
+    for (size_t k = 0; k < n; ++k)
+      (states[k].*member).assign(v.begin() + long(k * per), v.begin() + long((k + 1) * per));
+  }
+  if (!r.viscous) r.viscous.emplace();
+  r.viscous->snapshots = std::move(states);
+}
+
 }  // namespace
 
 FlowResult read_result(const std::string& path) {
@@ -84,8 +107,11 @@ FlowResult read_result(const std::string& path) {
       fail(fmt::format("'{}': {} has {} values for n_theta = {}", path, d.path, v.size(), g.n_theta));
     d.set(r, std::move(v));
   }
-  if (r.surface.cp.empty() != r.surface.cp_exact.empty()) r.surface.cp.clear(), r.surface.cp_exact.clear();
+  // Potential flow's Cp comes with its exact curve (a navier-stokes result has none).
+  if (!r.viscous && r.surface.cp.empty() != r.surface.cp_exact.empty())
+    r.surface.cp.clear(), r.surface.cp_exact.clear();
 
+  read_snapshots(f, r);
   r.stagnation = read_points(f, false, c.scene.radius);
   r.stagnation_exact = read_points(f, true, c.scene.radius);
   return r;

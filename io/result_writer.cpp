@@ -26,6 +26,35 @@ std::string join(const std::vector<std::string>& names) {
   return s;
 }
 
+bool is_snapshot(const DatasetSpec& d) { return d.path.rfind("/snapshots/", 0) == 0; }
+
+/// The stored states of a navier-stokes run: /snapshots/t (N) and each field (N, n_r, n_θ), each state
+/// stored once (the .xmf's time series views them); t, r and θ are their dimension scales. Nothing when
+/// there are none.
+void write_snapshots(const FlowResult& r, H5Writer& w) {
+  if (!r.viscous || r.viscous->snapshots.empty()) return;
+  const size_t n = r.viscous->snapshots.size(), nr = r.grid.n_r, nt = r.grid.n_theta;
+  for (const Snapshot& s : r.viscous->snapshots)
+    if (s.psi.size() != nr * nt || s.vorticity.size() != nr * nt)
+      throw std::runtime_error(
+          fmt::format("the snapshot at t = {} s does not match the grid ({} × {})", s.t, nr, nt));
+  const H5Writer::id g = w.group("/snapshots");
+  for (const DatasetSpec& d : result_datasets()) {
+    if (!is_snapshot(d)) continue;
+    const std::vector<double> v = d.values(r);
+    const std::string name = d.path.substr(d.path.rfind('/') + 1);
+    const std::vector<size_t> shape = name == "t" ? std::vector<size_t>{n} : std::vector<size_t>{n, nr, nt};
+    w.dataset(g, name, shape, v.data(), d.units, d.description);
+  }
+  w.make_scale("/snapshots/t", "t");
+  for (const DatasetSpec& d : result_datasets())
+    if (is_snapshot(d) && d.path != "/snapshots/t") {
+      w.attach_scale(d.path, "/snapshots/t", 0);
+      w.attach_scale(d.path, "/grid/r", 1);
+      w.attach_scale(d.path, "/grid/theta", 2);
+    }
+}
+
 void write_file(const FlowResult& r, H5Writer& w) {
   std::map<std::string, H5Writer::id> groups{{"/", w.file()}};
   std::map<std::string, std::vector<std::string>> undefined;
@@ -57,7 +86,7 @@ void write_file(const FlowResult& r, H5Writer& w) {
   const FieldSelection selected = select_fields(r.c.output.fields, r.c.model);
   std::vector<std::string> on_grid, on_theta;
   for (const DatasetSpec& d : result_datasets()) {
-    if (!applies(d.models, r)) continue;
+    if (!applies(d.models, r) || is_snapshot(d)) continue;
     const std::vector<double> v = d.values(r);
     const std::string name = d.path.substr(d.path.rfind('/') + 1);
     const bool is_field = d.path.rfind("/fields/", 0) == 0;
@@ -93,6 +122,8 @@ void write_file(const FlowResult& r, H5Writer& w) {
   // not in a sibling like /grid: the scales are named in the root group too (hard links, no copy).
   w.link("/grid/r", "/r");
   w.link("/grid/theta", "/theta");
+
+  write_snapshots(r, w);
 
   write_mesh(r, w);
 }

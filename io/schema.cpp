@@ -413,6 +413,29 @@ DatasetSpec history(const char* name, const char* units, const char* description
           Models::viscous};
 }
 
+/// One dataset of the stored states (output.snapshots): their times (member null) or one field of each,
+/// flattened (N·n_r·n_θ). Written and read by the writer and reader themselves (shape (N, n_r, n_θ)).
+DatasetSpec snapshot(const char* name, const char* units, const char* description,
+                     std::vector<double> Snapshot::*m) {
+  return {std::string("/snapshots/") + name,
+          units,
+          description,
+          DataShape::points,
+          [m](const FlowResult& r) {
+            std::vector<double> v;
+            if (r.viscous)
+              for (const Snapshot& s : r.viscous->snapshots) {
+                if (m)
+                  v.insert(v.end(), (s.*m).begin(), (s.*m).end());
+                else
+                  v.push_back(s.t);
+              }
+            return v;
+          },
+          {},
+          Models::viscous};
+}
+
 std::vector<DatasetSpec> make_datasets() {
   return {
       {"/grid/r", "m", "radius r_i of grid row i (dimension scale of every field's first axis)",
@@ -484,6 +507,10 @@ std::vector<DatasetSpec> make_datasets() {
       history("lift", "N/m", "lift per unit span", &ForceSample::F_y),
       history("drag", "N/m", "drag per unit span", &ForceSample::F_x),
       history("torque", "N*m/m", "torque per unit span", &ForceSample::M),
+      snapshot("t", "s", "time of each stored state (output.snapshots), oldest first", nullptr),
+      snapshot("psi", "m^2/s", "stream function ψ of each stored state, (N, n_r, n_theta)", &Snapshot::psi),
+      snapshot("vorticity", "1/s", "vorticity ζ of each stored state, (N, n_r, n_theta)",
+               &Snapshot::vorticity),
   };
 }
 
@@ -527,6 +554,11 @@ std::string dataset_units(const std::string& path) {
   if (path == "/mesh/points") return "m";
   if (path == "/mesh/quads") return "1";
   if (path == "/mesh/velocity") return "m/s";
+  // The views of one stored state: /mesh/snapshots/FIELD/K is state K of /snapshots/FIELD.
+  if (path.rfind("/mesh/snapshots/", 0) == 0) {
+    const std::string rest = path.substr(5);
+    return dataset_units(rest.substr(0, rest.rfind('/')));
+  }
   if (path.rfind("/mesh/", 0) == 0)
     if (const DatasetSpec* d = find_dataset("/fields/" + path.substr(6))) return d->units;
   return "";

@@ -97,6 +97,16 @@ void sequential_cmap1(plstream& pls) {
   pls.scmap1l(true, 5, pos, r, g, b, nullptr);
 }
 
+/// cmap1: blue → white (at the middle, 0 on symmetric limits) → red, for signed fields (vorticity).
+void diverging_cmap1(plstream& pls) {
+  const PLFLT pos[] = {0.0, 0.25, 0.5, 0.75, 1.0};
+  const PLFLT r[] = {0.085, 0.400, 0.970, 0.860, 0.600};
+  const PLFLT g[] = {0.180, 0.570, 0.970, 0.380, 0.020};
+  const PLFLT b[] = {0.560, 0.860, 0.970, 0.300, 0.080};
+  pls.scmap1n(256);
+  pls.scmap1l(true, 5, pos, r, g, b, nullptr);
+}
+
 /// The centred square box: top 4 lines for the title, bottom `bottom_lines` for tick labels and the x
 /// label (and `extra_bottom`, a page fraction, for a legend below), side margins at least `side`
 /// (page fraction) each. Sets the viewport and window.
@@ -218,6 +228,12 @@ PlotFrame plot_contour_field(const ContourFieldPicture& pic, const std::string& 
   const PolarField f = refine_polar_field(pic.field, w * std::sqrt(2.0) * unit);
   PolarPatch patch(f, unit, 0, int(f.r.size()) - 1);
   auto [lo, hi] = patch.range_in(w);
+  const double data_lo = lo, data_hi = hi;
+  if (pic.diverging) {
+    const double m = pic.limit > 0.0 ? pic.limit : std::max(std::fabs(lo), std::fabs(hi));
+    lo = -m;
+    hi = m;
+  }
   if (!(hi > lo)) {
     lo -= 0.5;
     hi += 0.5;
@@ -227,13 +243,16 @@ PlotFrame plot_contour_field(const ContourFieldPicture& pic, const std::string& 
   for (int k = 0; k <= n_shades; ++k) edges[k] = lo + (hi - lo) * k / n_shades;
   const double eps = 1e-9 * (hi - lo);  // so that the extreme nodes are filled too
   std::vector<PLFLT> fill_edges = edges;
-  fill_edges.front() -= eps;
-  fill_edges.back() += eps;
+  fill_edges.front() = std::min(lo, data_lo) - eps;  // values beyond a diverging map's limits: end colours
+  fill_edges.back() = std::max(hi, data_hi) + eps;
 
   PlotFrame frame;
   render_png(png, size, [&](plstream& pls) {
     const double lx = line_fraction_x(pls);
-    sequential_cmap1(pls);
+    if (pic.diverging)
+      diverging_cmap1(pls);
+    else
+      sequential_cmap1(pls);
     // Right of the box: the bar (7% of the box) and its numbers (~6 characters).
     square_box(pls, size, w, pic.footnote.empty() ? 4.5 : 6.0, 0.0, 8.0 * lx);
     PLFLT vx0 = 0, vx1 = 0, vy0 = 0, vy1 = 0;

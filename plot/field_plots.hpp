@@ -45,11 +45,15 @@ struct ContourFieldPicture {
   bool zero_contour = true;        ///< a dashed contour at 0
   std::vector<CurvePoint> points;  ///< points marked with red dots (axis units)
   std::string footnote;            ///< one line under the plot (plplot_text markup)
+  /// A diverging colour map (blue, white at 0, red) over symmetric limits ±limit, for a signed field such as
+  /// the vorticity; values beyond the limits take the end colours.
+  bool diverging = false;
+  double limit = 0.0;  ///< diverging: the colour range ±limit; 0: ±max|value| inside the window
 };
 
 /// The field as filled contours whose colour range is the field's range inside the window (no
-/// clipping), with a labelled colour bar spanning it. Returns where it drew (bar_lo, bar_hi: the bar's
-/// range).
+/// clipping), or ±limit with a diverging map, with a labelled colour bar spanning it. Returns where it drew
+/// (bar_lo, bar_hi: the bar's range).
 PlotFrame plot_contour_field(const ContourFieldPicture& pic, const std::string& png, PlotSize size = {});
 
 }  // namespace magnus

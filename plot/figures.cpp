@@ -44,13 +44,30 @@ std::string flow_label(const Case& c) {
   return s;
 }
 
+/// flow_label, with the Reynolds number of a navier-stokes result.
+std::string flow_label(const FlowResult& r) {
+  std::string s = flow_label(r.c);
+  if (r.viscous && r.viscous->reynolds) s += fmt::format(", Re = {}", num(*r.viscous->reynolds, 4));
+  return s;
+}
+
+/// θ in degrees over one turn, for the surface plots.
+void theta_axis(CurvePage& p) {
+  p.xlabel = "θ (degrees, counter-clockwise from +x: 0° rear, 180° front)";
+  p.fixed_x = true;
+  p.x_min = 0.0;
+  p.x_max = 360.0;
+  p.x_tick = 45.0;
+  p.x_subticks = 3;
+}
+
 std::string case_title(const std::string& title) {
   return literal_text(title.empty() ? std::string("Spinning cylinder") : title);
 }
 
 FieldView view_of(const FlowResult& r, const std::string& what) {
   FieldView v;
-  v.title = case_title(r.c.title) + ": " + what + ", " + flow_label(r.c);
+  v.title = case_title(r.c.title) + ": " + what + ", " + flow_label(r);
   v.unit = r.grid.a;
   v.half_width = view_half_width(r);
   v.body_radius = 1.0;
@@ -120,8 +137,109 @@ ContourFieldPicture cp_picture(const FlowResult& r) {
     const CurvePoint q = in_units(s, g.a);
     if (inside(q, p.view.half_width)) p.points.push_back(q);
   }
-  p.footnote = "dashed: Cp = 0 (|u| = U);  red dots: stagnation points (Cp = 1)";
+  p.footnote =
+      r.viscous ? "dashed: Cp = 0" : "dashed: Cp = 0 (|u| = U);  red dots: stagnation points (Cp = 1)";
   return p;
+}
+
+ContourFieldPicture vorticity_picture(const FlowResult& r) {
+  const PolarGrid& g = r.grid;
+  if (r.fields.vorticity.empty()) throw std::runtime_error("plot: the result has no vorticity field");
+  if (r.fields.vorticity.size() != size_t(g.nodes()))
+    throw std::runtime_error("plot: the vorticity field does not match the grid");
+  ContourFieldPicture p;
+  p.view = view_of(r, "vorticity");
+  p.field = polar(g, r.fields.vorticity);
+  p.bar_label = "ζ (1/s)";
+  p.zero_contour = false;
+  p.diverging = true;
+  // The wall's thin layer holds the largest |ζ|; colours over its peak would leave the wake white.
+  const double w = p.view.half_width * g.a;
+  std::vector<double> mags;
+  for (int i = 0; i < g.n_r; ++i)
+    for (int j = 0; j < g.n_theta; ++j) {
+      const double x = g.r[i] * std::cos(g.theta[j]), y = g.r[i] * std::sin(g.theta[j]);
+      if (std::fabs(x) <= w && std::fabs(y) <= w)
+        mags.push_back(std::fabs(r.fields.vorticity[size_t(i) * g.n_theta + j]));
+    }
+  std::sort(mags.begin(), mags.end());
+  const double peak = mags.empty() ? 0.0 : mags.back();
+  p.limit = mags.empty() ? 0.0 : mags[std::min(mags.size() - 1, size_t(0.98 * double(mags.size())))];
+  if (!(p.limit > 0.0)) p.limit = peak;
+  p.footnote = p.limit < peak ? fmt::format(
+                                    "red: counter-clockwise (ζ > 0), blue: clockwise;  colours end at "
+                                    "±{} 1/s (|ζ| reaches {} 1/s at the wall)",
+                                    num(p.limit), num(peak))
+                              : std::string("red: counter-clockwise (ζ > 0), blue: clockwise");
+  return p;
+}
+
+CurveFigure force_history_figure(const FlowResult& r) {
+  if (!r.viscous || r.viscous->history.empty())
+    throw std::runtime_error("plot: the result has no force history");
+  const ViscousPart& v = *r.viscous;
+  const double unit = v.time_unit > 0.0 ? v.time_unit : 1.0;
+  CurveFigure f;
+  f.page.title = case_title(r.c.title) + ": forces against time, " + flow_label(r);
+  f.page.xlabel = v.time_unit > 0.0 ? "time t U/D" : "time t (s)";
+  f.page.ylabel = "C_L, C_D (on ½ρU^2·D)";
+  LineCurve cl{"C_L", {}, Colour::red, LineStyle::solid, 1.8},
+      cd{"C_D", {}, Colour::blue, LineStyle::solid, 1.8};
+  // At most ~4000 points a curve: a long run's every step would only repeat pixels.
+  const size_t n = v.history.size(), stride = std::max<size_t>(1, n / 4000);
+  for (size_t k = 0; k < n; k += stride) {
+    const ForceSample& h = v.history[k];
+    cl.points.push_back({h.t / unit, h.C_L});
+    cd.points.push_back({h.t / unit, h.C_D});
+  }
+  if ((n - 1) % stride != 0) {
+    cl.points.push_back({v.history.back().t / unit, v.history.back().C_L});
+    cd.points.push_back({v.history.back().t / unit, v.history.back().C_D});
+  }
+  const double t0 = v.history.front().t / unit, t1 = v.history.back().t / unit;
+  f.lines.push_back(std::move(cl));
+  f.lines.push_back(std::move(cd));
+  if (v.cl_mean)
+    f.lines.push_back({fmt::format("mean C_L = {}", num(*v.cl_mean, 4)),
+                       {{t0, *v.cl_mean}, {t1, *v.cl_mean}},
+                       Colour::red,
+                       LineStyle::dashed,
+                       1.2});
+  if (v.cd_mean)
+    f.lines.push_back({fmt::format("mean C_D = {}", num(*v.cd_mean, 4)),
+                       {{t0, *v.cd_mean}, {t1, *v.cd_mean}},
+                       Colour::blue,
+                       LineStyle::dashed,
+                       1.2});
+  if (v.cl_ideal && *v.cl_ideal != 0.0)
+    f.lines.push_back({fmt::format("potential flow C_L = −2πα = {}", num(*v.cl_ideal, 4)),
+                       {{t0, *v.cl_ideal}, {t1, *v.cl_ideal}},
+                       Colour::grey,
+                       LineStyle::dotted,
+                       1.6});
+  return f;
+}
+
+CurveFigure shear_stress_figure(const FlowResult& r) {
+  const Surface& s = r.surface;
+  if (s.shear_stress.empty()) throw std::runtime_error("plot: the result has no wall shear stress");
+  if (s.theta.size() != s.shear_stress.size())
+    throw std::runtime_error("plot: surface theta and shear stress differ in length");
+  CurveFigure f;
+  f.page.title = case_title(r.c.title) + ": wall shear stress, " + flow_label(r);
+  theta_axis(f.page);
+  f.page.ylabel = "τ_w = μ(ζ_w − 2ω) (Pa)";
+  LineCurve tau{fmt::format("τ_w, n_θ = {}", s.theta.size()), {}, Colour::blue, LineStyle::solid, 2.0};
+  for (size_t j = 0; j < s.theta.size(); ++j)
+    tau.points.push_back({s.theta[j] * 180.0 / M_PI, s.shear_stress[j]});
+  tau.points.push_back({360.0, s.shear_stress[0]});
+  f.lines.push_back(std::move(tau));
+  if (r.viscous && !r.viscous->separation.empty()) {
+    PointSet sep{"τ_w = 0 (separation, reattachment)", {}, Colour::red, 0, false};
+    for (double th : r.viscous->separation) sep.points.push_back({th * 180.0 / M_PI, 0.0});
+    f.points.push_back(std::move(sep));
+  }
+  return f;
 }
 
 CurveFigure surface_cp_figure(const FlowResult& r) {
@@ -130,17 +248,17 @@ CurveFigure surface_cp_figure(const FlowResult& r) {
     throw std::runtime_error("plot: the result has no surface Cp (undefined when U = 0)");
   if (s.theta.size() != s.cp.size()) throw std::runtime_error("plot: surface theta and Cp differ in length");
   CurveFigure f;
-  f.page.title = case_title(r.c.title) + ": surface pressure, " + flow_label(r.c);
-  f.page.xlabel = "θ (degrees, counter-clockwise from +x: 0° rear, 180° front)";
+  f.page.title = case_title(r.c.title) + ": surface pressure, " + flow_label(r);
+  theta_axis(f.page);
   f.page.ylabel = "Cp = (p − p_∞) / (½ρU^2)";
-  f.page.fixed_x = true;
-  f.page.x_min = 0.0;
-  f.page.x_max = 360.0;
-  f.page.x_tick = 45.0;
-  f.page.x_subticks = 3;
-  // The exact surface Cp of this scene's circulation (spin or given): 1 − (u_θ(a, θ)/U)².
+  // The exact surface Cp of this scene's circulation (spin or given): 1 − (u_θ(a, θ)/U)² (for a
+  // navier-stokes result, the ideal beside the real).
   const ExactFlow ex = exact_flow(r.c.scene);
-  LineCurve exact{"exact, 1 − (u_θ/U)^2", {}, Colour::blue, LineStyle::solid, 2.0};
+  LineCurve exact{r.viscous ? "potential flow, 1 − (u_θ/U)^2" : "exact, 1 − (u_θ/U)^2",
+                  {},
+                  Colour::blue,
+                  LineStyle::solid,
+                  2.0};
   const int n_fine = 721;
   for (int k = 0; k < n_fine; ++k) {
     const double th = 2 * M_PI * k / (n_fine - 1);
@@ -149,8 +267,9 @@ CurveFigure surface_cp_figure(const FlowResult& r) {
   // At most ~90 markers: on a fine grid every node would merge into a band hiding the line.
   const size_t n = s.cp.size(), stride = std::max<size_t>(1, (n + 89) / 90);
   PointSet numeric;
-  numeric.label = stride == 1 ? fmt::format("numeric, n_θ = {}", n)
-                              : fmt::format("numeric, n_θ = {} (one node in {})", n, stride);
+  const char* what = r.viscous ? "navier-stokes" : "numeric";
+  numeric.label = stride == 1 ? fmt::format("{}, n_θ = {}", what, n)
+                              : fmt::format("{}, n_θ = {} (one node in {})", what, n, stride);
   for (size_t j = 0; j < n; j += stride) numeric.points.push_back({s.theta[j] * 180.0 / M_PI, s.cp[j]});
   numeric.points.push_back({360.0, s.cp[0]});  // θ = 0 again at 360°, like the line
   f.lines.push_back(std::move(exact));
@@ -367,6 +486,30 @@ PlotOutcome plot_result_file(const std::string& path, const std::string& dir, Pl
     const CurveFigure f = surface_cp_figure(r);
     plot_curves(f.page, f.lines, f.points, base + "_surface_cp.png", size);
     out.written.push_back(base + "_surface_cp.png");
+  }
+  if (r.viscous) {
+    if (r.fields.vorticity.empty()) {
+      out.skipped.push_back(
+          fmt::format("vorticity skipped: '{}' has no /fields/vorticity (see output.fields)", path));
+    } else {
+      plot_contour_field(vorticity_picture(r), base + "_vorticity.png", size);
+      out.written.push_back(base + "_vorticity.png");
+    }
+    if (r.viscous->history.empty()) {
+      out.skipped.push_back(fmt::format("forces against time skipped: '{}' has no /history", path));
+    } else {
+      const CurveFigure f = force_history_figure(r);
+      plot_curves(f.page, f.lines, f.points, base + "_forces.png", size);
+      out.written.push_back(base + "_forces.png");
+    }
+    if (r.surface.shear_stress.empty()) {
+      out.skipped.push_back(
+          fmt::format("wall shear stress skipped: '{}' has no /surface/shear_stress", path));
+    } else {
+      const CurveFigure f = shear_stress_figure(r);
+      plot_curves(f.page, f.lines, f.points, base + "_shear.png", size);
+      out.written.push_back(base + "_shear.png");
+    }
   }
   if (out.written.empty()) {
     std::string why;

@@ -36,8 +36,23 @@ StreamlinePicture streamline_picture(const FlowResult& r);
 /// std::runtime_error when the result has no Cp field.
 ContourFieldPicture cp_picture(const FlowResult& r);
 
-/// Surface Cp(θ), θ in degrees: the numeric nodes against the exact curve from ExactFlow (the given
-/// circulation or the spin's). Throws std::runtime_error when Cp is undefined (U = 0) or missing.
+/// The vorticity field of a navier-stokes result in x/a, y/a: a diverging map over symmetric limits (±the
+/// 98th percentile of |ζ| in the window, so that the wake is not washed out by the wall's peak; beyond it
+/// the end colours), the body drawn. Throws std::runtime_error when the result has no vorticity field.
+ContourFieldPicture vorticity_picture(const FlowResult& r);
+
+/// C_L(t) and C_D(t) of a navier-stokes result's force history against t in D/U, with their means (over
+/// the last period) and potential flow's C_L for the same scene. Throws std::runtime_error when the
+/// result has no history.
+CurveFigure force_history_figure(const FlowResult& r);
+
+/// The wall shear stress τ_w(θ) of a navier-stokes result, θ in degrees, with the separation points
+/// (τ_w = 0). Throws std::runtime_error when the result has none.
+CurveFigure shear_stress_figure(const FlowResult& r);
+
+/// Surface Cp(θ), θ in degrees (for a navier-stokes result: its Cp against potential flow's): the numeric
+/// nodes against the exact curve from ExactFlow (the given circulation or the spin's). Throws
+/// std::runtime_error when Cp is undefined (U = 0) or missing.
 CurveFigure surface_cp_figure(const FlowResult& r);
 
 /// The numbers of a lift sweep, as `magnus sweep` computes them or a sweep file stores them.
@@ -65,7 +80,8 @@ struct PlotOutcome {
   std::vector<std::string> skipped;  ///< one line each: which picture and why
 };
 
-/// A result file: dir/<stem>_streamlines.png, _cp.png and _surface_cp.png; a sweep file: dir/<stem>_cl.png
+/// A result file: dir/<stem>_streamlines.png, _cp.png and _surface_cp.png (a navier-stokes result adds
+/// _vorticity.png, _forces.png: C_L, C_D against t, and _shear.png); a sweep file: dir/<stem>_cl.png
 /// (stem: the file name without its extension; dir "" means the file's directory). A picture whose data
 /// the file lacks is skipped; throws if nothing can be drawn.
 PlotOutcome plot_result_file(const std::string& path, const std::string& dir, PlotSize size);

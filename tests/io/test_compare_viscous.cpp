@@ -1,0 +1,121 @@
+// `magnus compare` with navier-stokes results: the viscous rows beside the ideal ones, "—" where a row is
+// not of a file's model, mixed comparisons in the table and the CSV.
+#include <fmt/core.h>
+#include <catch2/catch.hpp>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "io/compare.hpp"
+#include "io/hdf5_io.hpp"
+#include "io/viscous_fixture.hpp"
+#include "support.hpp"
+
+using namespace magnus;
+
+namespace {
+
+/// The cells of the table row that starts with label (after the two-space indent), split on spaces.
+std::vector<std::string> table_row(const std::string& table, const std::string& label) {
+  std::istringstream in(table);
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("  " + label + " ", 0) == 0) {
+      std::istringstream cells(line.substr(2 + label.size()));
+      std::vector<std::string> out;
+      std::string c;
+      while (cells >> c) out.push_back(c);
+      return out;
+    }
+  return {};
+}
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::string cell;
+  std::istringstream in(s);
+  while (std::getline(in, cell, ',')) out.push_back(cell);
+  if (!s.empty() && s.back() == ',') out.push_back("");
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("compare: viscous and ideal side by side, '—' where a row is not of the file's model",
+          "[io][compare][viscous]") {
+  const std::string dir = test::temp_dir("compare-ns");
+  Case c = test::make_case(1.0, 32);
+  c.title = "potential";
+  write_result(run_case(c), dir + "/pot.h5");
+  const FlowResult ns = test::viscous_result_by_hand(1.0, 32, 16, 2);
+  write_result(ns, dir + "/ns.h5");
+  FlowResult ns0 = test::viscous_result_by_hand(0.0, 32, 16, 0);  // α = 0: S/(2πρa²) undefined
+  write_result(ns0, dir + "/ns0.h5");
+
+  const Comparison m = compare_results({dir + "/pot.h5", dir + "/ns.h5", dir + "/ns0.h5"});
+  CAPTURE(m.table);
+  const auto& v = *ns.viscous;
+  CHECK(table_row(m.table, "C_L mean (viscous)") ==
+        std::vector<std::string>{"—", fmt::format("{:.6g}", *v.cl_mean), "0"});
+  CHECK(table_row(m.table, "C_D mean (viscous)")[0] == "—");
+  CHECK(table_row(m.table, "C_L amplitude")[1] == fmt::format("{:.4g}", *v.cl_amplitude));
+  CHECK(table_row(m.table, "Strouhal number")[1] == fmt::format("{:.5g}", *v.strouhal));
+  CHECK(table_row(m.table, "C_L ideal (potential)")[1] == fmt::format("{:.6g}", *v.cl_ideal));
+  CHECK(table_row(m.table, "S/(2πρa²)") ==
+        std::vector<std::string>{"—", fmt::format("{:.4f}", *v.magnus_ratio), "undefined"});
+  // Potential flow's errors are not the viscous files'.
+  const auto err = table_row(m.table, "error C_L rel");
+  REQUIRE(err.size() == 3);
+  CHECK(err[0] != "—");
+  CHECK(err[1] == "—");
+  CHECK(err[2] == "—");
+  // The model differs: a parameter row.
+  CHECK(table_row(m.table, "model") ==
+        std::vector<std::string>{"potential", "navier-stokes", "navier-stokes"});
+  CHECK(std::find(m.differing.begin(), m.differing.end(), "model") != m.differing.end());
+
+  // CSV: the viscous columns, empty for the potential file; full precision for the viscous ones.
+  std::istringstream csv(m.csv);
+  std::string line;
+  std::getline(csv, line);
+  const auto head = split(line);
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(csv, line)) rows.push_back(split(line));
+  REQUIRE(rows.size() == 3);
+  auto col = [&](const std::string& name) {
+    const auto it = std::find(head.begin(), head.end(), name);
+    REQUIRE(it != head.end());
+    return size_t(it - head.begin());
+  };
+  for (const auto& r : rows) REQUIRE(r.size() == head.size());
+  CHECK(rows[0][col("cl_mean")].empty());
+  CHECK(std::stod(rows[1][col("cl_mean")]) == *v.cl_mean);
+  CHECK(std::stod(rows[1][col("magnus_ratio")]) == *v.magnus_ratio);
+  CHECK(rows[2][col("magnus_ratio")].empty());
+  CHECK(rows[1][col("cl_rel")].empty());
+  CHECK(rows[1][col("model")] == "navier-stokes");
+}
+
+TEST_CASE("compare: rows of a model no file has are left out", "[io][compare][viscous]") {
+  const std::string dir = test::temp_dir("compare-ns-only");
+  Case c = test::make_case(1.0, 32);
+  write_result(run_case(c), dir + "/a.h5");
+  c.grid.n_theta = 64;
+  write_result(run_case(c), dir + "/b.h5");
+  const Comparison pot = compare_results({dir + "/a.h5", dir + "/b.h5"});
+  CHECK(pot.table.find("C_L mean") == std::string::npos);
+  CHECK(pot.csv.find("cl_mean") == std::string::npos);
+  for (const char* row : {"C_L numeric", "error C_L rel", "C_D"})
+    for (const auto& cell : table_row(pot.table, row)) CHECK(cell != "—");
+  CHECK(pot.table.find("\n  model") == std::string::npos);
+
+  write_result(test::viscous_result_by_hand(1.0), dir + "/n1.h5");
+  write_result(test::viscous_result_by_hand(1.5), dir + "/n2.h5");
+  const Comparison vis = compare_results({dir + "/n1.h5", dir + "/n2.h5"});
+  CAPTURE(vis.table);
+  CHECK(vis.table.find("error C_L rel") == std::string::npos);
+  CHECK(vis.csv.find("cl_rel") == std::string::npos);
+  CHECK(table_row(vis.table, "C_L mean (viscous)").size() == 2);
+  CHECK(table_row(vis.table, "C_L ideal (potential)").size() == 2);
+}

@@ -1,0 +1,129 @@
+// A navier-stokes result in its file: the stored states (/snapshots) and the .xmf's time series of them,
+// read back by read_result and shown by inspect; the potential flow's sidecar is untouched.
+#include <fmt/core.h>
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "io/hdf5_io.hpp"
+#include "io/inspect.hpp"
+#include "io/result_reader.hpp"
+#include "io/schema.hpp"
+#include "io/viscous_fixture.hpp"
+#include "io/xdmf.hpp"
+#include "support.hpp"
+
+using namespace magnus;
+namespace fs = std::filesystem;
+
+namespace {
+
+size_t count(const std::string& s, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = s.find(what); at != std::string::npos; at = s.find(what, at + 1)) ++n;
+  return n;
+}
+
+bool validates(const std::string& xmf, const std::string& dir) {
+  const std::string dtd = std::string(MAGNUS_SOURCE_DIR) + "/tests/data/Xdmf.dtd";
+  if (!fs::exists(dir + "/Xdmf.dtd")) fs::copy_file(dtd, dir + "/Xdmf.dtd");  // the DOCTYPE names it
+  const std::string cmd = "xmllint --noout --dtdvalid '" + dtd + "' '" + xmf + "' 2>'" + dir + "/lint.txt'";
+  return std::system(cmd.c_str()) == 0 && test::slurp(dir + "/lint.txt").empty();
+}
+
+}  // namespace
+
+TEST_CASE("navier-stokes: the stored states are in /snapshots with units, once, and read back",
+          "[io][format][viscous]") {
+  const std::string dir = test::temp_dir("ns-snapshots");
+  const FlowResult r = test::viscous_result_by_hand(1.0, 32, 16, 4);
+  write_result(r, dir + "/ns.h5");
+  const ResultFile f(dir + "/ns.h5");
+  std::vector<size_t> shape;
+  const auto t = f.dataset("/snapshots/t", &shape);
+  REQUIRE(shape == std::vector<size_t>{4});
+  CHECK(t[3] == r.viscous->snapshots[3].t);
+  CHECK(f.attr_string("/snapshots/t", "units") == "s");
+  for (const char* p : {"/snapshots/psi", "/snapshots/vorticity"}) {
+    CAPTURE(p);
+    f.dataset(p, &shape);
+    CHECK(shape == std::vector<size_t>{4, 16, 32});
+    CHECK(f.attr_string(p, "units") == dataset_units(p));
+    CHECK_FALSE(dataset_units(p).empty());
+  }
+  // Every dataset's unit is the schema's, the views of each state included.
+  for (const auto& [path, sh] : f.datasets()) {
+    CAPTURE(path);
+    CHECK(f.attr_string(path, "units") == dataset_units(path));
+  }
+  CHECK(dataset_units("/mesh/snapshots/vorticity/3") == "1/s");
+  // Stored once: the views of the states take no storage, the file is about the size of its values.
+  CHECK(f.has("/mesh/snapshots/vorticity/3"));
+  CHECK(f.dataset("/mesh/snapshots/vorticity/2") == r.viscous->snapshots[2].vorticity);
+  CHECK(f.dataset("/mesh/snapshots/psi/0") == r.viscous->snapshots[0].psi);
+
+  const FlowResult b = read_result(dir + "/ns.h5");
+  REQUIRE(b.viscous);
+  REQUIRE(b.viscous->snapshots.size() == 4);
+  for (size_t k = 0; k < 4; ++k) {
+    CHECK(b.viscous->snapshots[k].t == r.viscous->snapshots[k].t);
+    CHECK(b.viscous->snapshots[k].psi == r.viscous->snapshots[k].psi);
+    CHECK(b.viscous->snapshots[k].vorticity == r.viscous->snapshots[k].vorticity);
+  }
+  CHECK(b.viscous->history.size() == r.viscous->history.size());
+  CHECK(b.fields.vorticity == r.fields.vorticity);
+  CHECK(b.surface.shear_stress == r.surface.shear_stress);
+}
+
+TEST_CASE("navier-stokes: the .xmf adds a temporal collection of the states and still validates",
+          "[io][format][xdmf][viscous]") {
+  const std::string dir = test::temp_dir("ns-xdmf");
+  const FlowResult r = test::viscous_result_by_hand(1.0, 16, 10, 3);
+  write_result(r, dir + "/ns.h5");
+  const std::string xmf = test::slurp(dir + "/ns.xmf");
+  CHECK(count(xmf, "CollectionType=\"Temporal\"") == 1);
+  CHECK(count(xmf, "<Time Value=") == 3);
+  CHECK(count(xmf, "ns.h5:/mesh/snapshots/vorticity/") == 3);
+  CHECK(count(xmf, "ns.h5:/mesh/snapshots/psi/") == 3);
+  CHECK(count(xmf, "ns.h5:/mesh/quads") == 4);  // the states are on the grid's nodes and quadrilaterals
+  // The last state's grid comes first, as for any result.
+  CHECK(xmf.find("GridType=\"Uniform\"") < xmf.find("GridType=\"Collection\""));
+  REQUIRE(validates(dir + "/ns.xmf", dir));
+
+  // No states: no collection, no /snapshots.
+  FlowResult none = r;
+  none.viscous->snapshots.clear();
+  write_result(none, dir + "/none.h5");
+  CHECK(test::slurp(dir + "/none.xmf").find("Collection") == std::string::npos);
+  CHECK_FALSE(ResultFile(dir + "/none.h5").has("/snapshots"));
+  CHECK(read_result(dir + "/none.h5").viscous->snapshots.empty());
+  REQUIRE(validates(dir + "/none.xmf", dir));
+}
+
+TEST_CASE("potential flow: the sidecar is the last state's grid alone, as before", "[io][format][xdmf]") {
+  Case c = test::make_case(1.0, 16);
+  c.output.fields.reset();
+  const FlowResult r = run_case(c);
+  const std::string x = xdmf_text(r, "p.h5");
+  CHECK(x.find("Collection") == std::string::npos);
+  CHECK(x.find("<Time") == std::string::npos);
+  CHECK(count(x, "<Grid ") == 1);
+}
+
+TEST_CASE("inspect: a navier-stokes file's history length and stored states, with units",
+          "[io][inspect][viscous]") {
+  const std::string dir = test::temp_dir("ns-inspect");
+  const FlowResult r = test::viscous_result_by_hand(1.0, 16, 10, 5);
+  write_result(r, dir + "/ns.h5");
+  const std::string s = describe_result(dir + "/ns.h5");
+  CAPTURE(s);
+  CHECK(s.find("/snapshots/vorticity") != std::string::npos);
+  CHECK(s.find("(5 × 10 × 16)  [1/s]") != std::string::npos);
+  CHECK(s.find("/snapshots/t") != std::string::npos);
+  CHECK(s.find(fmt::format("history: {} steps", r.viscous->history.size())) != std::string::npos);
+  CHECK(s.find("snapshots: 5 stored states") != std::string::npos);
+  // The per-state views are summed up in one line, not listed one by one.
+  CHECK(s.find("/mesh/snapshots/psi/3") == std::string::npos);
+  CHECK(s.find("/mesh/snapshots/") != std::string::npos);
+}
