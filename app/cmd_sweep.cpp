@@ -41,6 +41,11 @@ void command_sweep(const SweepOptions& o) {
   if (by_spin) sets.push_back(fmt::format("cylinder.spin_ratio={}", range.values.front()));
   sets.insert(sets.end(), o.sets.begin(), o.sets.end());
   Case c = load_case(o.case_path, sets);
+  if (c.model == FlowModel::navier_stokes)
+    throw std::runtime_error(fmt::format(
+        "{}: model.flow = \"navier-stokes\": magnus sweep solves potential flow by superposition, which "
+        "viscous flow does not allow; run each spin ratio with magnus run --set cylinder.spin_ratio=A",
+        o.case_path));
   // Fail before solving, not after.
   check_distinct_paths({o.case_path}, {o.csv, o.output, o.plot});
   for (const std::string* p : {&o.csv, &o.output, &o.plot})

@@ -155,3 +155,17 @@ TEST_CASE("navier-stokes run: a killed run resumes from its last checkpoint and 
   REQUIRE(other.status != 0);
   REQUIRE(test::lines(other.err) == 1);
 }
+
+TEST_CASE("navier-stokes: sweep refuses in one line, a potential run refuses --resume", "[app][ns]") {
+  const std::string dir = test::temp_dir("ns-sweep");
+  const auto s = test::magnus_cmd({"sweep", write_case(dir, ns_case(100, 1, 5)), "--spin-ratio", "0:1:0.5"}, dir);
+  REQUIRE(s.status != 0);
+  REQUIRE(test::lines(s.err) == 1);
+  REQUIRE(s.err.find("navier-stokes") != std::string::npos);
+  std::ofstream(dir + "/p.toml") << "[cylinder]\nradius = 0.1\nspin = 1.0\n[flow]\nspeed = 1.0\n[grid]\nn_theta = 16\n";
+  const auto r = test::magnus_cmd({"run", dir + "/p.toml", "-o", dir + "/p.h5", "--resume"}, dir);
+  REQUIRE(r.status != 0);
+  REQUIRE(test::lines(r.err) == 1);
+  REQUIRE(r.err.find("--resume") != std::string::npos);
+  REQUIRE_FALSE(exists(dir + "/p.h5"));
+}
