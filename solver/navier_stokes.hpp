@@ -68,6 +68,23 @@ struct NsState {
   double dt_prev = 0.0;          ///< Δt of the previous step, s
 };
 
+/// Wall seconds spent in each part of the time steps (summed over steps; advance() adds to it).
+struct NsStepTimes {
+  double advection = 0.0;  ///< Arakawa's Jacobian and the Crank–Nicolson right-hand side
+  double helmholtz = 0.0;  ///< the implicit diffusion solve for ζ (its FFTs and mode solves)
+  double poisson = 0.0;    ///< the Poisson solve for ψ (its mode solves and inverse FFT)
+  double wall = 0.0;       ///< the wall closure (influence-matrix correction per mode)
+  double other = 0.0;      ///< boundary data, circulation, checks, copies
+  double forces = 0.0;     ///< forces and coefficients per step (filled by run_unsteady)
+  long steps = 0;
+  double total() const { return advection + helmholtz + poisson + wall + other + forces; }
+  NsStepTimes& operator+=(const NsStepTimes& o) {
+    advection += o.advection, helmholtz += o.helmholtz, poisson += o.poisson, wall += o.wall;
+    other += o.other, forces += o.forces, steps += o.steps;
+    return *this;
+  }
+};
+
 /// Discrete operators for one (params, Δt): the grid, the Helmholtz and Poisson mode solvers and the
 /// wall-closure influence data. Immutable; a new Δt = a new operator (factoring costs ~ a few steps).
 class NsOperator {
@@ -100,7 +117,7 @@ class NsOperator {
   PolarGrid grid_;
   double dt_, h_;
   std::unique_ptr<Impl> impl_;
-  friend void advance(const NsOperator&, const NsState&, NsState&);
+  friend void advance(const NsOperator&, const NsState&, NsState&, NsStepTimes*);
 };
 
 /// The grid of the parameters: geometric spacing, R rounded up to square cells when n_r = 0.
@@ -108,7 +125,14 @@ PolarGrid ns_grid(const NsParams& p);
 
 /// One AB2/CN step of op.dt() from old to next (next may not alias old). Throws std::runtime_error when the
 /// CFL number of old exceeds kNsCflLimit or the new fields are not finite (message: time and likely cause).
-void advance(const NsOperator& op, const NsState& old, NsState& next);
+/// The whole step after the advection stays in Fourier space (one forward FFT of the right-hand side, the
+/// Helmholtz, Poisson and wall-closure solves per mode, two inverse FFTs), on params().threads threads of a
+/// persistent pool. Steps on one operator run one at a time (its work buffers are shared).
+/// times (optional): the wall seconds of each part are added to it, and steps is incremented.
+void advance(const NsOperator& op, const NsState& old, NsState& next, NsStepTimes* times);
+inline void advance(const NsOperator& op, const NsState& old, NsState& next) {
+  advance(op, old, next, nullptr);
+}
 
 /// CFL number Δt·max_ij(|ψ_θ|/(J Δξ) + |ψ_ξ|/(J Δθ)) of a state (central differences), dimensionless.
 double cfl_number(const PolarGrid& g, const std::vector<double>& psi, double dt);
