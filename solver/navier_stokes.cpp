@@ -107,6 +107,10 @@ PolarGrid ns_grid(const NsParams& p) {
   req.outer_radius = p.outer_over_a;
   req.n_theta = p.n_theta;
   req.n_r = p.n_r;
+  if (p.n_r <= 0 && p.radial_refinement > 1.0 && p.n_theta > 0 && p.outer_over_a > 1.0) {
+    const double d_xi = 2.0 * M_PI / p.n_theta / p.radial_refinement;
+    req.n_r = int(std::ceil(std::log(p.outer_over_a) / d_xi - 1e-9)) + 1;
+  }
   req.spacing = Spacing::geometric;
   return make_grid(req, p.a);
 }
