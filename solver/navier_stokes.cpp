@@ -171,8 +171,8 @@ NsOperator::NsOperator(const NsParams& p, double dt) : p_(p), dt_(dt) {
       impl_->phi_t[size_t(i) * m + k] = impl_->phi[size_t(k) * nr + i];
       impl_->chi_t[size_t(i) * m + k] = impl_->chi[size_t(k) * nr + i];
     }
-  // The step's pool, its ring ranges and their FFT plans (FFTW_MEASURE on the step's own buffers; FFTW
-  // keeps the wisdom, so a new operator for a new Δt plans again in microseconds).
+  // The step's pool, its ring ranges and their FFT plans on the step's own (aligned) buffers. FFTW_ESTIMATE:
+  // the same plan every run, so a run is reproducible to the last bit (FFTW_MEASURE picks by timing).
   impl_->pool = std::make_unique<NsPool>(std::max(1, std::min(p.threads, nr / 4)));
   impl_->buffers = std::make_unique<StepBuffers>(size_t(nr), size_t(n), size_t(m));
   StepBuffers& b = *impl_->buffers;
@@ -180,7 +180,7 @@ NsOperator::NsOperator(const NsParams& p, double dt) : p_(p), dt_(dt) {
   {
     std::lock_guard<std::mutex> lock(fftw_planner_mutex());
     fftw_plan_with_nthreads(1);
-    const unsigned flags = FFTW_MEASURE;
+    const unsigned flags = FFTW_ESTIMATE;
     for (int t = 0; t < parts; ++t) {
       int rb, re;
       impl_->pool->split(nr, t, rb, re);

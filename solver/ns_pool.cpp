@@ -59,7 +59,8 @@ void NsPool::run(const std::function<void(int)>& f) {
 }
 
 void NsPool::work(int t) {
-  unsigned seen = generation_.load(std::memory_order_acquire);
+  // The generation at construction (0), not a fresh load: a run() may start before this thread does.
+  unsigned seen = 0;
   for (;;) {
     int spins = 0;
     while (generation_.load(std::memory_order_acquire) == seen && spins < kSpins + kYields) {
