@@ -10,36 +10,50 @@ namespace magnus {
 
 namespace {
 
-/// Means and amplitudes of the samples [b, e] (trapezoid in time).
 struct Window {
-  double t0 = 0.0, t1 = 0.0, C_L = 0.0, C_D = 0.0, C_M = 0.0, amp_L = 0.0, amp_D = 0.0;
+  double t0 = 0.0, t1 = 0.0, C_L = 0.0, C_D = 0.0, C_M = 0.0, M = 0.0, amp_L = 0.0, amp_D = 0.0;
 };
 
+/// Means over exactly [t0, t1] of the piecewise-linear history (t0, t1 lie within a sample of b and e:
+/// interpolated peak times, so the window's ends do not jitter with the sampling) and amplitudes.
 Window window(const std::vector<ForceSample>& h, size_t b, size_t e, double t0, double t1) {
   Window w;
   w.t0 = t0;
   w.t1 = t1;
   double T = 0.0, lo_L = h[b].C_L, hi_L = h[b].C_L, lo_D = h[b].C_D, hi_D = h[b].C_D;
-  for (size_t q = b; q < e; ++q) {
-    const double dt = h[q + 1].t - h[q].t;
-    T += dt;
-    w.C_L += 0.5 * dt * (h[q].C_L + h[q + 1].C_L);
-    w.C_D += 0.5 * dt * (h[q].C_D + h[q + 1].C_D);
-    w.C_M += 0.5 * dt * (h[q].C_M + h[q + 1].C_M);
-    lo_L = std::min(lo_L, h[q + 1].C_L), hi_L = std::max(hi_L, h[q + 1].C_L);
-    lo_D = std::min(lo_D, h[q + 1].C_D), hi_D = std::max(hi_D, h[q + 1].C_D);
+  const size_t q0 = b > 0 ? b - 1 : 0, q1 = std::min(e + 1, h.size() - 1);
+  for (size_t q = q0; q < q1; ++q) {
+    const double ta = h[q].t, tb = h[q + 1].t;
+    const double u0 = std::max(ta, t0), u1 = std::min(tb, t1);
+    if (!(u1 > u0) || !(tb > ta)) continue;
+    auto at = [&](double u, double ForceSample::*f) {
+      const double x = (u - ta) / (tb - ta);
+      return (1.0 - x) * (h[q].*f) + x * (h[q + 1].*f);
+    };
+    const double du = u1 - u0;
+    T += du;
+    w.C_L += 0.5 * du * (at(u0, &ForceSample::C_L) + at(u1, &ForceSample::C_L));
+    w.C_D += 0.5 * du * (at(u0, &ForceSample::C_D) + at(u1, &ForceSample::C_D));
+    w.C_M += 0.5 * du * (at(u0, &ForceSample::C_M) + at(u1, &ForceSample::C_M));
+    w.M += 0.5 * du * (at(u0, &ForceSample::M) + at(u1, &ForceSample::M));
   }
-  if (T > 0.0) w.C_L /= T, w.C_D /= T, w.C_M /= T;
+  for (size_t q = b; q <= e; ++q) {
+    lo_L = std::min(lo_L, h[q].C_L), hi_L = std::max(hi_L, h[q].C_L);
+    lo_D = std::min(lo_D, h[q].C_D), hi_D = std::max(hi_D, h[q].C_D);
+  }
+  if (T > 0.0) w.C_L /= T, w.C_D /= T, w.C_M /= T, w.M /= T;
   w.amp_L = 0.5 * (hi_L - lo_L);
   w.amp_D = 0.5 * (hi_D - lo_D);
   return w;
 }
 
-/// Whole periods between successive maxima of C_L, oldest first (at most `last` of them).
-std::vector<Window> periods(const std::vector<ForceSample>& h, size_t last) {
+/// Whole periods between successive maxima of C_L, oldest first (at most `last` of them), using only the
+/// samples from index `first` on.
+std::vector<Window> periods(const std::vector<ForceSample>& h, size_t last, size_t first = 0) {
   std::vector<size_t> peaks;
   std::vector<double> t_peak;
-  for (size_t m = h.size() - 2; m >= 1 && peaks.size() < last + 1; --m) {
+  if (h.size() < 3) return {};
+  for (size_t m = h.size() - 2; m >= first + 1 && peaks.size() < last + 1; --m) {
     if (!(h[m].C_L > h[m - 1].C_L && h[m].C_L >= h[m + 1].C_L)) continue;
     // Parabola through the three samples (uniform Δt near a peak): its vertex times the maximum.
     const double ym = h[m - 1].C_L, y0 = h[m].C_L, yp = h[m + 1].C_L, d = ym - 2.0 * y0 + yp;
@@ -55,18 +69,46 @@ std::vector<Window> periods(const std::vector<ForceSample>& h, size_t last) {
   return out;
 }
 
-}  // namespace
-
-bool analyse_periodic(const std::vector<ForceSample>& h, double D, double U, UnsteadyResult& out) {
-  if (h.size() < 5) return false;
-  const std::vector<Window> w = periods(h, 1);
+bool analyse_periodic_from(const std::vector<ForceSample>& h, size_t first, double D, double U,
+                           UnsteadyResult& out) {
+  if (h.size() < first + 5 || !(U > 0.0)) return false;
+  const std::vector<Window> w = periods(h, 1, first);
   if (w.empty()) return false;
   const Window& p = w.back();
   out.period = p.t1 - p.t0;
   out.St = out.period > 0.0 ? D / (U * out.period) : 0.0;
-  out.C_L_mean = p.C_L, out.C_D_mean = p.C_D, out.C_M_mean = p.C_M;
+  out.C_L_mean = p.C_L, out.C_D_mean = p.C_D, out.C_M_mean = p.C_M, out.M_mean = p.M;
   out.C_L_amplitude = p.amp_L, out.C_D_amplitude = p.amp_D;
   return true;
+}
+
+/// The field f of grid `from` on grid `to` (same body), bilinear in (ξ, θ), periodic in θ; rings beyond
+/// from's R take its outer ring.
+std::vector<double> interpolate(const PolarGrid& from, const std::vector<double>& f, const PolarGrid& to) {
+  const int nf = from.n_theta, nt = to.n_theta;
+  std::vector<double> out(size_t(to.n_r) * nt);
+  for (int i = 0; i < to.n_r; ++i) {
+    const double x = std::min(to.xi[i], from.xi.back());
+    int a = int(std::upper_bound(from.xi.begin(), from.xi.end(), x) - from.xi.begin()) - 1;
+    a = std::max(0, std::min(a, from.n_r - 2));
+    const double s = std::max(0.0, std::min(1.0, (x - from.xi[a]) / (from.xi[a + 1] - from.xi[a])));
+    for (int j = 0; j < nt; ++j) {
+      const double u = to.theta[j] / from.d_theta;
+      const int b = int(std::floor(u)) % nf, c = (b + 1) % nf;
+      const double v = u - std::floor(u);
+      const double* r0 = &f[size_t(a) * nf];
+      const double* r1 = &f[size_t(a + 1) * nf];
+      out[size_t(i) * nt + j] =
+          (1.0 - s) * ((1.0 - v) * r0[b] + v * r0[c]) + s * ((1.0 - v) * r1[b] + v * r1[c]);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+bool analyse_periodic(const std::vector<ForceSample>& h, double D, double U, UnsteadyResult& out) {
+  return analyse_periodic_from(h, 0, D, U, out);
 }
 
 double choose_time_step(const NsParams& p, const PolarGrid& g, const NsState& s, std::string* note) {
@@ -83,59 +125,140 @@ double choose_time_step(const NsParams& p, const PolarGrid& g, const NsState& s,
 
 UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState start,
                             std::vector<ForceSample> history) {
-  const auto clock0 = std::chrono::steady_clock::now();
+  using clock = std::chrono::steady_clock;
+  const auto clock0 = clock::now();
+  if (!(p.U >= 0.0) || !std::isfinite(p.U) || !std::isfinite(p.omega) || !(p.a > 0.0))
+    throw std::invalid_argument("run_unsteady: needs a > 0, U >= 0 and a finite spin");
+  const double U_ref = p.U > 0.0 ? p.U : std::fabs(p.a * p.omega);
+  if (!(U_ref > 0.0))
+    throw std::invalid_argument(
+        "run_unsteady: U = 0 and omega = 0: nothing moves (give a freestream U > 0 or a spin omega != 0)");
   UnsteadyResult res;
   res.history = std::move(history);
-  if (!(p.U > 0.0)) throw std::invalid_argument("run_unsteady: needs U > 0 (coefficients and St use U)");
+  res.has_coefficients = p.U > 0.0;
+  res.reference_speed = U_ref;
   const PolarGrid g = ns_grid(p);
-  const double D = 2.0 * p.a, t_conv = D / p.U;
-  std::string note;
-  double dt = choose_time_step(p, g, start, &note);
+  const double D = 2.0 * p.a, t_conv = D / U_ref;
+  std::string note, warm_note;
+  size_t first_fine = 0;  // convergence tests use samples from here on (the full grid's)
+  const double t_start = start.t;
+
+  // Warm start on the grid with half the points each way.
+  if (o.coarse_start && res.history.empty() && start.t == 0.0 && p.n_theta >= 96 && g.n_r >= 32) {
+    NsParams pc = p;
+    pc.n_theta = (p.n_theta / 2 + 1) / 2 * 2;
+    pc.n_r = (g.n_r + 1) / 2;
+    pc.outer_over_a = g.outer_radius() / p.a;
+    const PolarGrid gc = ns_grid(pc);
+    NsState sc;
+    sc.zeta = interpolate(g, start.zeta, gc);
+    sc.psi = interpolate(g, start.psi, gc);
+    sc.Gamma_R = start.Gamma_R;
+    UnsteadyOptions oc = o;
+    oc.coarse_start = false;
+    oc.mean_tol = 10.0 * o.mean_tol;
+    oc.steady_tol = 10.0 * o.steady_tol;
+    oc.on_step = nullptr;
+    UnsteadyResult rc = run_unsteady(pc, oc, std::move(sc));
+    res.coarse_steps = rc.steps;
+    res.steps += rc.steps;
+    res.times += rc.times;
+    if (rc.ok && rc.state.t < o.t_end) {
+      NsState s;
+      s.t = rc.state.t;
+      s.Gamma_R = rc.state.Gamma_R;
+      s.zeta = interpolate(gc, rc.state.zeta, g);
+      s.psi = interpolate(gc, rc.state.psi, g);
+      const NsOperator op0(p, choose_time_step(p, g, s, nullptr));
+      op0.close_wall(s.psi, s.zeta, s.Gamma_R);
+      start = std::move(s);
+      res.history = std::move(rc.history);
+      first_fine = res.history.size();
+      res.t_fine = start.t;
+      warm_note = "warm start on " + std::to_string(gc.n_r) + " x " + std::to_string(gc.n_theta) +
+                  " to t = " + std::to_string(start.t) + " s (" + rc.message + ")";
+    } else {
+      warm_note = "warm start skipped (" + rc.message + ")";
+    }
+  }
+
+  std::string dt_note;
+  double dt = choose_time_step(p, g, start, &dt_note);
   auto op = std::make_unique<NsOperator>(p, dt);
   NsState cur = std::move(start), nxt;
+  const double q_ref = 0.5 * o.rho * U_ref * U_ref;
   // Record a state's forces (a resumed history already holds its first sample); false: asked to stop.
   auto sample = [&](const NsState& s) {
+    const auto c0 = clock::now();
     const ViscousForces f = viscous_forces(g, p, o.rho, s);
-    if (res.history.empty() || s.t > res.history.back().t)
-      res.history.push_back({s.t, *f.C_L, *f.C_D, *f.C_M, f.F_x, f.F_y, f.M});
+    if (res.history.empty() || s.t > res.history.back().t) {
+      ForceSample x;
+      x.t = s.t;
+      x.has_coefficients = f.C_L.has_value();
+      x.C_L = f.C_L.value_or(0.0), x.C_D = f.C_D.value_or(0.0), x.C_M = f.C_M.value_or(0.0);
+      x.F_x = f.F_x, x.F_y = f.F_y, x.M = f.M;
+      res.history.push_back(x);
+    }
+    res.times.forces += std::chrono::duration<double>(clock::now() - c0).count();
     return !o.on_step || o.on_step(s, f);
   };
   bool go_on = sample(cur);
-  const double t_min = o.t_min >= 0.0 ? o.t_min : (g.outer_radius() - p.a) / p.U + 10.0 * t_conv;
+  // The starting vortex must have left (U > 0); a fresh start also waits out the impulsive transient.
+  const double t_min = o.t_min >= 0.0     ? o.t_min
+                       : res.t_fine > 0.0 ? res.t_fine
+                       : p.U > 0.0        ? (g.outer_radius() - p.a) / U_ref + 10.0 * t_conv
+                                          : 10.0 * t_conv;
+  // Δt: the CFL floor of cfl_time_step covers the impulsive start; after 2 D/U_ref (or at once after a warm
+  // start) Δt follows the measured CFL number, within ±20% of the target before the operator is rebuilt.
+  const double t_floor_off = res.t_fine > 0.0 ? cur.t : t_start + 2.0 * t_conv;
   res.message = "reached t_end";
   try {
     while (go_on && cur.t < o.t_end - 1e-12 * o.t_end) {
-      // Keep the CFL number near its target: the velocities grow as the wake forms.
       if (res.steps % 10 == 0) {
         const double cfl = cfl_number(g, cur.psi, dt);
-        if (cfl > 0.95 * kNsCflLimit || (p.dt <= 0.0 && cfl > std::min(1.25 * p.cfl, 0.95 * kNsCflLimit))) {
-          dt = cfl_time_step(p, g, cur.psi, p.cfl);
+        bool rebuild = cfl > 0.95 * kNsCflLimit;
+        double dt_new = cfl_time_step(p, g, cur.psi, p.cfl);
+        if (p.dt <= 0.0) {
+          if (cur.t >= t_floor_off) {
+            if (cfl > 1.2 * p.cfl || cfl < 0.8 * p.cfl) {
+              rebuild = true;
+              dt_new = cfl > 0.0 ? dt * p.cfl / cfl : dt_new;
+            }
+          } else if (cfl > std::min(1.25 * p.cfl, 0.95 * kNsCflLimit)) {
+            rebuild = true;
+          }
+        }
+        if (rebuild) {
+          dt = dt_new;
           op = std::make_unique<NsOperator>(p, dt);
         }
       }
       const double step = std::min(dt, o.t_end - cur.t);
       if (step < 0.999 * dt) op = std::make_unique<NsOperator>(p, step);  // land on t_end
-      advance(*op, cur, nxt);
+      advance(*op, cur, nxt, &res.times);
       std::swap(cur, nxt);
       ++res.steps;
       go_on = sample(cur);
       if (cur.t < t_min || res.steps % 50 != 0) continue;
-      // Steady: forces flat over the window.
+      // Steady: forces flat over the window (on ½ρU_ref²D; torque on ½ρU_ref²D²).
       const double t_from = cur.t - o.steady_window * t_conv;
-      if (t_from > 0.0) {
-        double lo_L = 1e300, hi_L = -1e300, lo_D = 1e300, hi_D = -1e300;
-        for (size_t q = res.history.size(); q-- > 0 && res.history[q].t >= t_from;) {
-          lo_L = std::min(lo_L, res.history[q].C_L), hi_L = std::max(hi_L, res.history[q].C_L);
-          lo_D = std::min(lo_D, res.history[q].C_D), hi_D = std::max(hi_D, res.history[q].C_D);
+      if (t_from > 0.0 && (res.history.size() - first_fine) > 2 && res.history[first_fine].t <= t_from) {
+        double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+        for (size_t q = res.history.size(); q-- > first_fine && res.history[q].t >= t_from;) {
+          const ForceSample& x = res.history[q];
+          const double v[3] = {x.F_x / (q_ref * D), x.F_y / (q_ref * D), x.M / (q_ref * D * D)};
+          for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], v[c]), hi[c] = std::max(hi[c], v[c]);
         }
-        if (hi_L - lo_L < o.steady_tol && hi_D - lo_D < o.steady_tol) {
+        if (hi[0] - lo[0] < o.steady_tol && hi[1] - lo[1] < o.steady_tol &&
+            (p.U > 0.0 || hi[2] - lo[2] < o.steady_tol)) {
           res.steady = res.converged = true;
           res.message = "steady";
           break;
         }
       }
-      // Periodic: the last periods agree.
-      const std::vector<Window> w = periods(res.history, size_t(o.converged_periods) + 1);
+      // Periodic: the last periods agree (full-grid periods only).
+      if (!res.has_coefficients) continue;
+      const std::vector<Window> w = periods(res.history, size_t(o.converged_periods) + 1, first_fine);
       if (w.size() >= size_t(o.converged_periods) + 1) {
         bool same = true;
         for (size_t q = 1; q < w.size(); ++q) {
@@ -158,15 +281,17 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
     res.interrupted = true;
     res.message = "interrupted";
   }
-  if (!note.empty()) res.message += "; " + note;
-  res.periodic = !res.steady && analyse_periodic(res.history, D, p.U, res);
+  if (!warm_note.empty()) res.message += "; " + warm_note;
+  if (!dt_note.empty()) res.message += "; " + dt_note;
+  res.periodic = !res.steady && analyse_periodic_from(res.history, first_fine, D, p.U, res);
   if (!res.periodic) {
     const ForceSample& last = res.history.back();
-    res.C_L_mean = last.C_L, res.C_D_mean = last.C_D, res.C_M_mean = last.C_M;
+    res.C_L_mean = last.C_L, res.C_D_mean = last.C_D, res.C_M_mean = last.C_M, res.M_mean = last.M;
   }
   res.dt = dt;
   res.state = std::move(cur);
-  res.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock0).count();
+  res.wall_seconds = std::chrono::duration<double>(clock::now() - clock0).count();
+  res.steps_per_second = res.wall_seconds > 0.0 ? double(res.steps) / res.wall_seconds : 0.0;
   return res;
 }
 

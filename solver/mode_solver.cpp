@@ -161,6 +161,31 @@ std::vector<double> ModeSolver::solve(const std::vector<double>& f, const std::v
   return u;
 }
 
+void ModeSolver::solve_mode_range(cplx* u_hat, const cplx* g_wall_hat, const cplx* g_outer_hat, int kb,
+                                  int ke) const {
+  const int i_outer = n_r_ - 1;
+  const size_t m = size_t(m_);
+  cplx* y = u_hat + m;  // ring i at y[at(i, k)]
+  // Right-hand side (equation times −h_i) and the boundary values moved over, then Thomas, per mode.
+  for (int i = 1; i <= L_; ++i) {
+    const double s = -h_[i];
+    for (int k = kb; k < ke; ++k) y[at(i, k)] *= s;
+  }
+  const double w_wall = 1.0 / d_xi_[0];
+  for (int k = kb; k < ke; ++k) y[at(1, k)] += g_wall_hat[k] * w_wall;
+  const double w_outer = outer_ == OuterBoundary::dirichlet ? 1.0 / d_xi_[i_outer - 1] : 1.0;
+  for (int k = kb; k < ke; ++k) y[at(L_, k)] += g_outer_hat[k] * w_outer;
+  for (int i = 2; i <= L_; ++i)
+    for (int k = kb; k < ke; ++k) y[at(i, k)] -= upper_[at(i - 1, k)] * y[at(i - 1, k)];
+  for (int k = kb; k < ke; ++k) y[at(L_, k)] *= inv_pivot_[at(L_, k)];
+  for (int i = L_ - 1; i >= 1; --i)
+    for (int k = kb; k < ke; ++k)
+      y[at(i, k)] = y[at(i, k)] * inv_pivot_[at(i, k)] - upper_[at(i, k)] * y[at(i + 1, k)];
+  for (int k = kb; k < ke; ++k) u_hat[k] = g_wall_hat[k];
+  if (outer_ == OuterBoundary::dirichlet)
+    for (int k = kb; k < ke; ++k) u_hat[size_t(i_outer) * m + k] = g_outer_hat[k];
+}
+
 std::vector<double> ModeSolver::influence(int k) const {
   if (k < 0 || k >= m_)
     throw std::invalid_argument("ModeSolver: mode " + std::to_string(k) + " is outside 0…" +

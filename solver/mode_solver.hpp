@@ -8,6 +8,7 @@
 //     h_i = (Δξ_{i−1/2} + Δξ_{i+1/2})/2,  λ_k = (2 − 2cos kΔθ)/Δθ².
 // Wall ring 0: Dirichlet. Outer ring n_r−1: Dirichlet, or Neumann u_ξ = h through a mirror ghost ring
 // (u_{N+1} = u_{N−1} + 2Δξ_{N−1/2}·h, second order).
+#include <complex>
 #include <memory>
 #include <vector>
 
@@ -36,6 +37,14 @@ class ModeSolver {
   /// sizes or non-finite input.
   std::vector<double> solve(const std::vector<double>& f, const std::vector<double>& g_wall,
                             const std::vector<double>& g_outer) const;
+
+  /// The per-mode part of solve() in Fourier space, for modes [kb, ke) (the caller transforms; several
+  /// threads may work on disjoint ranges at once). u_hat is (n_r, modes()) row-major: on entry rings 1…L hold
+  /// f̂ (FFTW's unnormalised r2c of f, L = n_r−2 Dirichlet, n_r−1 Neumann); on exit all rings hold û (the
+  /// wall ring = g_wall_hat, a Dirichlet outer ring = g_outer_hat), in the same unnormalised scaling.
+  /// g_wall_hat, g_outer_hat: r2c of the boundary data (modes() values each). No checks: O(n_r·(ke−kb)).
+  void solve_mode_range(std::complex<double>* u_hat, const std::complex<double>* g_wall_hat,
+                        const std::complex<double>* g_outer_hat, int kb, int ke) const;
 
   /// Influence vector of mode k = 0…n_θ/2: φ_k(ξ_i), i = 0…n_r−1, of the homogeneous problem
   /// (f = 0, g_outer = 0) with unit wall data in mode k: φ_k(0) = 1. Wall data cos(kθ) or sin(kθ)

@@ -37,11 +37,17 @@ struct NsParams {
   double U = 1.0;               ///< freestream speed towards +x, m/s
   double omega = 0.0;           ///< spin, rad/s, counter-clockwise positive (α = aω/U)
   double nu = 0.01;             ///< kinematic viscosity, m²/s
-  double outer_over_a = 100.0;  ///< R/a (rounded up to whole square cells when n_r = 0); 100: < 0.5% from ∞
-  int n_theta = 256;            ///< points in θ (even)
-  int n_r = 0;                  ///< rings; 0: square cells Δξ = Δθ
-  double dt = 0.0;              ///< time step, s; 0: from the CFL number
-  double cfl = 0.5;             ///< target CFL number Δt·max(|ψ_θ|/(JΔξ) + |ψ_ξ|/(JΔθ))
+  double outer_over_a = 100.0;  ///< R/a; 100 (50 D): C_L, C_D, St move < 0.05% when it doubles
+  int n_theta = 128;            ///< points in θ (even)
+  /// Rings; 0: Δξ = Δθ/radial_refinement (R kept). At Re 100, α = 1 the mean forces depend on Δξ and
+  /// hardly on Δθ (n_θ 128 → 256 moved C_D by 0.06%, St by 0.25%), so the default cells are 2.5 times
+  /// finer in ξ than in θ: n_r = 236 at R = 100a, n_θ = 128.
+  int n_r = 0;
+  double radial_refinement = 2.5;  ///< Δθ/Δξ when n_r = 0 (1: square cells)
+  double dt = 0.0;                 ///< time step, s; 0: from the CFL number
+  /// Target CFL number Δt·max(|ψ_θ|/(JΔξ) + |ψ_ξ|/(JΔθ)). The forces do not depend on it (CFL 0.35,
+  /// 0.4, 0.5, 0.7 gave the same means to 1e-5 at Re 100, α = 1): the largest safe value below the limit.
+  double cfl = 0.7;
   /// Threads for the advection and the mode solves. 1 by default: measured at Re 100, n_θ = 192 on this
   /// 2-core machine, 2 threads took 64.5 s against 38.9 s (FFTW's thread pool and per-step thread starts
   /// cost more than they save on ~27k nodes; at n_θ = 512 the two were level).
@@ -66,6 +72,23 @@ struct NsState {
   std::vector<double> N_prev;    ///< advection N^{n−1} (empty: first step, AB2 starts with Euler)
   double Gamma_flux_prev = 0.0;  ///< dΓ_R/dt at t^{n−1}, m²/s²
   double dt_prev = 0.0;          ///< Δt of the previous step, s
+};
+
+/// Wall seconds spent in each part of the time steps (summed over steps; advance() adds to it).
+struct NsStepTimes {
+  double advection = 0.0;  ///< Arakawa's Jacobian and the Crank–Nicolson right-hand side
+  double helmholtz = 0.0;  ///< the implicit diffusion solve for ζ (its FFTs and mode solves)
+  double poisson = 0.0;    ///< the Poisson solve for ψ (its mode solves and inverse FFT)
+  double wall = 0.0;       ///< the wall closure (influence-matrix correction per mode)
+  double other = 0.0;      ///< boundary data, circulation, checks, copies
+  double forces = 0.0;     ///< forces and coefficients per step (filled by run_unsteady)
+  long steps = 0;
+  double total() const { return advection + helmholtz + poisson + wall + other + forces; }
+  NsStepTimes& operator+=(const NsStepTimes& o) {
+    advection += o.advection, helmholtz += o.helmholtz, poisson += o.poisson, wall += o.wall;
+    other += o.other, forces += o.forces, steps += o.steps;
+    return *this;
+  }
 };
 
 /// Discrete operators for one (params, Δt): the grid, the Helmholtz and Poisson mode solvers and the
@@ -100,15 +123,23 @@ class NsOperator {
   PolarGrid grid_;
   double dt_, h_;
   std::unique_ptr<Impl> impl_;
-  friend void advance(const NsOperator&, const NsState&, NsState&);
+  friend void advance(const NsOperator&, const NsState&, NsState&, NsStepTimes*);
 };
 
-/// The grid of the parameters: geometric spacing, R rounded up to square cells when n_r = 0.
+/// The grid of the parameters: geometric spacing; n_r = 0: the fewest rings with Δξ ≤ Δθ/radial_refinement
+/// (R as asked; radial_refinement ≤ 0 or 1 with n_r = 0: square cells, R rounded up to whole cells).
 PolarGrid ns_grid(const NsParams& p);
 
 /// One AB2/CN step of op.dt() from old to next (next may not alias old). Throws std::runtime_error when the
 /// CFL number of old exceeds kNsCflLimit or the new fields are not finite (message: time and likely cause).
-void advance(const NsOperator& op, const NsState& old, NsState& next);
+/// The whole step after the advection stays in Fourier space (one forward FFT of the right-hand side, the
+/// Helmholtz, Poisson and wall-closure solves per mode, two inverse FFTs), on params().threads threads of a
+/// persistent pool. Steps on one operator run one at a time (its work buffers are shared).
+/// times (optional): the wall seconds of each part are added to it, and steps is incremented.
+void advance(const NsOperator& op, const NsState& old, NsState& next, NsStepTimes* times);
+inline void advance(const NsOperator& op, const NsState& old, NsState& next) {
+  advance(op, old, next, nullptr);
+}
 
 /// CFL number Δt·max_ij(|ψ_θ|/(J Δξ) + |ψ_ξ|/(J Δθ)) of a state (central differences), dimensionless.
 double cfl_number(const PolarGrid& g, const std::vector<double>& psi, double dt);

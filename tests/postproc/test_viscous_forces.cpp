@@ -134,3 +134,71 @@ TEST_CASE("[ns] driver: an asked time step above the stability limit is clamped 
   CHECK(r.message.find("above the stability limit") != std::string::npos);
   CHECK(r.history.size() == 21);
 }
+
+TEST_CASE("[ns] driver: U = 0, a cylinder spun up in still fluid reaches the potential vortex", "[ns]") {
+  // Exact steady state u_θ = a²ω/r, ζ = 0: torque M = −4πμa²ω; no coefficients (no U), never NaN.
+  NsParams p;
+  p.a = 1.0, p.U = 0.0, p.omega = 1.0, p.nu = 1.0, p.outer_over_a = 2.0, p.n_theta = 16, p.n_r = 17;
+  p.dt = 0.02;  // Crank–Nicolson rings slowly at the CFL step (νΔt/Δr² ≈ 150 here): a diffusive Δt
+  UnsteadyOptions o;
+  o.t_end = 200.0;
+  o.rho = 2.0;
+  const UnsteadyResult r = run_unsteady(p, o, impulsive_start(p, ns_grid(p)));
+  INFO(r.message);
+  REQUIRE(r.ok);
+  CHECK(r.steady);
+  CHECK(!r.has_coefficients);
+  CHECK(r.reference_speed == Approx(1.0));  // a|ω|
+  CHECK(r.state.t < 100.0);                 // stopped as steady, well before t_end
+  const double mu = o.rho * p.nu;
+  CHECK(r.M_mean == Approx(-4.0 * M_PI * mu * p.a * p.a * p.omega).epsilon(1e-5));
+  for (const ForceSample& x : r.history) {
+    CHECK(!x.has_coefficients);
+    CHECK((x.C_L == 0.0 && x.C_D == 0.0 && x.C_M == 0.0));
+    CHECK(std::isfinite(x.M));
+  }
+  CHECK((r.C_L_mean == 0.0 && r.C_D_mean == 0.0 && r.St == 0.0));
+  p.omega = 0.0;  // nothing moves
+  CHECK_THROWS_AS(run_unsteady(p, o, impulsive_start(p, ns_grid(p))), std::invalid_argument);
+}
+
+TEST_CASE("[ns] driver: the per-part step times add up to the steps' wall time", "[ns]") {
+  NsParams p;
+  p.a = 0.5, p.U = 1.0, p.omega = 1.0, p.nu = 0.02, p.outer_over_a = 10.0, p.n_theta = 64;
+  UnsteadyOptions o;
+  o.t_end = 2.0;
+  const UnsteadyResult r = run_unsteady(p, o, impulsive_start(p, ns_grid(p)));
+  REQUIRE(r.ok);
+  const NsStepTimes& t = r.times;
+  CHECK(t.steps == r.steps);
+  CHECK(r.steps > 10);
+  for (double x : {t.advection, t.helmholtz, t.poisson, t.wall, t.other, t.forces}) CHECK(x >= 0.0);
+  CHECK(t.advection > 0.0);
+  CHECK(t.helmholtz > 0.0);
+  CHECK(t.poisson > 0.0);
+  CHECK(t.total() <= r.wall_seconds * 1.001);
+  CHECK(t.total() > 0.0);  // the rest of the wall time: operators (a new one per Δt), CFL checks
+  CHECK(r.steps_per_second == Approx(r.steps / r.wall_seconds));
+}
+
+TEST_CASE("[ns] driver: the periodic means are exact over whole periods of a sampled sine", "[ns]") {
+  // C_L = −2.5 + 0.36 sin(2π t/T), C_D = 1.1 + 0.1 sin(4π t/T): means −2.5 and 1.1 over any whole period,
+  // T found from parabolic peaks; coarse, irregular sampling must not move them beyond O(Δt²).
+  const double T = 6.03, dt0 = 0.037;
+  std::vector<ForceSample> h;
+  for (double t = 0.0; t < 40.0; t += dt0 * (1.0 + 0.3 * std::sin(7.0 * t))) {
+    ForceSample x;
+    x.t = t;
+    x.C_L = -2.5 + 0.36 * std::sin(2.0 * M_PI * t / T);
+    x.C_D = 1.1 + 0.1 * std::sin(4.0 * M_PI * t / T);
+    h.push_back(x);
+  }
+  UnsteadyResult r;
+  REQUIRE(analyse_periodic(h, 1.0, 1.0, r));
+  CHECK(r.period == Approx(T).epsilon(2e-4));
+  CHECK(r.St == Approx(1.0 / T).epsilon(2e-4));
+  CHECK(r.C_L_mean == Approx(-2.5).epsilon(2e-5));
+  CHECK(r.C_D_mean == Approx(1.1).epsilon(2e-5));
+  CHECK(r.C_L_amplitude == Approx(0.36).epsilon(1e-3));
+  CHECK(!analyse_periodic(h, 1.0, 0.0, r));  // U = 0: no Strouhal number, no coefficients
+}

@@ -22,11 +22,13 @@ int main(int argc, char** argv) {
   p.omega = std::atof(argv[2]) * p.U / p.a;
   p.n_theta = std::atoi(argv[3]);
   p.outer_over_a = std::atof(argv[4]);
-  if (argc > 6) p.cfl = std::atof(argv[6]);
+  if (argc > 6 && std::atof(argv[6]) > 0.0) p.cfl = std::atof(argv[6]);
   if (const char* t = std::getenv("NS_THREADS")) p.threads = std::atoi(t);
+  if (const char* t = std::getenv("NS_NR")) p.n_r = std::atoi(t);
   const bool quiet = argc > 7;
   UnsteadyOptions o;
   o.t_end = std::atof(argv[5]);
+  if (const char* c = std::getenv("NS_COARSE")) o.coarse_start = std::atoi(c) != 0;
   double next_print = 0.0;
   o.on_step = [&](const NsState& s, const ViscousForces& f) {
     if (quiet || s.t < next_print) return true;
@@ -36,11 +38,19 @@ int main(int argc, char** argv) {
     return true;
   };
   const PolarGrid g = ns_grid(p);
-  const UnsteadyResult r = run_unsteady(p, o, impulsive_start(p, g));
+  NsState start = impulsive_start(p, g);
+  if (std::getenv("NS_BLOB")) add_vortex_blob(g, start, 1.5, 0.3, 0.25, 1e-3);
+  const UnsteadyResult r = run_unsteady(p, o, std::move(start));
   std::printf("grid %d x %d, R/a = %.2f, dt = %.5g, steps %ld, wall %.2f s (%.3f ms/step)\n", g.n_r,
               g.n_theta, g.outer_radius() / p.a, r.dt, r.steps, r.wall_seconds,
               1e3 * r.wall_seconds / double(r.steps));
   std::printf("%s; t = %.2f\n", r.message.c_str(), r.state.t);
+  const NsStepTimes& tm = r.times;
+  std::printf(
+      "steps %ld (coarse %ld), %.0f steps/s; seconds: advection %.2f helmholtz %.2f poisson %.2f wall %.2f "
+      "other %.2f forces %.2f; CFL at the end %.3f\n",
+      r.steps, r.coarse_steps, r.steps_per_second, tm.advection, tm.helmholtz, tm.poisson, tm.wall, tm.other,
+      tm.forces, cfl_number(g, r.state.psi, r.dt));
   std::printf("C_L mean %.5f  amp %.5f  C_D mean %.5f  amp %.5f  C_M mean %.5f  St %.5f  (%s)\n", r.C_L_mean,
               r.C_L_amplitude, r.C_D_mean, r.C_D_amplitude, r.C_M_mean, r.St,
               r.steady     ? "steady"
