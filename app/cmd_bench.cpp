@@ -11,16 +11,41 @@
 #include "io/bench_table.hpp"
 #include "io/case_file.hpp"
 #include "io/hdf5_io.hpp"
+#include "postproc/ns_bench.hpp"
 #include "plot/curves.hpp"
 
 namespace magnus {
+
+namespace {
+
+/// magnus bench on a navier-stokes case: the cost of a time step on a ladder of grids, split into its parts.
+void bench_viscous(const Case& c, std::vector<int> ladder, int steps, const std::string& case_path,
+                   const std::string& csv, const std::string& plot) {
+  if (!plot.empty())
+    throw std::runtime_error("--plot: a navier-stokes bench has no error to plot (its table is the step cost)");
+  check_distinct_paths({case_path}, {csv});
+  if (!csv.empty()) check_writable(csv);
+  if (ladder.empty()) ladder = {c.grid.n_theta / 2 + (c.grid.n_theta / 2) % 2, c.grid.n_theta, 2 * c.grid.n_theta};
+  for (int n : ladder)
+    if (n % 2) throw std::runtime_error(fmt::format("--ladder: n_theta = {} must be even", n));
+  const auto rows = run_ns_bench(c, ladder, steps);
+  std::printf("magnus bench — %s (navier-stokes, Re = %.6g, α = %.6g; %d timed steps per grid from the start, "
+              "one thread; ms per step and share)\n",
+              c.title.c_str(), c.scene.reynolds(), c.scene.spin_ratio(), steps);
+  std::fputs(ns_bench_table(rows).c_str(), stdout);
+  std::puts("(The error of a whole run against published values, and its wall time, is the README's validation "
+            "table: ctest -L validation.)");
+  if (!csv.empty()) write_text_output(csv, ns_bench_csv(rows));
+}
+
+}  // namespace
 
 void add_bench_command(CLI::App& app) {
   struct Options {
     std::string case_path, csv, plot;
     std::vector<std::string> sets, methods, stencils;
     std::vector<int> ladder;
-    int repeats = 5, threads = 1;
+    int repeats = 5, threads = 1, steps = 200;
     long cholmod_max = 300000;
   };
   auto o = std::make_shared<Options>();
@@ -41,10 +66,15 @@ void add_bench_command(CLI::App& app) {
   b->add_option("--cholmod-max-unknowns", o->cholmod_max, "skip larger CHOLMOD rungs (default 300000)")
       ->check(CLI::Range(1L, 1L << 40));
   b->add_option("--threads", o->threads, "threads for the solver")->check(CLI::Range(1, 64));
+  b->add_option("--steps", o->steps, "navier-stokes: timed steps per rung (default 200)")->check(CLI::Range(1, 1000000));
   b->add_option("--csv", o->csv, "write the table as CSV");
   b->add_option("--plot", o->plot, "write a log-log PNG of C_L error against time (the Pareto front)");
   b->callback([o] {
     const Case c = load_case(o->case_path, o->sets);
+    if (c.model == FlowModel::navier_stokes) {
+      bench_viscous(c, o->ladder, o->steps, o->case_path, o->csv, o->plot);
+      return;
+    }
     BenchOptions opt;
     if (!o->ladder.empty()) opt.ladder = o->ladder;
     for (int n : opt.ladder)

@@ -35,4 +35,55 @@ std::string bench_csv(const std::vector<BenchRow>& rows) {
   return s;
 }
 
+namespace {
+
+/// The parts of a step, in table order: name and seconds.
+std::vector<std::pair<const char*, double>> parts(const NsStepTimes& t) {
+  return {{"advection", t.advection}, {"diffusion", t.helmholtz}, {"Poisson", t.poisson},
+          {"wall", t.wall},           {"other", t.other},         {"forces", t.forces}};
+}
+
+}  // namespace
+
+std::string ns_bench_table(const std::vector<NsBenchRow>& rows) {
+  std::string s = fmt::format("{:>6}{:>6}{:>9}{:>11}{:>9}{:>10}", "n_θ", "n_r", "nodes", "Δt (D/U)", "steps/s",
+                              "ms/step");
+  for (const auto& [name, v] : parts(NsStepTimes{})) {
+    (void)v;
+    s += fmt::format("{:>17}", name);
+  }
+  s += "\n";
+  for (const auto& r : rows) {
+    const double n = double(std::max(r.times.steps, 1L)), total = r.times.total();
+    s += fmt::format("{:>6}{:>6}{:>9}{:>11.4g}{:>9.0f}{:>10.3f}", r.n_theta, r.n_r, r.nodes, r.dt / r.time_unit,
+                     r.steps_per_second(), 1e3 * r.wall_s / n);
+    for (const auto& [name, v] : parts(r.times)) {
+      (void)name;
+      s += fmt::format("{:>17}", fmt::format("{:.3f} ({:.0f}%)", 1e3 * v / n, total > 0 ? 100.0 * v / total : 0.0));
+    }
+    s += "\n";
+  }
+  return s;
+}
+
+std::string ns_bench_csv(const std::vector<NsBenchRow>& rows) {
+  std::string s = "n_theta,n_r,nodes,dt_s,dt_convective,steps,steps_per_s,ms_per_step";
+  for (const auto& [name, v] : parts(NsStepTimes{})) {
+    (void)v;
+    s += fmt::format(",{}_ms", name);
+  }
+  s += "\n";
+  for (const auto& r : rows) {
+    const double n = double(std::max(r.times.steps, 1L));
+    s += fmt::format("{},{},{},{:.6e},{:.6e},{},{:.6g},{:.6g}", r.n_theta, r.n_r, r.nodes, r.dt,
+                     r.dt / r.time_unit, r.times.steps, r.steps_per_second(), 1e3 * r.wall_s / n);
+    for (const auto& [name, v] : parts(r.times)) {
+      (void)name;
+      s += fmt::format(",{:.6g}", 1e3 * v / n);
+    }
+    s += "\n";
+  }
+  return s;
+}
+
 }  // namespace magnus

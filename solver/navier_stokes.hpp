@@ -38,12 +38,12 @@ struct NsParams {
   double omega = 0.0;           ///< spin, rad/s, counter-clockwise positive (α = aω/U)
   double nu = 0.01;             ///< kinematic viscosity, m²/s
   double outer_over_a = 100.0;  ///< R/a; 100 (50 D): C_L, C_D, St move < 0.05% when it doubles
-  int n_theta = 128;            ///< points in θ (even)
+  int n_theta = 192;            ///< points in θ (even)
   /// Rings; 0: Δξ = Δθ/radial_refinement (R kept). At Re 100, α = 1 the mean forces depend on Δξ and
-  /// hardly on Δθ (n_θ 128 → 256 moved C_D by 0.06%, St by 0.25%), so the default cells are 2.5 times
-  /// finer in ξ than in θ: n_r = 236 at R = 100a, n_θ = 128.
+  /// hardly on Δθ (n_θ 128 → 256 moved C_D by 0.06%), while St gains 0.25% from 128 to 192; so the
+  /// default is n_θ = 192 with cells 5/3 finer in ξ, Δξ = 2π/320: n_r = 236 at R = 100a.
   int n_r = 0;
-  double radial_refinement = 2.5;  ///< Δθ/Δξ when n_r = 0 (1: square cells)
+  double radial_refinement = 5.0 / 3.0;  ///< Δθ/Δξ when n_r = 0 (1: square cells)
   double dt = 0.0;                 ///< time step, s; 0: from the CFL number
   /// Target CFL number Δt·max(|ψ_θ|/(JΔξ) + |ψ_ξ|/(JΔθ)). The forces do not depend on it (CFL 0.35,
   /// 0.4, 0.5, 0.7 gave the same means to 1e-5 at Re 100, α = 1): the largest safe value below the limit.

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <fmt/core.h>
 #include <fstream>
+#include <sstream>
 
 #include "io/case_file.hpp"
 #include "io/checkpoint.hpp"
@@ -168,4 +169,40 @@ TEST_CASE("navier-stokes: sweep refuses in one line, a potential run refuses --r
   REQUIRE(test::lines(r.err) == 1);
   REQUIRE(r.err.find("--resume") != std::string::npos);
   REQUIRE_FALSE(exists(dir + "/p.h5"));
+}
+
+TEST_CASE("navier-stokes bench: the step cost per grid, split into its parts", "[app][ns][bench]") {
+  const std::string dir = test::temp_dir("ns-bench");
+  const auto o = test::magnus_cmd({"bench", write_case(dir, ns_case(100, 1, 5)), "--ladder", "32,64", "--steps",
+                                   "30", "--csv", dir + "/b.csv"},
+                                  dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  for (const char* part : {"advection", "diffusion", "Poisson", "wall", "forces", "steps/s"})
+    CHECK(o.out.find(part) != std::string::npos);
+  const std::string csv = test::slurp(dir + "/b.csv");
+  REQUIRE(test::lines(csv) == 3);  // header + two grids
+  // Each row: the parts (ms per step) are measured inside the step, so they add up to at most the step's
+  // wall time, and every part is a real share of it.
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line)) {
+    std::vector<double> v;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) v.push_back(std::stod(cell));
+    REQUIRE(v.size() == 14);
+    REQUIRE(v[5] == 30);  // steps
+    double sum = 0.0;
+    for (size_t k = 8; k < 14; ++k) {
+      REQUIRE(v[k] >= 0.0);
+      sum += v[k];
+    }
+    REQUIRE(sum <= v[7] * 1.001);
+    REQUIRE(sum >= 0.5 * v[7]);
+  }
+  const auto bad = test::magnus_cmd({"bench", write_case(dir, ns_case(100, 1, 5)), "--plot", dir + "/p.png"}, dir);
+  REQUIRE(bad.status != 0);
+  REQUIRE(test::lines(bad.err) == 1);
 }
