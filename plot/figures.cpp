@@ -182,13 +182,19 @@ CurveFigure force_history_figure(const FlowResult& r) {
   CurveFigure f;
   f.page.title = case_title(r.c.title) + ": forces against time, " + flow_label(r);
   f.page.xlabel = v.time_unit > 0.0 ? "time t U/D" : "time t (s)";
+  if (v.time_unit > 0.0 && v.history.back().t / unit > 10.0)
+    f.page.xlabel += " (from 2: the impulsive start's force peak is left out)";
   f.page.ylabel = "C_L, C_D (on ½ρU^2·D)";
   LineCurve cl{"C_L", {}, Colour::red, LineStyle::solid, 1.8},
       cd{"C_D", {}, Colour::blue, LineStyle::solid, 1.8};
   // At most ~4000 points a curve: a long run's every step would only repeat pixels.
   const size_t n = v.history.size(), stride = std::max<size_t>(1, n / 4000);
+  // The impulsive start's force grows like 1/√t as t → 0 (C_D ≈ 50 at the first step): the first 2 D/U
+  // are left out so that the shedding is readable.
+  const double t_skip = v.time_unit > 0.0 && v.history.back().t / unit > 10.0 ? 2.0 : 0.0;
   for (size_t k = 0; k < n; k += stride) {
     const ForceSample& h = v.history[k];
+    if (h.t / unit < t_skip) continue;
     cl.points.push_back({h.t / unit, h.C_L});
     cd.points.push_back({h.t / unit, h.C_D});
   }
@@ -196,7 +202,7 @@ CurveFigure force_history_figure(const FlowResult& r) {
     cl.points.push_back({v.history.back().t / unit, v.history.back().C_L});
     cd.points.push_back({v.history.back().t / unit, v.history.back().C_D});
   }
-  const double t0 = v.history.front().t / unit, t1 = v.history.back().t / unit;
+  const double t0 = std::max(v.history.front().t / unit, t_skip), t1 = v.history.back().t / unit;
   f.lines.push_back(std::move(cl));
   f.lines.push_back(std::move(cd));
   if (v.cl_mean)
