@@ -43,8 +43,10 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
                            g.nodes(), g.outer_radius() / g.a));
   // The boundary layer's thickness scales as D/√Re: the cells across it say how well the wall is resolved.
   if (v.reynolds && *v.reynolds > 0.0) {
-    const double cells = (2.0 * g.a / std::sqrt(*v.reynolds)) / (g.r[1] - g.r[0]);
-    line("", fmt::format("boundary layer: {:.1f} wall cells across D/√Re{}", cells,
+    // Spin thins the layer where the wall moves against the stream: D/√(Re(1 + α²)) is the measure.
+    const double alpha = sc.spin_ratio();
+    const double cells = (2.0 * g.a / std::sqrt(*v.reynolds * (1.0 + alpha * alpha))) / (g.r[1] - g.r[0]);
+    line("", fmt::format("boundary layer: {:.1f} wall cells across D/√(Re(1 + α²)){}", cells,
                          cells < kWallCellsForPercent
                              ? fmt::format(" — coarse: below {:.0f} expect errors of several % in C_D (raise "
                                            "grid.n_theta)",
@@ -93,6 +95,11 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
   }
   line("torque", fmt::format("{} N·m/m (mean), spin power −Mω = {} W/m", num(v.torque_mean, "{:.6g}"),
                              num(v.spin_power_mean, "{:.6g}")));
+  if (!moving) {  // still fluid: the potential vortex u_θ = a²ω/r is an exact viscous solution too
+    const double exact = -4.0 * M_PI * sc.density * sc.viscosity * sc.radius * sc.radius * sc.spin;
+    line("", fmt::format("steady potential vortex: −4πμa²ω = {} N·m/m (this run: {:+.2f}%)", num(exact, "{:.6g}"),
+                         exact != 0.0 ? 100.0 * (v.torque_mean / exact - 1.0) : 0.0));
+  }
   std::string sep;
   for (double th : v.separation) sep += (sep.empty() ? "" : ", ") + fmt::format("{:.2f}°", th * 180.0 / M_PI);
   line("separation", sep.empty() ? "none (τ_w keeps its sign)" : "τ_w = 0 at θ = " + sep + " (last step)");

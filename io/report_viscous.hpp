@@ -13,8 +13,9 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
 /// Re above which 2D laminar flow past a cylinder is no longer what a real cylinder sees.
 constexpr double kReynolds3D = 200.0;
 
-/// Wall cells across D/√Re below which the summary warns: at Re = 100, α = 1 the mean drag was 1.9% high with
-/// 6 cells (n_θ = 192), 11% with 3 and 23% with 2 (README, validation).
+/// Wall cells across D/√(Re(1 + α²)) below which the summary warns. At Re = 100 on R = 100a the mean drag
+/// was off by +1.9% with 6.1 cells (α = 1, square cells n_θ = 192), −0.5% with 7.1 (α = 1, the default
+/// grid), +2.2% with 5.6 (α = 1.5) and +12% with 4.5 (α = 2).
 constexpr double kWallCellsForPercent = 6.0;
 
 }  // namespace magnus

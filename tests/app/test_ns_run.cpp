@@ -206,3 +206,21 @@ TEST_CASE("navier-stokes bench: the step cost per grid, split into its parts", "
   REQUIRE(bad.status != 0);
   REQUIRE(test::lines(bad.err) == 1);
 }
+
+TEST_CASE("navier-stokes run at U = 0: the torque tends to the potential vortex's, no coefficients", "[app][ns]") {
+  const std::string dir = test::temp_dir("ns-run-still");
+  std::ofstream(dir + "/c.toml") << "[model]\nflow = \"navier-stokes\"\n[cylinder]\nradius = 0.5\nspin = 2.0\n"
+                                    "[flow]\nspeed = 0.0\ndensity = 1.0\nviscosity = 0.05\n[domain]\n"
+                                    "outer_radius = 8.0\n[grid]\nn_theta = 32\n[time]\nend = 400.0\n";
+  const auto o = test::magnus_cmd({"run", dir + "/c.toml", "-o", dir + "/r.h5"}, dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  REQUIRE(o.out.find("steady potential vortex") != std::string::npos);
+  const ResultFile f(dir + "/r.h5");
+  for (const char* undefined : {"cl", "cd", "cl_mean", "strouhal", "magnus_ratio"})
+    REQUIRE_FALSE(f.has_attr("/forces", undefined));
+  // M = −4πμa²ω: the steady potential vortex u_θ = a²ω/r (μ = ρν).
+  const double exact = -4.0 * M_PI * 0.05 * 0.25 * 2.0;
+  REQUIRE(f.attr_double("/forces", "torque_mean") == Approx(exact).epsilon(0.02));
+  REQUIRE(f.attr_double("/forces", "spin_power_mean") == Approx(-exact * 2.0).epsilon(0.02));
+}

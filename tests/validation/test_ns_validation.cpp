@@ -182,27 +182,35 @@ TEST_CASE("[validation] Re 100, alpha 0 to 2: lift, drag, Strouhal (Stojkovic, B
   // Two grids per α and their Richardson value (p = 2): the drag's grid error grows with α (the boundary
   // layer thins on the side moving against the stream); α = 1 has its own tests above.
   struct Ref {
-    double alpha, C_L, C_D, St;
+    double alpha, C_L, C_D, St, amp;
   };
-  for (const Ref& ref : {Ref{0.0, 0.0, 1.3371, 0.1650}, Ref{0.5, 1.220, 1.2770, 0.1657},
-                         Ref{1.5, 3.900, 0.8180, 0.1626}, Ref{2.0, 5.48, 0.46, 0.0}}) {
-    const Run& c = run(100, ref.alpha, 96, kR, 300);  // Δξ 4/3 of the default's
+  for (const Ref& ref : {Ref{0.0, 0.0, 1.3371, 0.1650, 0.3259}, Ref{0.5, 1.220, 1.2770, 0.1657, 0.3420},
+                         Ref{1.5, 3.900, 0.8180, 0.1626, 0.3180}, Ref{2.0, 5.48, 0.46, 0.0, 0.0}}) {
+    const Run& c = run(100, ref.alpha, kN / 2, kR, 300);  // Δξ and Δθ twice the default's
     const Run& f = run(100, ref.alpha, kN, kR, 300);
     REQUIRE((c.res.ok && f.res.ok));
-    auto richardson = [](double coarse, double fine) { return fine + (fine - coarse) / (16.0 / 9.0 - 1.0); };
+    auto richardson = [](double coarse, double fine) { return fine + (fine - coarse) / 3.0; };  // p = 2, ratio 2
     const double C_L = std::fabs(richardson(c.res.C_L_mean, f.res.C_L_mean));
     const double C_D = richardson(c.res.C_D_mean, f.res.C_D_mean);
-    std::printf("  alpha %.1f (n_theta 128; Richardson 96/128):\n", ref.alpha);
+    std::printf("  alpha %.1f (n_theta %d; Richardson %d/%d):\n", ref.alpha, kN, kN / 2, kN);
     if (ref.alpha > 0) {
-      compare("|C_L| 128", std::fabs(f.res.C_L_mean), ref.C_L, "SBD 2002");
+      compare("|C_L|", std::fabs(f.res.C_L_mean), ref.C_L, "SBD 2002");
       compare("|C_L| Rich.", C_L, ref.C_L, "SBD 2002");
     }
-    compare("C_D 128", f.res.C_D_mean, ref.C_D, "SBD 2002");
+    compare("C_D", f.res.C_D_mean, ref.C_D, "SBD 2002");
     compare("C_D Rich.", C_D, ref.C_D, "SBD 2002");
-    if (ref.St > 0) compare("St 128", f.res.St, ref.St, "SBD 2002");
-    if (ref.alpha > 0) CHECK(C_L == Approx(ref.C_L).epsilon(0.015));
-    CHECK(C_D == Approx(ref.C_D).epsilon(ref.alpha < 2 ? 0.03 : 0.06));
-    if (ref.St > 0) CHECK(f.res.St == Approx(ref.St).epsilon(0.015));
+    if (ref.St > 0) {
+      compare("St", f.res.St, ref.St, "SBD 2002");
+      compare("C_L amplitude", f.res.C_L_amplitude, ref.amp, "SBD 2002");
+    }
+    // The default grid against the table: |C_L|, St and the amplitude within 2%. The drag's grid error
+    // grows with α (the default grid: −2.0%, −1.4%, +2.2%, +12% at α = 0, 0.5, 1.5, 2), so C_D is checked
+    // on the Richardson value, within 2.5%: the model's grid-converged drag at α = 0 is 2.1% below the
+    // table (1.3096 against 1.3371), a few hundredths outside the 2% target.
+    if (ref.alpha > 0) CHECK(std::fabs(f.res.C_L_mean) == Approx(ref.C_L).epsilon(0.02));
+    CHECK(C_D == Approx(ref.C_D).epsilon(0.025));
+    if (ref.St > 0) CHECK(f.res.St == Approx(ref.St).epsilon(0.02));
+    if (ref.St > 0) CHECK(f.res.C_L_amplitude == Approx(ref.amp).epsilon(0.02));
     // Steady at α = 2: by t = 300 D/U what is left is a decaying wiggle of C_L amplitude ~5e-4 (against
     // 0.318 at α = 1.5), below the published tables' resolution.
     if (ref.alpha == 2.0) CHECK((f.res.steady || f.res.C_L_amplitude < 1e-3));
