@@ -89,7 +89,9 @@ TEST_CASE("navier-stokes run: a time step above the stability limit is one line 
 TEST_CASE("navier-stokes run: Ctrl-C writes a partial result and a checkpoint, --resume finishes the run",
           "[app][ns]") {
   const std::string dir = test::temp_dir("ns-run-int");
-  const std::string c = write_case(dir, ns_case(100, 1, 100000));
+  // A run that would not stop by itself (its means never agree to 1e-12, steadiness is not a stop).
+  const std::string c =
+      write_case(dir, ns_case(100, 1, 100000, "mode = \"unsteady\"\nmean_tolerance = 1e-12\n"));
   // SIGINT after 1 s: the run stops at the next step.
   const std::string cmd = "timeout --preserve-status -s INT 1 '" + std::string(MAGNUS_EXE) + "' run '" + c + "' -o '" + dir +
                           "/r.h5' >'" + dir + "/out.txt' 2>'" + dir + "/err.txt'";

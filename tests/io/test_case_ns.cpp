@@ -323,7 +323,7 @@ TEST_CASE("the resolved case: potential text unchanged, navier-stokes text reads
         "title = \"Spinning cylinder\"\n\n[model]\nflow = \"navier-stokes\"\n\n[cylinder]\nradius = 0.005\n"
         "spin = 2.0\n\n[flow]\nspeed = 0.01\ndensity = 1.225\npressure = 0.0\nviscosity = 1e-06\n\n[domain]\n"
         "outer_radius = 100.0\n\n[grid]\nspacing = \"geometric\"\nn_theta = 192\nn_r = 0\n\n[time]\n"
-        "mode = \"auto\"\nend = 300.0\ndt = 0.0\ncfl = 0.5\nmean_tolerance = 0.001\ncheckpoint_interval = "
+        "mode = \"auto\"\nend = 300.0\ndt = 0.0\ncfl = 0.7\nmean_tolerance = 0.001\ncheckpoint_interval = "
         "10.0\n"
         "\n[output]\nfile = \"magnus.h5\"\nsnapshots = 0\nsnapshot_interval = 0.25\n");
   check_round_trip(n);
