@@ -36,7 +36,7 @@ void command_run(const std::string& case_path, const std::string& output,
   if (c.model == FlowModel::navier_stokes) {
     check_writable(checkpoint_path(c.output.file));
     check_output_space(c, c.output.file);
-    run_viscous_case(c, resume, quiet);
+    run_viscous_case(c, resume, quiet, threads);
     return;
   }
   if (resume) throw std::runtime_error("--resume: only a navier-stokes case has checkpoints to resume from");

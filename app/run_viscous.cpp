@@ -42,7 +42,7 @@ std::string clock_text(double seconds) {
 
 }  // namespace
 
-void run_viscous_case(const Case& c, bool resume, bool quiet) {
+void run_viscous_case(const Case& c, bool resume, bool quiet, int threads) {
   const std::string ckpt = checkpoint_path(c.output.file);
   std::unique_ptr<Checkpoint> start;
   if (resume) start = std::make_unique<Checkpoint>(read_checkpoint(ckpt, c));
@@ -86,7 +86,7 @@ void run_viscous_case(const Case& c, bool resume, bool quiet) {
   {
     InterruptGuard guard;
     try {
-      r = run_viscous(c, hooks, start.get());
+      r = run_viscous(c, hooks, start.get(), threads);
     } catch (...) {
       if (printed) std::fputs("\n", stderr);
       throw;

@@ -7,7 +7,7 @@
 namespace magnus {
 
 /// Run case c (navier-stokes), write its result (and remove its checkpoint once the result is complete),
-/// print the summary unless quiet. resume: continue from the case's checkpoint file.
-void run_viscous_case(const Case& c, bool resume, bool quiet);
+/// print the summary unless quiet. resume: continue from the case's checkpoint file; threads ≥ 1.
+void run_viscous_case(const Case& c, bool resume, bool quiet, int threads = 1);
 
 }  // namespace magnus

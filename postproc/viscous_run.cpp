@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <deque>
@@ -149,14 +150,15 @@ FlowResult viscous_result(const Case& c, const NsParams& p, const UnsteadyResult
   return r;
 }
 
-FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoint* resume) {
+FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoint* resume, int threads) {
   const Scene& sc = c.scene;
   if (c.model != FlowModel::navier_stokes)
     throw std::invalid_argument("model.flow: run_viscous needs \"navier-stokes\"");
   if (!(sc.viscosity > 0.0)) throw std::invalid_argument("flow.viscosity: navier-stokes needs ν > 0");
   if (!(sc.reference_speed() > 0.0))
     throw std::invalid_argument("flow.speed and cylinder.spin are both 0: nothing moves, there is no flow");
-  const NsParams p = ns_params(c);
+  NsParams p = ns_params(c);
+  p.threads = std::max(1, threads);
   const PolarGrid g = ns_grid(p);
   const double unit = time_unit(sc);
 

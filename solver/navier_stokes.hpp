@@ -48,9 +48,8 @@ struct NsParams {
   /// Target CFL number Δt·max(|ψ_θ|/(JΔξ) + |ψ_ξ|/(JΔθ)). The forces do not depend on it (CFL 0.35,
   /// 0.4, 0.5, 0.7 gave the same means to 1e-5 at Re 100, α = 1): the largest safe value below the limit.
   double cfl = 0.7;
-  /// Threads for the advection and the mode solves. 1 by default: measured at Re 100, n_θ = 192 on this
-  /// 2-core machine, 2 threads took 64.5 s against 38.9 s (FFTW's thread pool and per-step thread starts
-  /// cost more than they save on ~27k nodes; at n_θ = 512 the two were level).
+  /// Threads for the advection and the mode solves (a persistent pool). 1 by default: on this 2-core
+  /// machine a second thread gained about 4% on a whole run at Re 100, n_θ = 128 (8.3 s against 8.6 s).
   int threads = 1;
   bool stokes = false;  ///< drop the advection (unsteady Stokes flow, the creeping limit)
   NsOuterVorticity outer_vorticity = NsOuterVorticity::inflow_outflow;
