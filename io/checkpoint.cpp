@@ -102,6 +102,7 @@ Checkpoint read_checkpoint(const std::string& path, const Case& c) {
       throw std::runtime_error(fmt::format("--resume: '{}' is damaged: /history columns differ in length", path));
     for (size_t q = 0; q < v[k].size(); ++q) cp.history[q].*cols[k].second = v[k][q];
   }
+  for (ForceSample& h : cp.history) h.has_coefficients = c.scene.speed > 0.0;
   const std::vector<double> t = f->dataset("/snapshots/t"), psi = f->dataset("/snapshots/psi"),
                             zeta = f->dataset("/snapshots/vorticity");
   const size_t n = s.psi.size();

@@ -107,6 +107,15 @@ std::vector<double> interpolate(const PolarGrid& from, const std::vector<double>
 
 }  // namespace
 
+ForceSample force_sample(double t, const ViscousForces& f) {
+  ForceSample x;
+  x.t = t;
+  x.has_coefficients = f.C_L.has_value();
+  x.C_L = f.C_L.value_or(0.0), x.C_D = f.C_D.value_or(0.0), x.C_M = f.C_M.value_or(0.0);
+  x.F_x = f.F_x, x.F_y = f.F_y, x.M = f.M;
+  return x;
+}
+
 bool analyse_periodic(const std::vector<ForceSample>& h, double D, double U, UnsteadyResult& out) {
   return analyse_periodic_from(h, 0, D, U, out);
 }
@@ -191,14 +200,7 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
   auto sample = [&](const NsState& s) {
     const auto c0 = clock::now();
     const ViscousForces f = viscous_forces(g, p, o.rho, s);
-    if (res.history.empty() || s.t > res.history.back().t) {
-      ForceSample x;
-      x.t = s.t;
-      x.has_coefficients = f.C_L.has_value();
-      x.C_L = f.C_L.value_or(0.0), x.C_D = f.C_D.value_or(0.0), x.C_M = f.C_M.value_or(0.0);
-      x.F_x = f.F_x, x.F_y = f.F_y, x.M = f.M;
-      res.history.push_back(x);
-    }
+    if (res.history.empty() || s.t > res.history.back().t) res.history.push_back(force_sample(s.t, f));
     res.times.forces += std::chrono::duration<double>(clock::now() - c0).count();
     return !o.on_step || o.on_step(s, f);
   };

@@ -41,6 +41,10 @@ struct ForceSample {
   double F_x = 0.0, F_y = 0.0, M = 0.0;  ///< N/m, N/m, N·m/m
 };
 
+/// The sample of a state at time t (s) with its forces: the coefficients when defined (else 0 and
+/// has_coefficients = false).
+ForceSample force_sample(double t, const ViscousForces& f);
+
 /// What a run reached.
 struct UnsteadyResult {
   NsState state;                                          ///< the last state

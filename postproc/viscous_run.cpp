@@ -198,7 +198,7 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
   std::vector<ForceSample> seen = history;
   o.on_step = [&](const NsState& s, const ViscousForces& f) {
     if (seen.empty() || s.t > seen.back().t)
-      seen.push_back({s.t, f.C_L.value_or(0.0), f.C_D.value_or(0.0), f.C_M.value_or(0.0), f.F_x, f.F_y, f.M});
+      seen.push_back(force_sample(s.t, f));
     if (c.output.snapshots > 0 && s.t >= next_snap - 1e-9 * snap_every) {
       snaps.push_back({s.t, s.psi, s.zeta});
       if (snaps.size() > size_t(c.output.snapshots)) snaps.pop_front();

@@ -149,6 +149,17 @@ TEST_CASE("navier-stokes run: a killed run resumes from its last checkpoint and 
   const FlowResult resumed = read_result(dir + "/k.h5");
   REQUIRE(resumed.viscous->t == Approx(12.0));
   // The same flow: the restart only re-picks Δt from the CFL number (an O(Δt²) difference).
+  // Up to the checkpoint the resumed run's history is the unbroken run's, sample for sample.
+  const auto& hw = whole_r.viscous->history;
+  const auto& hr = resumed.viscous->history;
+  size_t same = 0;
+  for (; same < hr.size() && hr[same].t <= cp.state.t; ++same) {
+    REQUIRE(hr[same].t == hw[same].t);
+    REQUIRE(hr[same].C_L == hw[same].C_L);
+    REQUIRE(hr[same].C_D == hw[same].C_D);
+    REQUIRE(hr[same].M == hw[same].M);
+  }
+  REQUIRE(same > 100);
   REQUIRE(*resumed.forces.cl == Approx(*whole_r.forces.cl).epsilon(2e-3));
   REQUIRE(*resumed.forces.cd == Approx(*whole_r.forces.cd).epsilon(2e-3));
   REQUIRE_FALSE(exists(ckpt));
