@@ -27,6 +27,10 @@ namespace magnus {
 struct NewtonOptions {
   double tol = 1e-10;       ///< stop when the scaled residual (max norm, see steady_residual) is ≤ this
   int max_iterations = 20;  ///< Newton steps (each one LU factorisation)
+  /// Chord steps: > 0 reuses the last factors while each such step cuts the residual by at least this
+  /// factor (a rejected try costs one solve and one residual, then Newton refactors at the same iterate).
+  /// 0: plain Newton, one factorisation per step (quadratic convergence).
+  double chord_ratio = 0.0;
   /// After each evaluation of the residual: (iteration, scaled max-norm residual); iteration 0 = the guess.
   std::function<void(int, double)> on_iteration;
 };
@@ -35,7 +39,9 @@ struct NewtonOptions {
 struct NewtonResult {
   NsState state;                  ///< the last iterate (t = 0, no history: a fixed point of advance())
   bool converged = false;         ///< residual ≤ tol
-  int iterations = 0;             ///< Newton steps taken (factorisations)
+  int iterations = 0;             ///< steps taken (Newton steps and accepted chord steps)
+  int factorisations = 0;         ///< LU factorisations (Newton steps)
+  int chord_steps = 0;            ///< accepted steps with earlier factors
   std::vector<double> residuals;  ///< scaled max-norm residual per iterate, [0] = the guess
   std::string message;            ///< why it stopped
   double wall_seconds = 0.0;      ///< whole solve, s
@@ -109,5 +115,8 @@ NsState potential_guess(const NsParams& p, const PolarGrid& g);
 /// throws on a failing iteration (converged = false, message); throws std::invalid_argument on bad
 /// parameters or a guess of the wrong size.
 NewtonResult solve_steady(const NsParams& p, const NsState& guess, const NewtonOptions& o = {});
+/// The same with a kept SteadyJacobian (its symbolic analysis, ~half the first factorisation, is reused:
+/// continuation along a branch); on return it holds the factors of the last Newton step.
+NewtonResult solve_steady(SteadyJacobian& jac, const NsState& guess, const NewtonOptions& o = {});
 
 }  // namespace magnus

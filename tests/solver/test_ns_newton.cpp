@@ -130,6 +130,8 @@ void check_newton_is_the_steppers_steady_state(double Re, double alpha, int n_th
   // Quadratic: r_{k+1} ≤ 10·r_k² once r_k < 1e-2 (measured ratios 0.4–1.2), until round-off (1e-13).
   check_quadratic(nr.residuals, 10.0, 1e-13);
   CHECK(nr.iterations <= 6);
+  CHECK(nr.factorisations == nr.iterations);
+  CHECK(nr.chord_steps == 0);
 
   // A fixed point of advance(): 20 steps from Newton's state leave it in place (to round-off).
   {
@@ -159,6 +161,18 @@ void check_newton_is_the_steppers_steady_state(double Re, double alpha, int n_th
   CHECK(d_zeta < 1e-8);
   CHECK(std::fabs(nr.state.Gamma_R - marched.Gamma_R) <
         1e-8 * std::max(std::fabs(marched.Gamma_R), p.U * p.a));
+
+  // Chord steps (old factors while they contract by 3x a step): the same state, fewer factorisations.
+  o.chord_ratio = 0.3;
+  o.on_iteration = nullptr;
+  const NewtonResult chord = solve_steady(p, potential_guess(p, g), o);
+  INFO("chord: " << chord.message << "; residuals" << residual_list(chord.residuals));
+  REQUIRE(chord.converged);
+  CHECK(chord.chord_steps > 0);
+  CHECK(chord.factorisations < nr.factorisations);
+  CHECK(chord.factorisations + chord.chord_steps == chord.iterations);
+  CHECK(rel_diff(chord.state.psi, nr.state.psi) < 1e-10);
+  CHECK(rel_diff(chord.state.zeta, nr.state.zeta) < 1e-10);
 }
 
 }  // namespace
@@ -176,17 +190,23 @@ TEST_CASE("[ns][newton] Re 40, alpha 0 on the default grid: C_D and the time to 
   const NsParams p = newton_params(40.0, 0.0, 192, 100.0);
   const PolarGrid g = ns_grid(p);
   REQUIRE(g.n_r == 236);
-  NewtonOptions o;
-  o.on_iteration = [](int k, double r) { std::printf("  Newton %d: residual %.3e\n", k, r); };
-  const NewtonResult nr = solve_steady(p, potential_guess(p, g), o);
-  INFO(nr.message);
-  REQUIRE(nr.converged);
-  const ViscousForces f = viscous_forces(g, p, 1.0, nr.state);
-  std::printf(
-      "Re 40, alpha 0, %d x %d: %d Newton steps, %.2f s (factorisations %.2f s); C_D %.5f "
-      "(pressure %.5f, friction %.5f), C_L %.2e\n",
-      g.n_r, g.n_theta, nr.iterations, nr.wall_seconds, nr.factor_seconds, *f.C_D, *f.C_D_pressure,
-      *f.C_D_friction, *f.C_L);
-  CHECK(*f.C_D == Approx(1.498).epsilon(0.01));  // Fornberg 1980: 1.498; Dennis & Chang 1970: 1.522
-  CHECK(std::fabs(*f.C_L) < 1e-8);
+  double C_D[2] = {0.0, 0.0};
+  for (const double chord_ratio : {0.0, 0.3}) {
+    NewtonOptions o;
+    o.chord_ratio = chord_ratio;
+    o.on_iteration = [](int k, double r) { std::printf("  step %d: residual %.3e\n", k, r); };
+    const NewtonResult nr = solve_steady(p, potential_guess(p, g), o);
+    INFO(nr.message);
+    REQUIRE(nr.converged);
+    const ViscousForces f = viscous_forces(g, p, 1.0, nr.state);
+    std::printf(
+        "Re 40, alpha 0, %d x %d, chord ratio %g: %s, %.2f s (factorisations %.2f s); C_D %.6f "
+        "(pressure %.6f, friction %.6f), C_L %.2e\n",
+        g.n_r, g.n_theta, chord_ratio, nr.message.c_str(), nr.wall_seconds, nr.factor_seconds, *f.C_D,
+        *f.C_D_pressure, *f.C_D_friction, *f.C_L);
+    CHECK(*f.C_D == Approx(1.498).epsilon(0.01));  // Fornberg 1980: 1.498; Dennis & Chang 1970: 1.522
+    CHECK(std::fabs(*f.C_L) < 1e-8);
+    C_D[chord_ratio > 0.0 ? 1 : 0] = *f.C_D;
+  }
+  CHECK(C_D[1] == Approx(C_D[0]).epsilon(1e-9));
 }
