@@ -55,7 +55,11 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
   }
   const double unit = v.time_unit;
   const double steps_per_s = r.timing.solve_s > 0.0 ? double(v.steps) / r.timing.solve_s : 0.0;
-  line("run", fmt::format("t = {} s = {} D/U, {} steps of Δt = {} s ({} D/U), {} ({:.0f} steps/s)", num(v.t),
+  if (v.steps == 0)
+    line("run", fmt::format("steady state by Newton's method, {} ({:.0f} ms)", wall(r.timing.total_s),
+                            1e3 * r.timing.total_s));
+  else
+    line("run", fmt::format("t = {} s = {} D/U, {} steps of Δt = {} s ({} D/U), {} ({:.0f} steps/s)", num(v.t),
                           num(v.t / unit, "{:.5g}"), v.steps, num(v.dt, "{:.4g}"), num(v.dt / unit, "{:.4g}"),
                           wall(r.timing.total_s), steps_per_s));
   line("", fmt::format("stopped: {}{}", v.status, v.partial ? " — a PARTIAL result (the file says so)" : ""));

@@ -16,7 +16,8 @@ enum class StencilKind { five_point, nine_point };
 /// The fluid model: ideal (inviscid, irrotational) or 2D laminar Navier–Stokes.
 enum class FlowModel { potential, navier_stokes };
 /// How a navier-stokes case is run: "auto" (march in time; stop when steady or periodic), "steady"
-/// (march until steady), "unsteady" (march to time.end or converged periodic means).
+/// (Newton's method on the discrete steady equations), "unsteady" (march to time.end or converged
+/// periodic means).
 enum class TimeMode { automatic, steady, unsteady };
 
 /// The physical scene: a cylinder of radius a spinning at ω in a freestream U towards +x.

@@ -10,6 +10,7 @@
 
 #include "physics/exact.hpp"
 #include "postproc/ns_pressure.hpp"
+#include "solver/ns_newton.hpp"
 
 namespace magnus {
 
@@ -135,7 +136,7 @@ FlowResult viscous_result(const Case& c, const NsParams& p, const UnsteadyResult
       v.magnus_ratio = run.C_L_mean / ideal.cl();
     }
   } else {
-    v.torque_mean = vf.M;  // U = 0: the steady torque (no coefficients)
+    v.torque_mean = run.M_mean;  // U = 0: the torque (no coefficients)
   }
   v.spin_power_mean = -v.torque_mean * w;
   for (double th : separation_angles(vs)) v.separation.push_back(th);
@@ -150,6 +151,35 @@ FlowResult viscous_result(const Case& c, const NsParams& p, const UnsteadyResult
   return r;
 }
 
+namespace {
+
+/// time.mode = "steady": Newton's method on the time stepper's discrete steady equations, from the
+/// potential flow with circulation (or a checkpoint's state); the result has one history sample.
+FlowResult steady_by_newton(const Case& c, const NsParams& p, const PolarGrid& g, const Checkpoint* resume) {
+  const NsState guess = resume ? resume->state : potential_guess(p, g);
+  const NewtonResult nr = solve_steady(p, guess, NewtonOptions{});
+  if (!nr.converged)
+    throw std::runtime_error(fmt::format(
+        "time.mode = \"steady\": Newton's method did not converge ({}; residual {:.2e} after {} steps): the "
+        "flow may have no steady state here; time.mode = \"auto\" marches in time instead",
+        nr.message, nr.residuals.empty() ? 0.0 : nr.residuals.back(), nr.iterations));
+  UnsteadyResult u;
+  u.state = nr.state;
+  u.steady = u.converged = true;
+  u.message = fmt::format("steady, by Newton's method: {} steps, residual {:.1e}", nr.iterations,
+                          nr.residuals.empty() ? 0.0 : nr.residuals.back());
+  const ViscousForces f = viscous_forces(g, p, c.scene.density, u.state);
+  u.history = {force_sample(0.0, f)};
+  u.has_coefficients = f.C_L.has_value();
+  u.C_L_mean = f.C_L.value_or(0.0), u.C_D_mean = f.C_D.value_or(0.0), u.C_M_mean = f.C_M.value_or(0.0);
+  u.M_mean = f.M;
+  u.reference_speed = c.scene.reference_speed();
+  u.wall_seconds = nr.wall_seconds;
+  return viscous_result(c, p, u, {});
+}
+
+}  // namespace
+
 FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoint* resume, int threads) {
   const Scene& sc = c.scene;
   if (c.model != FlowModel::navier_stokes)
@@ -162,6 +192,8 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
   const PolarGrid g = ns_grid(p);
   const double unit = time_unit(sc);
 
+  if (c.time.mode == TimeMode::steady) return steady_by_newton(c, p, g, resume);
+
   NsState start;
   if (resume) {
     start = resume->state;
@@ -169,7 +201,7 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
       throw std::invalid_argument("the checkpoint's grid is not the case's grid");
   } else {
     start = impulsive_start(p, g);
-    if (c.time.mode != TimeMode::steady) break_symmetry(p, g, start);
+    break_symmetry(p, g, start);
   }
   // An asked Δt above the stability limit of the start is refused (the driver would have to clamp it).
   if (p.dt > 0.0) {

@@ -237,3 +237,24 @@ TEST_CASE("navier-stokes run at U = 0: the torque tends to the potential vortex'
   REQUIRE(f.attr_double("/forces", "torque_mean") == Approx(exact).epsilon(0.02));
   REQUIRE(f.attr_double("/forces", "spin_power_mean") == Approx(-exact * 2.0).epsilon(0.02));
 }
+
+TEST_CASE("navier-stokes run in steady mode: Newton's state is the time stepper's steady state",
+          "[app][ns][newton]") {
+  const std::string dir = test::temp_dir("ns-run-steady");
+  const std::string steady = write_case(dir, ns_case(20, 0.5, 400, "mode = \"steady\"\n"));
+  const auto n = test::magnus_cmd({"run", steady, "-o", dir + "/n.h5"}, dir);
+  INFO(n.err);
+  REQUIRE(n.status == 0);
+  REQUIRE(n.out.find("steady state by Newton's method") != std::string::npos);
+  std::ofstream(dir + "/m.toml") << ns_case(20, 0.5, 400, "mode = \"auto\"\n");
+  const auto m = test::magnus_cmd({"run", dir + "/m.toml", "-o", dir + "/m.h5"}, dir);
+  REQUIRE(m.status == 0);
+  const FlowResult a = read_result(dir + "/n.h5"), b = read_result(dir + "/m.h5");
+  REQUIRE(a.viscous->status.find("steady, by Newton") == 0);
+  REQUIRE(b.viscous->status == "steady");  // marched until C_L, C_D were flat to 1e-5 over 10 D/U
+  // The march stops when the forces change by < 1e-5 over 10 D/U, still creeping towards the steady state
+  // (a long march meets Newton's state to 2e-10: tests/solver/test_ns_newton.cpp): 5e-4 here.
+  REQUIRE(*a.viscous->cl_mean == Approx(*b.viscous->cl_mean).margin(5e-4));
+  REQUIRE(*a.viscous->cd_mean == Approx(*b.viscous->cd_mean).margin(5e-4));
+  REQUIRE(a.viscous->history.size() == 1);
+}
