@@ -56,9 +56,20 @@ void command_run(const std::string& case_path, const std::string& output,
     std::fputs(summary_text(r, c.output.file).c_str(), stdout);
 }
 
-/// `magnus inspect`: the text (or JSON) on stdout.
-void command_inspect(const std::string& path, bool json) {
-  std::fputs((json ? json_text(inspect_json(path)) : describe_result(path)).c_str(), stdout);
+/// `magnus inspect`: the text (or JSON) on stdout; --surface-csv writes the surface as CSV (atomically, or
+/// on stdout for "-", and then stdout carries the CSV alone).
+void command_inspect(const std::string& path, bool json, const std::string& surface) {
+  if (json && is_stdout(surface))
+    throw std::runtime_error(
+        "--json and --surface-csv -: both would go to standard output; name a file for one");
+  check_distinct_paths({path}, {surface});
+  if (!surface.empty()) check_writable(surface);
+  // The whole file is read and checked first (inspect's text or JSON), then the CSV written.
+  const std::string text = is_stdout(surface) ? std::string()
+                           : json             ? json_text(inspect_json(path))
+                                              : describe_result(path);
+  if (!surface.empty()) write_text_output(surface, surface_csv(path));
+  std::fputs(text.c_str(), stdout);
 }
 
 }  // namespace
@@ -115,14 +126,17 @@ void add_run_command(CLI::App& app) {
 
 void add_inspect_command(CLI::App& app) {
   struct Options {
-    std::string path;
+    std::string path, surface;
     bool json = false;
   };
   auto o = std::make_shared<Options>();
   auto* inspect = app.add_subcommand("inspect", "show what a result or sweep file holds, with units");
   inspect->add_option("file", o->path, "result or sweep file (HDF5)")->required();
   inspect->add_flag("--json", o->json, "print one JSON object instead of the text (see docs/scripting.md)");
-  inspect->callback([o] { command_inspect(o->path, o->json); });
+  inspect->add_option("--surface-csv", o->surface,
+                      "write the body surface as CSV (θ in rad and degrees, u_θ, p, Cp; τ_w for "
+                      "navier-stokes); - for standard output");
+  inspect->callback([o] { command_inspect(o->path, o->json, o->surface); });
 }
 
 }  // namespace magnus

@@ -1,4 +1,4 @@
-// --json on run, sweep, compare and inspect. The JSON parses, every number carries
+// --json on run, sweep, compare and inspect; inspect --surface-csv. The JSON parses, every number carries
 // its units ({"value": V, "units": U}), undefined is null, and every line of the run summary has its
 // counterpart in the JSON (the mapping below, label by label).
 #include <fmt/core.h>
@@ -319,4 +319,45 @@ TEST_CASE("compare --json and inspect --json: the stored figures with units", "[
   CHECK(js["format"] == "magnus-sweep");
   CHECK(js["columns"]["cl"]["value"].size() == 5);
   CHECK(js["columns"]["kj_over_seed"]["value"][0].is_null());  // the fill value, read as undefined
+}
+
+TEST_CASE("inspect --surface-csv: θ in rad and degrees, u_θ, p, Cp (and τ_w for navier-stokes)",
+          "[app][json]") {
+  const std::string dir = test::temp_dir("surface-csv");
+  REQUIRE(
+      test::magnus_cmd({"run", write(dir + "/case.toml", kPotentialCase), "-o", dir + "/a.h5"}, dir).status ==
+      0);
+  const auto o = test::magnus_cmd({"inspect", dir + "/a.h5", "--surface-csv", dir + "/s.csv"}, dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  CHECK(o.out.find("magnus-flow version 2") != std::string::npos);  // the text is still printed
+  const std::string csv = test::slurp(dir + "/s.csv");
+  CHECK(csv.rfind("theta_rad,theta_deg,u_theta_m_s,pressure_Pa,cp\n", 0) == 0);
+  CHECK(test::lines(csv) == 33);
+  // Row j = 8 of 32 is θ = π/2, 90°: u_θ ≈ U(α − 2) = −10 m/s.
+  std::istringstream in(csv);
+  std::string line;
+  for (int k = 0; k <= 9; ++k) std::getline(in, line);
+  double th, deg, u, p, cp;
+  REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf", &th, &deg, &u, &p, &cp) == 5);
+  CHECK(th == Approx(M_PI / 2));
+  CHECK(deg == Approx(90.0));
+  CHECK(u == Approx(-10.0).epsilon(0.05));
+  CHECK(cp == Approx(0.0).margin(0.1));  // 1 − (u/U)² at u = −U
+
+  const auto out = test::magnus_cmd({"inspect", dir + "/a.h5", "--surface-csv", "-"}, dir);
+  REQUIRE(out.status == 0);
+  CHECK(out.out == csv);  // stdout is the CSV alone
+
+  const std::string ns = write(dir + "/ns.toml", ns_case(100, 1, 1));
+  REQUIRE(test::magnus_cmd({"run", ns, "-o", dir + "/n.h5"}, dir).status == 0);
+  const auto v = test::magnus_cmd({"inspect", dir + "/n.h5", "--surface-csv", "-"}, dir);
+  INFO(v.err);
+  REQUIRE(v.status == 0);
+  CHECK(v.out.rfind("theta_rad,theta_deg,u_theta_m_s,pressure_Pa,cp,tau_w_Pa\n", 0) == 0);
+  CHECK(test::lines(v.out) == 49);
+
+  const auto bad = test::magnus_cmd({"inspect", dir + "/a.h5", "--surface-csv", dir}, dir);  // a directory
+  CHECK(bad.status != 0);
+  CHECK(test::lines(bad.err) == 1);
 }
