@@ -12,8 +12,10 @@
 #include "io/checkpoint.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/inspect.hpp"
+#include "io/json_output.hpp"
 #include "io/output_size.hpp"
 #include "io/report.hpp"
+#include "io/result_reader.hpp"
 #include "postproc/pipeline.hpp"
 #include "postproc/plan.hpp"
 #include "solver/memory.hpp"
@@ -23,7 +25,8 @@ namespace magnus {
 namespace {
 
 void command_run(const std::string& case_path, const std::string& output,
-                 const std::vector<std::string>& sets, int threads, bool quiet, size_t max_bytes, bool resume) {
+                 const std::vector<std::string>& sets, int threads, bool quiet, size_t max_bytes, bool resume,
+                 bool json) {
   Case c = load_case(case_path, sets);
   if (!output.empty()) {
     c.output.file = output;
@@ -36,7 +39,9 @@ void command_run(const std::string& case_path, const std::string& output,
   if (c.model == FlowModel::navier_stokes) {
     check_writable(checkpoint_path(c.output.file));
     check_output_space(c, c.output.file);
-    run_viscous_case(c, resume, quiet, threads);
+    run_viscous_case(c, resume, quiet || json, threads);
+    // The JSON says what the file holds: the result is read back through the schema table.
+    if (json) std::fputs(json_text(result_json(read_result(c.output.file), c.output.file)).c_str(), stdout);
     return;
   }
   if (resume) throw std::runtime_error("--resume: only a navier-stokes case has checkpoints to resume from");
@@ -45,10 +50,27 @@ void command_run(const std::string& case_path, const std::string& output,
   check_output_space(plan.c, c.output.file);
   FlowResult r = run_planned(plan, threads, max_bytes);
   write_result(r, c.output.file, c.output.compression);
-  if (!quiet) std::fputs(summary_text(r, c.output.file).c_str(), stdout);
+  if (json)
+    std::fputs(json_text(result_json(r, c.output.file)).c_str(), stdout);
+  else if (!quiet)
+    std::fputs(summary_text(r, c.output.file).c_str(), stdout);
 }
 
-void command_inspect(const std::string& path) { std::fputs(describe_result(path).c_str(), stdout); }
+/// `magnus inspect`: the text (or JSON) on stdout; --surface-csv writes the surface as CSV (atomically, or
+/// on stdout for "-", and then stdout carries the CSV alone).
+void command_inspect(const std::string& path, bool json, const std::string& surface) {
+  if (json && is_stdout(surface))
+    throw std::runtime_error(
+        "--json and --surface-csv -: both would go to standard output; name a file for one");
+  check_distinct_paths({path}, {surface});
+  if (!surface.empty()) check_writable(surface);
+  // The whole file is read and checked first (inspect's text or JSON), then the CSV written.
+  const std::string text = is_stdout(surface) ? std::string()
+                           : json             ? json_text(inspect_json(path))
+                                              : describe_result(path);
+  if (!surface.empty()) write_text_output(surface, surface_csv(path));
+  std::fputs(text.c_str(), stdout);
+}
 
 }  // namespace
 
@@ -57,7 +79,7 @@ void add_run_command(CLI::App& app) {
     std::string case_path, output;
     std::vector<std::string> sets;
     int threads = 1;
-    bool quiet = false, resume = false;
+    bool quiet = false, resume = false, json = false;
     std::string tolerance;
     std::string max_memory;
   };
@@ -67,7 +89,11 @@ void add_run_command(CLI::App& app) {
   run->add_option("-o,--output", o->output, "result file (default: output.file of the case)");
   run->add_option("--set", o->sets, "override a case key: section.key=value (repeatable)");
   run->add_option("--threads", o->threads, "threads for the solver")->check(CLI::Range(1, 64));
-  run->add_flag("-q,--quiet", o->quiet, "print nothing on success");
+  auto* quiet = run->add_flag("-q,--quiet", o->quiet, "print nothing on success");
+  run->add_flag("--json", o->json,
+                "print one JSON object instead of the summary: every figure with its units ({\"value\": V, "
+                "\"units\": U}, null where undefined); see docs/scripting.md")
+      ->excludes(quiet);
   run->add_flag("--resume", o->resume,
                 "navier-stokes: go on from the case's checkpoint (OUTPUT.checkpoint.h5) instead of from rest");
   run->add_option(
@@ -93,15 +119,24 @@ void add_run_command(CLI::App& app) {
             fmt::format("--tolerance {}: must be between {:g} and {:g}", o->tolerance, 1e-14, 0.1));
       sets.push_back(fmt::format("grid.tolerance={}", tol));
     }
-    command_run(o->case_path, o->output, sets, usable_threads(o->threads), o->quiet, max_bytes, o->resume);
+    command_run(o->case_path, o->output, sets, usable_threads(o->threads), o->quiet, max_bytes, o->resume,
+                o->json);
   });
 }
 
 void add_inspect_command(CLI::App& app) {
-  auto path = std::make_shared<std::string>();
+  struct Options {
+    std::string path, surface;
+    bool json = false;
+  };
+  auto o = std::make_shared<Options>();
   auto* inspect = app.add_subcommand("inspect", "show what a result or sweep file holds, with units");
-  inspect->add_option("file", *path, "result or sweep file (HDF5)")->required();
-  inspect->callback([path] { command_inspect(*path); });
+  inspect->add_option("file", o->path, "result or sweep file (HDF5)")->required();
+  inspect->add_flag("--json", o->json, "print one JSON object instead of the text (see docs/scripting.md)");
+  inspect->add_option("--surface-csv", o->surface,
+                      "write the body surface as CSV (θ in rad and degrees, u_θ, p, Cp; τ_w for "
+                      "navier-stokes); - for standard output");
+  inspect->callback([o] { command_inspect(o->path, o->json, o->surface); });
 }
 
 }  // namespace magnus

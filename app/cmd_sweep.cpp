@@ -10,6 +10,7 @@
 #include "app/commands.hpp"
 #include "io/case_file.hpp"
 #include "io/hdf5_io.hpp"
+#include "io/json_output.hpp"
 #include "io/reference_file.hpp"
 #include "io/sweep_file.hpp"
 #include "plot/curves.hpp"
@@ -24,7 +25,7 @@ struct SweepOptions {
   std::string case_path, spin_ratio, circulation, csv, output, plot, size;
   std::vector<std::string> sets;
   int threads = 1;
-  bool quiet = false;
+  bool quiet = false, json = false;
 };
 
 void command_sweep(const SweepOptions& o) {
@@ -46,6 +47,8 @@ void command_sweep(const SweepOptions& o) {
         "{}: model.flow = \"navier-stokes\": magnus sweep solves potential flow by superposition, which "
         "viscous flow does not allow; run each spin ratio with magnus run --set cylinder.spin_ratio=A",
         o.case_path));
+  if (o.json && is_stdout(o.csv))
+    throw std::runtime_error("--json and --csv -: both would go to standard output; name a file for one");
   // Fail before solving, not after.
   check_distinct_paths({o.case_path}, {o.csv, o.output, o.plot});
   for (const std::string* p : {&o.csv, &o.output, &o.plot})
@@ -83,11 +86,15 @@ void command_sweep(const SweepOptions& o) {
   if (!ref_error.empty() && (!o.quiet || !o.plot.empty()))
     std::fprintf(stderr, "magnus: note: viscous reference data not shown: %s\n", ref_error.c_str());
   if (o.quiet) return;
-  std::string text = sweep_table(s);
-  if (ref) text += sweep_reference_text(s, *ref);
   std::vector<std::string> written;
   for (const std::string* p : {&o.csv, &o.output, &o.plot})
     if (!p->empty()) written.push_back(*p);
+  if (o.json) {
+    std::fputs(json_text(sweep_json(s, ref ? &*ref : nullptr, written)).c_str(), stdout);
+    return;
+  }
+  std::string text = sweep_table(s);
+  if (ref) text += sweep_reference_text(s, *ref);
   if (!written.empty()) {
     std::string list;
     for (const auto& w : written) list += (list.empty() ? "" : ", ") + w;
@@ -115,7 +122,12 @@ void add_sweep_command(CLI::App& app) {
   sweep->add_option("--plot", o->plot, "draw C_L(α) as PNG");
   sweep->add_option("--size", o->size, "PNG size WxH in pixels (default 1000x800)");
   sweep->add_option("--threads", o->threads, "threads for the solver")->check(CLI::Range(1, 64));
-  sweep->add_flag("-q,--quiet", o->quiet, "print nothing on success");
+  auto* quiet = sweep->add_flag("-q,--quiet", o->quiet, "print nothing on success");
+  sweep
+      ->add_flag("--json", o->json,
+                 "print one JSON object instead of the table: every figure with its units (see "
+                 "docs/scripting.md)")
+      ->excludes(quiet);
   sweep->callback([o] { command_sweep(*o); });
 }
 

@@ -11,6 +11,7 @@ void add_sweep_command(CLI::App& app);
 void add_compare_command(CLI::App& app);
 void add_plot_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
+void add_probe_command(CLI::App& app);
 
 /// Every subcommand.
 inline void add_commands(CLI::App& app) {
@@ -20,6 +21,7 @@ inline void add_commands(CLI::App& app) {
   add_compare_command(app);
   add_plot_command(app);
   add_bench_command(app);
+  add_probe_command(app);
 }
 
 }  // namespace magnus

@@ -251,6 +251,43 @@ std::string describe_sweep(const ResultFile& f) {
 
 }  // namespace
 
+std::string surface_csv(const std::string& path) {
+  const ResultFile f(path, {"magnus-flow", "magnus-sweep"});
+  if (f.format() != "magnus-flow")
+    throw std::runtime_error(
+        fmt::format("'{}' is a {} file: --surface-csv needs a result of magnus run", path, f.format()));
+  const bool viscous = is_viscous(f);
+  std::vector<std::vector<double>> cols;
+  for (const char* p : {"/surface/theta", "/surface/u_theta", "/surface/pressure"}) {
+    if (!f.has(p))
+      throw std::runtime_error(fmt::format("'{}' is damaged or incomplete: {} is missing", path, p));
+    cols.push_back(f.dataset(p));
+  }
+  const std::vector<double> cp = f.has("/surface/cp") ? f.dataset("/surface/cp") : std::vector<double>();
+  std::vector<double> tau;
+  if (viscous) {
+    if (!f.has("/surface/shear_stress"))
+      throw std::runtime_error(
+          fmt::format("'{}' is damaged or incomplete: /surface/shear_stress is missing", path));
+    tau = f.dataset("/surface/shear_stress");
+  }
+  const size_t n = cols[0].size();
+  for (const std::vector<double>* c :
+       std::initializer_list<const std::vector<double>*>{&cols[1], &cols[2], &cp, &tau})
+    if (!c->empty() && c->size() != n)
+      throw std::runtime_error(fmt::format("'{}' is damaged: the /surface datasets differ in length", path));
+  auto v = [](double x) { return std::isfinite(x) ? fmt::format("{:.17g}", x + 0.0) : std::string(); };
+  std::string s =
+      std::string("theta_rad,theta_deg,u_theta_m_s,pressure_Pa,cp") + (viscous ? ",tau_w_Pa" : "") + "\n";
+  for (size_t j = 0; j < n; ++j) {
+    s += v(cols[0][j]) + "," + v(cols[0][j] * 180.0 / M_PI) + "," + v(cols[1][j]) + "," + v(cols[2][j]) +
+         "," + (cp.empty() ? std::string() : v(cp[j]));
+    if (viscous) s += "," + v(tau[j]);
+    s += "\n";
+  }
+  return s;
+}
+
 std::string describe_result(const std::string& path) {
   const ResultFile f(path, {"magnus-flow", "magnus-sweep"});
   return f.format() == "magnus-sweep" ? describe_sweep(f) : describe_flow(f);
