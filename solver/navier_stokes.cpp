@@ -1,5 +1,7 @@
 #include "solver/navier_stokes.hpp"
 
+#include "solver/arakawa.hpp"
+
 #include <fftw3.h>
 
 #include <algorithm>
@@ -221,12 +223,7 @@ std::vector<double> NsOperator::advection(const std::vector<double>& psi, const 
       const double *zm = &zeta[size_t(i - 1) * n], *z0 = &zeta[size_t(i) * n], *zp = &zeta[size_t(i + 1) * n];
       for (int j = 0; j < n; ++j) {
         const int e = j + 1 == n ? 0 : j + 1, w = j == 0 ? n - 1 : j - 1;
-        const double j1 = (p0[e] - p0[w]) * (zp[j] - zm[j]) - (pp[j] - pm[j]) * (z0[e] - z0[w]);
-        const double j2 = p0[e] * (zp[e] - zm[e]) - p0[w] * (zp[w] - zm[w]) - pp[j] * (zp[e] - zp[w]) +
-                          pm[j] * (zm[e] - zm[w]);
-        const double j3 = zp[j] * (pp[e] - pp[w]) - zm[j] * (pm[e] - pm[w]) - z0[e] * (pp[e] - pm[e]) +
-                          z0[w] * (pp[w] - pm[w]);
-        N[size_t(i) * n + j] = (j1 + j2 + j3) * scale;
+        N[size_t(i) * n + j] = arakawa_12(pm, p0, pp, zm, z0, zp, j, n) * scale;
         rmax = std::max(rmax, std::fabs(p0[e] - p0[w]) * cx + std::fabs(pp[j] - pm[j]) * cy);
       }
       rate_half[ib >= i_mid ? 1 : 0] =
@@ -380,12 +377,7 @@ void advance(const NsOperator& op, const NsState& old, NsState& next, NsStepTime
         double Nij = 0.0;
         if (!p.stokes) {
           // Arakawa (1966) J = (J++ + J+× + J×+)/3 for ∂(ψ,ζ)/∂(θ,ξ); x = θ (j), y = ξ (i).
-          const double j1 = (p0[e] - p0[w]) * (zp[j] - zm[j]) - (pp[j] - pm[j]) * (z0[e] - z0[w]);
-          const double j2 = p0[e] * (zp[e] - zm[e]) - p0[w] * (zp[w] - zm[w]) - pp[j] * (zp[e] - zp[w]) +
-                            pm[j] * (zm[e] - zm[w]);
-          const double j3 = zp[j] * (pp[e] - pp[w]) - zm[j] * (pm[e] - pm[w]) - z0[e] * (pp[e] - pm[e]) +
-                            z0[w] * (pp[w] - pm[w]);
-          Nij = (j1 + j2 + j3) * scale;
+          Nij = arakawa_12(pm, p0, pp, zm, z0, zp, j, n) * scale;
           ring_rate = std::max(ring_rate, std::fabs(p0[e] - p0[w]) + std::fabs(pp[j] - pm[j]));
         }
         N[j] = Nij;

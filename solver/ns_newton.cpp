@@ -1,5 +1,7 @@
 #include "solver/ns_newton.hpp"
 
+#include "solver/arakawa.hpp"
+
 #include <dlfcn.h>
 #include <umfpack.h>
 
@@ -55,9 +57,8 @@ constexpr ArakawaTerm kArakawa[24] = {
     {+1, +1, -1, 0, -1},
     {-1, -1, -1, 0, -1}};
 
-/// Arakawa's N on rings 1…n_r−2 (0 on the wall and outer rings), m²/s²: copied from
-/// NsOperator::advection (solver/navier_stokes.cpp) so the residual is the stepper's sum to the last bit
-/// of its order of operations; fields row-major (n_r, n).
+/// Arakawa's N on rings 1…n_r−2 (0 on the wall and outer rings), m²/s²: the stepper's arakawa_12, so the
+/// residual is the stepper's sum to the last bit; fields row-major (n_r, n).
 std::vector<double> arakawa(const std::vector<double>& psi, const std::vector<double>& zeta, int nr, int n,
                             double d_theta, double h) {
   std::vector<double> N(size_t(nr) * n, 0.0);
@@ -65,15 +66,7 @@ std::vector<double> arakawa(const std::vector<double>& psi, const std::vector<do
   for (int i = 1; i < nr - 1; ++i) {
     const double *pm = &psi[size_t(i - 1) * n], *p0 = &psi[size_t(i) * n], *pp = &psi[size_t(i + 1) * n];
     const double *zm = &zeta[size_t(i - 1) * n], *z0 = &zeta[size_t(i) * n], *zp = &zeta[size_t(i + 1) * n];
-    for (int j = 0; j < n; ++j) {
-      const int e = j + 1 == n ? 0 : j + 1, w = j == 0 ? n - 1 : j - 1;
-      const double j1 = (p0[e] - p0[w]) * (zp[j] - zm[j]) - (pp[j] - pm[j]) * (z0[e] - z0[w]);
-      const double j2 = p0[e] * (zp[e] - zm[e]) - p0[w] * (zp[w] - zm[w]) - pp[j] * (zp[e] - zp[w]) +
-                        pm[j] * (zm[e] - zm[w]);
-      const double j3 = zp[j] * (pp[e] - pp[w]) - zm[j] * (pm[e] - pm[w]) - z0[e] * (pp[e] - pm[e]) +
-                        z0[w] * (pp[w] - pm[w]);
-      N[size_t(i) * n + j] = (j1 + j2 + j3) * scale;
-    }
+    for (int j = 0; j < n; ++j) N[size_t(i) * n + j] = arakawa_12(pm, p0, pp, zm, z0, zp, j, n) * scale;
   }
   return N;
 }
