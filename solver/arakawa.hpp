@@ -7,8 +7,8 @@ namespace magnus {
 
 /// 12·Δθ·Δξ·J at column j of ring i, from the rings i−1, i, i+1 of ψ (pm, p0, pp) and ζ (zm, z0, zp), each n
 /// values (periodic in j); divide by 12·Δθ·Δξ for J (m²/s² with ψ in m²/s and ζ in 1/s, per unit ξ and θ).
-inline double arakawa_12(const double* pm, const double* p0, const double* pp, const double* zm, const double* z0,
-                         const double* zp, int j, int n) {
+inline double arakawa_12(const double* pm, const double* p0, const double* pp, const double* zm,
+                         const double* z0, const double* zp, int j, int n) {
   const int e = j + 1 == n ? 0 : j + 1, w = j == 0 ? n - 1 : j - 1;
   const double j1 = (p0[e] - p0[w]) * (zp[j] - zm[j]) - (pp[j] - pm[j]) * (z0[e] - z0[w]);
   const double j2 =

@@ -1,0 +1,65 @@
+// The navier-stokes model's attributes of the schema table (Models::viscous): absent from potential results.
+#include "io/schema_build.hpp"
+
+namespace magnus::schema_build {
+
+std::vector<AttrSpec> viscous_attributes() {
+  const char* P = "/parameters";
+  const char* F = "/forces";
+  const char* T = "/timing";
+  return {
+      vnum(P, "viscosity", "m^2/s", "kinematic viscosity ν", &ViscousPart::viscosity),
+      vnum(P, "reynolds", "1", "Reynolds number U·2a/ν (undefined when U = 0)", &ViscousPart::reynolds),
+      vnum(P, "time_unit", "s", "convective time unit D/U (D/(a|ω|) when U = 0)", &ViscousPart::time_unit),
+      only(Models::viscous, num(
+                                P, "time_end", "1", "time.end asked for, in convective units",
+                                [](const FlowResult& r) { return opt(r.c.time.end); },
+                                [](FlowResult& r, double v) { r.c.time.end = v; })),
+      row(vnum(F, "cl_mean", "1", "mean lift coefficient (over the last shedding period, or the last step)",
+               &ViscousPart::cl_mean),
+          "C_L mean (viscous)", "cl_mean", "{:.6g}"),
+      row(vnum(F, "cd_mean", "1", "mean drag coefficient", &ViscousPart::cd_mean), "C_D mean (viscous)",
+          "cd_mean", "{:.6g}"),
+      vnum(F, "cm_mean", "1", "mean torque coefficient M/(½ρU²·D²)", &ViscousPart::cm_mean),
+      row(vnum(F, "cl_amplitude", "1", "lift coefficient amplitude (max − min)/2 over the last period",
+               &ViscousPart::cl_amplitude),
+          "C_L amplitude", "cl_amplitude", "{:.4g}"),
+      vnum(F, "cd_amplitude", "1", "drag coefficient amplitude (max − min)/2 over the last period",
+           &ViscousPart::cd_amplitude),
+      row(vnum(F, "strouhal", "1", "Strouhal number f·D/U of the lift signal (periodic flow only)",
+               &ViscousPart::strouhal),
+          "Strouhal number", "strouhal", "{:.5g}"),
+      vnum(F, "period", "s", "shedding period (periodic flow only)", &ViscousPart::period),
+      vnum(F, "lift_mean", "N/m", "mean lift per unit span", &ViscousPart::lift_mean),
+      vnum(F, "drag_mean", "N/m", "mean drag per unit span", &ViscousPart::drag_mean),
+      vnum(F, "torque_mean", "N*m/m", "mean torque on the body per unit span, CCW positive",
+           &ViscousPart::torque_mean),
+      vnum(F, "spin_power_mean", "W/m", "mean power to keep the spin, −M̄ω", &ViscousPart::spin_power_mean),
+      vlast("cl_pressure", "1", "pressure part of C_L at the last step", &ViscousForces::C_L_pressure),
+      vlast("cl_friction", "1", "friction part of C_L at the last step", &ViscousForces::C_L_friction),
+      vlast("cd_pressure", "1", "pressure part of C_D at the last step", &ViscousForces::C_D_pressure),
+      vlast("cd_friction", "1", "friction part of C_D at the last step", &ViscousForces::C_D_friction),
+      vlast("cm", "1", "torque coefficient at the last step", &ViscousForces::C_M),
+      vlast("torque", "N*m/m", "torque per unit span at the last step", &ViscousForces::M),
+      vlast("spin_power", "W/m", "power to keep the spin at the last step, −Mω", &ViscousForces::P_spin),
+      row(vnum(F, "cl_ideal", "1", "potential flow's lift coefficient for the same scene, −2πaω/U",
+               &ViscousPart::cl_ideal),
+          "C_L ideal (potential)", "cl_ideal", "{:.6g}"),
+      row(vnum(F, "magnus_ratio", "1",
+               "S(Re, α)/(2πρa²) = C_L,mean/C_L,ideal: the real share of the ideal lift (undefined at α = 0)",
+               &ViscousPart::magnus_ratio),
+          "S/(2πρa²)", "magnus_ratio", "{:.4f}"),
+      vnum(F, "recirculation_length", "1", "recirculation length behind the body over D (steady flow)",
+           &ViscousPart::recirculation_length),
+      vnum(F, "circulation_outer", "m^2/s", "circulation on the outer ring r = R", &ViscousPart::Gamma_R),
+      vnum(T, "t_reached", "s", "simulated time reached", &ViscousPart::t),
+      vnum(T, "dt", "s", "last time step", &ViscousPart::dt),
+      only(Models::viscous,
+           integer(
+               T, "steps", "time steps taken",
+               [](const FlowResult& r) { return r.viscous ? opt(double(r.viscous->steps)) : std::nullopt; },
+               [](FlowResult& r, double v) { vis(r).steps = long(v); })),
+  };
+}
+
+}  // namespace magnus::schema_build
