@@ -2,24 +2,15 @@
 #include <cmath>
 
 #include "io/case_file.hpp"
+#include "io/case_parse.hpp"
 
 using namespace magnus;
+using test::error_of;
+using test::parse;
 
 namespace {
-Case parse(const std::string& text, const std::vector<std::string>& sets = {}) {
-  return parse_case(text, "test.toml", sets);
-}
 /// The scene keys a case file requires, as the sections [cylinder] and [flow], for tests about other keys.
 const std::string scene = "[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = 10.0\n";
-/// The message parse_case throws for text ("" if it parses).
-std::string error_of(const std::string& text, const std::vector<std::string>& sets = {}) {
-  try {
-    parse(text, sets);
-  } catch (const CaseError& e) {
-    return e.what();
-  }
-  return "";
-}
 }  // namespace
 
 TEST_CASE("the scene's physical keys are required: no silent demo", "[app][case]") {

@@ -1,4 +1,4 @@
-// The navier-stokes case keys (DESIGN.md §3, §8): model.flow, flow.viscosity or flow.reynolds, [time] and the
+// The navier-stokes case keys: model.flow, flow.viscosity or flow.reynolds, [time] and the
 // snapshot keys; what each model refuses of the other's keys; the defaults; and the resolved text, which
 // must read back to itself and leave a potential case's text as it was.
 #include <algorithm>
@@ -8,24 +8,15 @@
 #include <vector>
 
 #include "io/case_file.hpp"
+#include "io/case_parse.hpp"
 
 using namespace magnus;
+using test::error_of;
+using test::parse;
 using Catch::Contains;
 
 namespace {
 
-Case parse(const std::string& text, const std::vector<std::string>& sets = {}) {
-  return parse_case(text, "test.toml", sets);
-}
-/// The message parse_case throws for text ("" if it parses).
-std::string error_of(const std::string& text, const std::vector<std::string>& sets = {}) {
-  try {
-    parse(text, sets);
-  } catch (const CaseError& e) {
-    return e.what();
-  }
-  return "";
-}
 /// A potential scene: a = 0.1 m, ω = 100 rad/s, U = 10 m/s.
 const std::string scene = "[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = 10.0\n";
 /// A navier-stokes scene: a = 5 mm, ω = 2 rad/s, U = 1 cm/s, ν = 1e-6 m²/s (water): Re = 100, α = 1.
