@@ -80,7 +80,7 @@ void command_sweep(const SweepOptions& o) {
       l.x.push_back(by_spin ? w.alpha : w.circulation);
       l.cl.push_back(w.cl);
     }
-    const CurveFigure f = lift_figure(l, ref ? &*ref : nullptr);
+    const CurveFigure f = lift_figure(l, ref ? &*ref : nullptr, shipped_rotor_data());
     plot_curves(f.page, f.lines, f.points, o.plot, size);
   }
   if (!ref_error.empty() && (!o.quiet || !o.plot.empty()))

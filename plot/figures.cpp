@@ -14,6 +14,7 @@
 #include "io/result_reader.hpp"
 #include "physics/exact.hpp"
 #include "plot/figure_labels.hpp"
+#include "plot/figures_rotor.hpp"
 
 namespace magnus {
 
@@ -138,7 +139,7 @@ CurveFigure surface_cp_figure(const FlowResult& r) {
   return f;
 }
 
-CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference) {
+CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference, const RotorData* rotor) {
   CurveFigure f;
   const bool by_gamma = s.by_circulation;
   const double a = s.base.radius, U = s.base.speed;
@@ -245,6 +246,8 @@ CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference) {
       if (!ps.points.empty()) f.points.push_back(std::move(ps));
     }
   }
+  if (rotor && !by_gamma)
+    add_rotor_overlays(f, *rotor, s.base.viscosity > 0.0 && U > 0.0 ? s.base.reynolds() : 0.0, xlo, xhi);
   PointSet numeric{"numeric (potential flow)", {}, Colour::red, 0, false};
   for (size_t k = 0; k < s.x.size() && k < s.cl.size(); ++k) numeric.points.push_back({s.x[k], s.cl[k]});
   f.points.push_back(std::move(numeric));
@@ -316,7 +319,9 @@ PlotOutcome plot_result_file(const std::string& path, const std::string& dir, Pl
       } catch (const std::exception& e) {
         out.skipped.push_back(std::string("viscous reference data not shown: ") + e.what());
       }
-    const CurveFigure f = lift_figure(s, ref ? &*ref : nullptr);
+    const RotorData* rotor = s.by_circulation ? nullptr : shipped_rotor_data();
+    if (!s.by_circulation && !rotor) out.skipped.push_back("rotor data not shown: " + rotor_data_error());
+    const CurveFigure f = lift_figure(s, ref ? &*ref : nullptr, rotor);
     const std::string png = output_base(path, dir) + "_cl.png";
     plot_curves(f.page, f.lines, f.points, png, size);
     out.written.push_back(png);

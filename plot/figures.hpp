@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "io/rotor_data.hpp"
 #include "physics/reference_data.hpp"
 #include "physics/scene.hpp"
 #include "plot/curves.hpp"
@@ -67,8 +68,11 @@ struct LiftSweep {
 
 /// C_L against α (or Γ): numeric points, Kutta–Joukowski, the seed estimate (−4α; in a circulation sweep
 /// the constant −4aω/U of the fixed spin, omitted when ω = 0), Prandtl's bound |C_L| = 4π where the
-/// stagnation points merge, and the reference data (spin sweeps only; may be null).
-CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference);
+/// stagnation points merge, and the reference data (spin sweeps only; may be null). Spin sweeps also draw
+/// the rotor-sail data (may be null) that fit the scene's Re = U·2a/ν (base.viscosity > 0; without a
+/// viscosity there is no Re and all are drawn): see add_rotor_overlays.
+CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference,
+                        const RotorData* rotor = nullptr);
 
 /// Reads a "magnus-sweep" file's /parameters and /sweep columns (alpha, circulation, cl) into a LiftSweep.
 /// Throws std::runtime_error with one line.
