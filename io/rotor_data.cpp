@@ -42,7 +42,8 @@ void read_reynolds(const toml::table& t, const std::string& where, RotorDataset&
   const toml::node* n = t.get("reynolds");
   if (!n) fail(where, "missing 'reynolds' (a number, [low, high] or \"unknown\")");
   if (const auto s = n->value<std::string>()) {
-    if (*s != "unknown") fail(where, fmt::format("reynolds must be a number, [low, high] or \"unknown\", got \"{}\"", *s));
+    if (*s != "unknown")
+      fail(where, fmt::format("reynolds must be a number, [low, high] or \"unknown\", got \"{}\"", *s));
     d.reynolds_known = false;
     return;
   }
@@ -99,26 +100,31 @@ void read_values(const toml::table& t, const std::string& where, RotorDataset& d
   if (table == fit) fail(where, "give either alpha/cl(/cd) arrays or cl_poly(/cd_poly), not both or neither");
   if (fit) {
     if (d.cl_poly.empty()) fail(where, "cl_poly is missing or empty");
-    if (d.method != "fit") fail(where, fmt::format("a polynomial needs method = \"fit\", got \"{}\"", d.method));
+    if (d.method != "fit")
+      fail(where, fmt::format("a polynomial needs method = \"fit\", got \"{}\"", d.method));
     // The fit must give a non-negative |C_L| and C_D across its range (a sign slip in a coefficient shows).
     for (int k = 0; k <= 50; ++k) {
       const double a = d.alpha_min + (d.alpha_max - d.alpha_min) * k / 50.0;
       if (polynomial_value(d.cl_poly, a) < -1e-9 ||
           (!d.cd_poly.empty() && !(polynomial_value(d.cd_poly, a) > 0.0)))
-        fail(where, fmt::format("the polynomial gives a negative |C_L| or C_D at α = {:.3g} inside alpha_range", a));
+        fail(where,
+             fmt::format("the polynomial gives a negative |C_L| or C_D at α = {:.3g} inside alpha_range", a));
     }
     return;
   }
   if (alpha.empty()) fail(where, "alpha is missing or empty");
-  if (cl.size() != alpha.size()) fail(where, fmt::format("cl has {} values for {} alpha", cl.size(), alpha.size()));
+  if (cl.size() != alpha.size())
+    fail(where, fmt::format("cl has {} values for {} alpha", cl.size(), alpha.size()));
   if (!cd.empty() && cd.size() != alpha.size())
     fail(where, fmt::format("cd has {} values for {} alpha", cd.size(), alpha.size()));
   for (size_t j = 0; j < alpha.size(); ++j) {
     if (alpha[j] < d.alpha_min - 1e-9 || alpha[j] > d.alpha_max + 1e-9)
       fail(where, fmt::format("alpha[{}] = {} is outside alpha_range [{}, {}]", j, alpha[j], d.alpha_min,
                               d.alpha_max));
-    if (j > 0 && !(alpha[j] > alpha[j - 1])) fail(where, fmt::format("alpha[{}] = {} does not increase", j, alpha[j]));
-    if (cl[j] < 0.0) fail(where, fmt::format("cl[{}] = {} is negative but cl_sign = \"magnitude\"", j, cl[j]));
+    if (j > 0 && !(alpha[j] > alpha[j - 1]))
+      fail(where, fmt::format("alpha[{}] = {} does not increase", j, alpha[j]));
+    if (cl[j] < 0.0)
+      fail(where, fmt::format("cl[{}] = {} is negative but cl_sign = \"magnitude\"", j, cl[j]));
     if (!cd.empty() && cd[j] < 0.0) fail(where, fmt::format("cd[{}] = {} is negative", j, cd[j]));
     RotorPoint p;
     p.alpha = alpha[j];
@@ -131,7 +137,8 @@ void read_values(const toml::table& t, const std::string& where, RotorDataset& d
 std::string sci(double v) {
   const int e = int(std::floor(std::log10(v)));
   const double m = v / std::pow(10.0, e);
-  return std::fabs(m - std::round(m)) < 1e-9 ? fmt::format("{:.0f}·10^{}", m, e) : fmt::format("{:.2g}·10^{}", m, e);
+  return std::fabs(m - std::round(m)) < 1e-9 ? fmt::format("{:.0f}·10^{}", m, e)
+                                             : fmt::format("{:.2g}·10^{}", m, e);
 }
 
 }  // namespace
@@ -250,29 +257,36 @@ std::string rotor_reynolds_text(const RotorDataset& d) {
 std::string rotor_comparison_text(const RotorData& data, double re, double alpha, double aspect_ratio) {
   const bool has_re = re > 0.0 && std::isfinite(re);
   std::string out = "ideal vs viscous-2D vs rotor data";
-  out += fmt::format(" (scene: α = {:.3g}, {}, {})\n", alpha, has_re ? "Re = " + sci(re) : "no viscosity given: no Re",
+  out += fmt::format(" (scene: α = {:.3g}, {}, {})\n", alpha,
+                     has_re ? "Re = " + sci(re) : "no viscosity given: no Re",
                      aspect_ratio > 0.0 ? fmt::format("aspect ratio h/D = {:.3g}", aspect_ratio)
                                         : std::string("2D, per unit span"));
-  out += fmt::format("  {:<24}|C_L| = 2πα = {:.3g}, C_D = 0: the inviscid upper bound (no boundary layer, no "
-                     "wake, no tip losses)\n",
-                     "ideal (potential flow)", 2.0 * M_PI * std::fabs(alpha));
-  out += fmt::format("  {:<24}2D laminar Navier–Stokes: good for Re ≲ 200 only{}\n", "viscous 2D",
-                     has_re ? (re <= 200.0 ? " (this scene's Re is in range)"
-                                           : " (this scene's Re is above it: real flow there is turbulent and 3D)")
-                            : "");
-  out += fmt::format("  {:<24}3D rotors with end plates and tip losses, or 2D sections at high Re; each holds "
-                     "for its own Re{}:\n",
-                     "rotor data", has_re ? " (✓: within a factor 3 of this scene's)" : "");
+  out += fmt::format(
+      "  {:<24}|C_L| = 2πα = {:.3g}, C_D = 0: the inviscid upper bound (no boundary layer, no "
+      "wake, no tip losses)\n",
+      "ideal (potential flow)", 2.0 * M_PI * std::fabs(alpha));
+  out += fmt::format(
+      "  {:<24}2D laminar Navier–Stokes: good for Re ≲ 200 only{}\n", "viscous 2D",
+      has_re ? (re <= 200.0 ? " (this scene's Re is in range)"
+                            : " (this scene's Re is above it: real flow there is turbulent and 3D)")
+             : "");
+  out += fmt::format(
+      "  {:<24}3D rotors with end plates and tip losses, or 2D sections at high Re; each holds "
+      "for its own Re{}:\n",
+      "rotor data", has_re ? " (✓: within a factor 3 of this scene's)" : "");
   for (const auto& d : data.datasets) {
     const auto v = rotor_value(d, std::fabs(alpha));
-    std::string values = v ? fmt::format("|C_L| = {:.3g}", std::fabs(v->cl)) : std::string("α outside its range");
+    std::string values =
+        v ? fmt::format("|C_L| = {:.3g}", std::fabs(v->cl)) : std::string("α outside its range");
     if (v && v->cd) values += fmt::format(", C_D = {:.3g}", *v->cd);
-    const std::string geometry =
-        d.three_d ? (d.aspect_ratio ? fmt::format("3D, h/D = {:.3g}", *d.aspect_ratio) : std::string("3D, h/D not stated"))
-                  : std::string("2D");
-    out += fmt::format("  {} {:<22}{}; {}, {}, {}, {} [{} … {}]\n", has_re ? (rotor_fits_reynolds(d, re) ? "✓" : " ") : "-",
-                       d.id, values, d.method, rotor_reynolds_text(d), geometry, "end plates: " + d.end_plates,
-                       d.alpha_min, d.alpha_max);
+    const std::string geometry = d.three_d
+                                     ? (d.aspect_ratio ? fmt::format("3D, h/D = {:.3g}", *d.aspect_ratio)
+                                                       : std::string("3D, h/D not stated"))
+                                     : std::string("2D");
+    out += fmt::format("  {} {:<22}{}; {}, {}, {}, {}; α from {} to {}\n",
+                       has_re ? (rotor_fits_reynolds(d, re) ? "✓" : " ") : "-", d.id, values, d.method,
+                       rotor_reynolds_text(d), geometry, "end plates: " + d.end_plates, d.alpha_min,
+                       d.alpha_max);
   }
   return out;
 }

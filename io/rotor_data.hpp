@@ -17,12 +17,12 @@ struct RotorPoint {
 
 /// One publication's rotor data: points or a polynomial fit.
 struct RotorDataset {
-  std::string id;            ///< short key, e.g. "tillig2020"
-  std::string label;         ///< legend text
-  std::string citation;      ///< authors, title, journal, volume, year
-  std::string source;        ///< where in the publication, and the copy the numbers were read from
-  std::string method;        ///< "experiment", "CFD" or "fit"
-  std::string accuracy;      ///< tabulated / digitised ± / fit
+  std::string id;        ///< short key, e.g. "tillig2020"
+  std::string label;     ///< legend text
+  std::string citation;  ///< authors, title, journal, volume, year
+  std::string source;    ///< where in the publication, and the copy the numbers were read from
+  std::string method;    ///< "experiment", "CFD" or "fit"
+  std::string accuracy;  ///< tabulated / digitised ± / fit
   bool reynolds_known = false;
   double reynolds_min = 0.0, reynolds_max = 0.0;  ///< Re = U·D/ν (equal for a single value)
   std::string reynolds_note;                      ///< where the Re comes from

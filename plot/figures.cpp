@@ -271,6 +271,7 @@ LiftSweep read_lift_sweep(const std::string& path) {
   if (!(s.base.radius > 0.0) || !(s.base.speed > 0.0))
     throw std::runtime_error(fmt::format("'{}': /parameters radius and speed must be positive", path));
   s.base.spin = param("spin", 0.0);
+  s.base.viscosity = param("viscosity", 0.0);  // not written today: no Re, every rotor dataset drawn
   s.base.circulation_given = s.by_circulation;
   s.title = f.has_attr("/", "title") ? f.attr_string("/", "title") : std::string();
   s.n_theta = int(param("n_theta", 0.0));

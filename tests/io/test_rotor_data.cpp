@@ -122,12 +122,16 @@ TEST_CASE("rotor data: a bad file is refused in one line naming the file and the
       CHECK(m.find(what) != std::string::npos);
     }
   };
-  refused(edited("tillig2020", "citation", "citation = \"\""), "dataset 5 (\"tillig2020\"): missing or empty string 'citation'");
-  refused(edited("bordogna2019", "reynolds", "reynolds = -3"), "\"bordogna2019\"): reynolds must be positive");
+  refused(edited("tillig2020", "citation", "citation = \"\""),
+          "dataset 5 (\"tillig2020\"): missing or empty string 'citation'");
+  refused(edited("bordogna2019", "reynolds", "reynolds = -3"),
+          "\"bordogna2019\"): reynolds must be positive");
   refused(edited("bordogna2019", "reynolds", "reynolds = \"high\""), "reynolds must be a number");
-  refused(edited("prandtl1926", "aspect_ratio", "aspect_ratio = \"infinite\""), "does not fit geometry \"3D\"");
+  refused(edited("prandtl1926", "aspect_ratio", "aspect_ratio = \"infinite\""),
+          "does not fit geometry \"3D\"");
   refused(edited("ostman2023_2d", "aspect_ratio", "aspect_ratio = 5.0"), "needs geometry \"3D\"");
-  refused(edited("ostman2023_2d", "alpha_range", "alpha_range = [0.0, 6.0]"), "alpha[8] = 8 is outside alpha_range");
+  refused(edited("ostman2023_2d", "alpha_range", "alpha_range = [0.0, 6.0]"),
+          "alpha[8] = 8 is outside alpha_range");
   refused(edited("ostman2023_2d", "cl =", "cl = [0.0, 1.22]"), "cl has 2 values for 9 alpha");
   refused(edited("ostman2023_3d", "cd =", "cd = [0.6459, -0.47, 2.416, 3.381]"), "cd[1] = -0.47 is negative");
   refused(edited("ostman2023_3d", "method", "method = \"guess\""), "method must be");
@@ -150,7 +154,7 @@ TEST_CASE("rotor data: a dataset fits a scene whose Re is within a factor 3 of i
   d.reynolds_known = true;
   d.reynolds_min = d.reynolds_max = 3.6e5;
   CHECK(rotor_fits_reynolds(d, 3.6e5));
-  CHECK(rotor_fits_reynolds(d, 1.3e5));   // 3.6e5 / 3 = 1.2e5 ≤ 1.3e5
+  CHECK(rotor_fits_reynolds(d, 1.3e5));  // 3.6e5 / 3 = 1.2e5 ≤ 1.3e5
   CHECK(!rotor_fits_reynolds(d, 1.1e5));
   CHECK(rotor_fits_reynolds(d, 1.07e6));  // ≤ 3 · 3.6e5 = 1.08e6
   CHECK(!rotor_fits_reynolds(d, 1.1e6));
