@@ -159,9 +159,10 @@ void bind_result(py::module_& m) {
           "dict of dicts: the unit of every value, by group (forces, parameters, fields, …)")
       .def(
           "write",
-          [](const PyResult& p, const std::string& path, int compression) {
+          [](const PyResult& p, const py::object& where, int compression) {
             if (compression < 0 || compression > 9)
               throw std::invalid_argument("compression: must be a gzip level from 0 to 9");
+            const auto path = py::module_::import("os").attr("fspath")(where).cast<std::string>();
             py::gil_scoped_release nogil;
             write_result(*p.r, path, compression);
           },
