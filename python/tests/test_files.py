@@ -50,3 +50,21 @@ def test_read_of_a_command_line_navier_stokes_result(tmp_path):
     m = magnus.run(NS_CASE, set=NS_TINY)
     assert np.array_equal(m.history["cl"], h["cl"])
     assert m.forces["cl_mean"] == r.forces["cl_mean"]
+
+
+def test_ctrl_c_stops_a_navier_stokes_run():
+    import _thread
+    import threading
+    import time
+
+    # Some 4600 steps (about a second alone on a core): Ctrl-C after 0.2 s stops it between two steps.
+    case = {"grid.n_theta": 64, "domain.outer_radius": 20, "time.end": 300, "time.mode": "unsteady"}
+    timer = threading.Timer(0.2, _thread.interrupt_main)
+    t0 = time.perf_counter()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            magnus.run(NS_CASE, set=case)
+    finally:
+        timer.cancel()
+    assert time.perf_counter() - t0 < 5.0
