@@ -23,6 +23,7 @@ from . import _magnus
 from ._magnus import Result
 
 __version__ = _magnus.__version__
+Result.__module__ = __name__
 __all__ = ["run", "sweep", "read", "Result", "Sweep", "case_toml"]
 
 _MAX_THREADS = 64
