@@ -2,7 +2,7 @@
 import pytest
 
 import magnus
-from conftest import DEMO, cli_error
+from conftest import DEMO, NS_CASE, cli_error
 
 
 @pytest.mark.parametrize(
@@ -55,3 +55,10 @@ def test_bad_python_arguments():
         magnus.sweep(DEMO, spin_ratio=[0.0, float("nan")])
     with pytest.raises(ValueError, match="1-D"):
         magnus.sweep(DEMO, spin_ratio=[[0.0, 1.0]])
+
+
+def test_a_navier_stokes_sweep_is_refused_as_on_the_command_line():
+    expected = cli_error("sweep", NS_CASE, "--spin-ratio", "0:1:1")
+    with pytest.raises(RuntimeError) as e:
+        magnus.sweep(NS_CASE, spin_ratio=[0.0, 1.0])
+    assert str(e.value) == expected
