@@ -96,6 +96,26 @@ py::dict grid(const Ptr& r) {
   return d;
 }
 
+/// navier-stokes: the stored states (output.snapshots) as t (N) and psi, vorticity (N, n_r, n_θ) views.
+py::object snapshots(const Ptr& r) {
+  if (!r->viscous) return py::none();
+  const auto& states = r->viscous->snapshots;
+  std::vector<double> t;
+  for (const Snapshot& s : states) t.push_back(s.t);
+  py::dict d;
+  d["t"] = owned_array(std::move(t), {py::ssize_t(states.size())});
+  for (const auto& [name, member] :
+       {std::pair{"psi", &Snapshot::psi}, std::pair{"vorticity", &Snapshot::vorticity}}) {
+    py::list each;
+    for (const Snapshot& s : states)
+      each.append(view_of(r, s.*member, {py::ssize_t(r->grid.n_r), py::ssize_t(r->grid.n_theta)}));
+    // One (N, n_r, n_θ) array: the states are separate vectors, so this is the one copy made.
+    d[name] = states.empty() ? owned_array({}, {0, py::ssize_t(r->grid.n_r), py::ssize_t(r->grid.n_theta)})
+                             : py::module_::import("numpy").attr("stack")(each);
+  }
+  return d;
+}
+
 py::dict units(const Ptr& r) {
   py::dict d;
   d["parameters"] = attribute_units(*r, "/parameters");
@@ -107,6 +127,7 @@ py::dict units(const Ptr& r) {
   d["surface"] = datasets(r, "/surface/", true);
   d["stagnation"] = datasets(r, "/stagnation/", true);
   if (r->viscous) d["history"] = datasets(r, "/history/", true);
+  if (r->viscous) d["snapshots"] = datasets(r, "/snapshots/", true);
   return d;
 }
 
@@ -154,6 +175,10 @@ void bind_result(py::module_& m) {
           },
           "navier-stokes: dict of (n_steps) arrays t, t_convective, cl, cd, cm, lift, drag, torque; "
           "None for potential flow")
+      .def_property_readonly(
+          "snapshots", [](const PyResult& p) { return snapshots(p.r); },
+          "navier-stokes: dict of the stored states (output.snapshots): t (N), psi and vorticity "
+          "(N, n_r, n_theta); None for potential flow")
       .def_property_readonly(
           "units", [](const PyResult& p) { return units(p.r); },
           "dict of dicts: the unit of every value, by group (forces, parameters, fields, …)")

@@ -46,6 +46,7 @@ def test_read_of_a_command_line_navier_stokes_result(tmp_path):
     with h5py.File(path, "r") as f:
         assert np.array_equal(f["history/cl"][...], h["cl"])
         assert f["forces"].attrs["cl_mean"] == r.forces["cl_mean"]
+    assert r.snapshots["t"].size == 0 and r.snapshots["psi"].shape == (0, r.parameters["n_r"], 32)
     # Solved through the module: the same run, step for step.
     m = magnus.run(NS_CASE, set=NS_TINY)
     assert np.array_equal(m.history["cl"], h["cl"])
@@ -68,3 +69,16 @@ def test_ctrl_c_stops_a_navier_stokes_run():
     finally:
         timer.cancel()
     assert time.perf_counter() - t0 < 5.0
+
+
+def test_snapshots_of_a_navier_stokes_run(tmp_path):
+    r = magnus.run(NS_CASE, set=dict(NS_TINY, **{"output.snapshots": 3}), output=tmp_path / "s.h5")
+    s = r.snapshots
+    n_r = r.parameters["n_r"]
+    assert s["t"].shape == (3,) and s["psi"].shape == (3, n_r, 32) and s["vorticity"].shape == (3, n_r, 32)
+    assert np.all(np.diff(s["t"]) > 0) and 0 < s["t"][0] and s["t"][-1] <= r.history["t"][-1]
+    assert np.isin(s["t"], r.history["t"]).all()  # each stored state is one of the steps
+    with h5py.File(tmp_path / "s.h5", "r") as f:
+        assert np.array_equal(f["snapshots/psi"][...], s["psi"])
+    assert r.units["snapshots"]["vorticity"] == "1/s"
+    assert magnus.run(DEMO, grid__n_theta=16).snapshots is None
