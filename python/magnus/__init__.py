@@ -1,0 +1,198 @@
+"""magnus: flow past a spinning cylinder (potential flow and a 2D Navier–Stokes model), from Python.
+
+    import magnus
+    r = magnus.run("cases/spin_ratio_1.toml", grid__n_theta=512)   # no file unless output= is given
+    r.forces["cl"], r.units["forces"]["cl"]                         # -6.283…, "1"
+    r.fields["cp"].shape                                            # (n_r, n_theta)
+    s = magnus.sweep("cases/spin_ratio_1.toml", spin_ratio=numpy.linspace(0, 4, 1000))
+    s["alpha"], s["cl"], s.units["cl"]
+    magnus.read("magnus.h5").forces
+
+A case is a path to a TOML case file or a dict shaped like one ({"cylinder": {"radius": 0.1, ...}, ...}).
+Overrides are keyword arguments section__key=value (grid__n_theta=512) or set={"grid.n_theta": 512}.
+Errors raise ValueError (bad input) or RuntimeError with the command line's one-line message.
+"""
+import math
+import numbers
+import os
+import re
+
+import numpy as np
+
+from . import _magnus
+from ._magnus import Result
+
+__version__ = _magnus.__version__
+Result.__module__ = __name__
+__all__ = ["run", "sweep", "read", "Result", "Sweep", "case_toml"]
+
+_MAX_THREADS = 64
+_MAX_SWEEP_POINTS = 100000  # as `magnus sweep`
+_BARE_KEY = re.compile(r"^[A-Za-z0-9_-]+$")
+
+
+def _toml_string(s):
+    out = ['"']
+    for ch in s:
+        if ch == '"' or ch == "\\":
+            out.append("\\" + ch)
+        elif ord(ch) < 0x20 or ord(ch) == 0x7F:
+            out.append("\\u%04X" % ord(ch))
+        else:
+            out.append(ch)
+    out.append('"')
+    return "".join(out)
+
+
+def _toml_key(k, where):
+    if not isinstance(k, str):
+        raise TypeError(f"{where}: a case key must be a string, not {type(k).__name__}")
+    return k if _BARE_KEY.match(k) else _toml_string(k)
+
+
+def _toml_value(v, where):
+    """A Python value as a TOML value: bool, int, float, str (or path), list, dict (inline table)."""
+    if isinstance(v, (bool, np.bool_)):
+        return "true" if v else "false"
+    if isinstance(v, numbers.Integral):
+        return str(int(v))
+    if isinstance(v, numbers.Real):
+        x = float(v)
+        if math.isnan(x):
+            return "nan"
+        if math.isinf(x):
+            return "inf" if x > 0 else "-inf"
+        return repr(x)  # the shortest text that reads back as the same double
+    if isinstance(v, (str, os.PathLike)):
+        return _toml_string(os.fspath(v))
+    if isinstance(v, (list, tuple, np.ndarray)):
+        return "[" + ", ".join(_toml_value(x, where) for x in list(v)) + "]"
+    if isinstance(v, dict):
+        return "{" + ", ".join(f"{_toml_key(k, where)} = {_toml_value(x, where)}" for k, x in v.items()) + "}"
+    raise TypeError(f"{where}: a {type(v).__name__} has no TOML form (use bool, int, float, str or a list)")
+
+
+def case_toml(case):
+    """The TOML text of a case given as a dict shaped like a case file."""
+    if not isinstance(case, dict):
+        raise TypeError(f"case: expected a dict, not {type(case).__name__}")
+    top, sections = [], []
+    for key, value in case.items():
+        if isinstance(value, dict):
+            lines = [f"[{_toml_key(key, key)}]"]
+            for k, v in value.items():
+                lines.append(f"{_toml_key(k, f'{key}.{k}')} = {_toml_value(v, f'{key}.{k}')}")
+            sections.append("\n".join(lines))
+        else:
+            top.append(f"{_toml_key(key, key)} = {_toml_value(value, key)}")
+    return "\n\n".join(["\n".join(top)] + sections if top else sections) + "\n"
+
+
+def _source(case):
+    """(text or path, is_path) of a case argument."""
+    if isinstance(case, dict):
+        return case_toml(case), False
+    if isinstance(case, (str, os.PathLike)):
+        return os.fspath(case), True
+    raise TypeError(f"case: expected a path or a dict shaped like a case file, not {type(case).__name__}")
+
+
+def _overrides(kwargs, set_):
+    """Keyword overrides section__key=value and set={"section.key": value} as "section.key=value"."""
+    out = []
+    for name, value in kwargs.items():
+        if "__" not in name:
+            raise TypeError(
+                f"unexpected keyword argument '{name}': a case override is section__key=value "
+                f"(e.g. grid__n_theta=512)")
+        section, key = name.split("__", 1)
+        out.append(f"{section}.{key}={_toml_value(value, f'{section}.{key}')}")
+    if set_ is not None:
+        if not isinstance(set_, dict):
+            raise TypeError(f"set: expected a dict {{'section.key': value}}, not {type(set_).__name__}")
+        for key, value in set_.items():
+            if not isinstance(key, str):
+                raise TypeError(f"set: a key must be a string 'section.key', not {type(key).__name__}")
+            out.append(f"{key}={_toml_value(value, key)}")
+    return out
+
+
+def _threads(threads):
+    if isinstance(threads, bool) or not isinstance(threads, numbers.Integral) or not 1 <= threads <= _MAX_THREADS:
+        raise ValueError(f"threads {threads!r}: must be an integer from 1 to {_MAX_THREADS}")
+    return min(int(threads), os.cpu_count() or int(threads))
+
+
+def run(case, /, *, set=None, output=None, threads=1, **overrides):
+    """Solve a case and return its Result. No file is written unless output (a path) is given: then the
+    result is written there (with its .xmf sidecar) as `magnus run -o` would. The GIL is released while
+    solving; Ctrl-C stops a navier-stokes run (KeyboardInterrupt)."""
+    source, is_path = _source(case)
+    sets = _overrides(overrides, set)
+    out = "" if output is None else os.fspath(output)
+    if output is not None and out == "":
+        raise ValueError("output: an empty path")
+    return _magnus._run(source, is_path, sets, _threads(threads), out)
+
+
+def read(path):
+    """The Result stored in a magnus-flow file (format version 1 or 2, potential or navier-stokes)."""
+    if not isinstance(path, (str, os.PathLike)):
+        raise TypeError(f"path: expected a path, not {type(path).__name__}")
+    return _magnus._read(os.fspath(path))
+
+
+class Sweep(dict):
+    """The columns of a sweep (name → 1-D array, one value per point), named as the sweep file's /sweep
+    datasets. A column undefined at some points is a numpy masked array (masked there); a column undefined
+    at every point is left out and named in .undefined. Attributes: units, descriptions (per column),
+    undefined, grid (n_r, n_theta, outer_radius), method, timing (s), case (the resolved TOML text)."""
+
+    def __init__(self, raw):
+        super().__init__()
+        self.units, self.descriptions, self.undefined = {}, {}, []
+        for name, column in raw["columns"].items():
+            finite = np.isfinite(column)
+            if column.size and not finite.any():
+                self.undefined.append(name)
+                continue
+            self[name] = column if finite.all() else np.ma.masked_array(column, mask=~finite, fill_value=np.nan)
+            self.units[name] = raw["units"][name]
+            self.descriptions[name] = raw["descriptions"][name]
+        self.grid, self.method, self.timing, self.case = raw["grid"], raw["method"], raw["timing"], raw["case"]
+
+    def __repr__(self):
+        n = len(next(iter(self.values()))) if self else 0
+        return f"<magnus.Sweep {n} points: {', '.join(self)}>"
+
+
+def _sweep_values(values, name):
+    try:
+        v = np.asarray(values, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name}: expected numbers (a list or a 1-D array)") from None
+    if v.ndim > 1:
+        raise ValueError(f"{name}: expected a 1-D array, not shape {v.shape}")
+    v = np.atleast_1d(v)
+    if v.size == 0:
+        raise ValueError(f"{name}: no values")
+    if v.size > _MAX_SWEEP_POINTS:
+        raise ValueError(f"{name}: {v.size} points, more than the {_MAX_SWEEP_POINTS} a sweep accepts")
+    bad = np.flatnonzero(~np.isfinite(v))
+    if bad.size:
+        raise ValueError(f"{name}: value {bad[0]} is not a finite number")
+    return v
+
+
+def sweep(case, /, spin_ratio=None, *, circulation=None, set=None, threads=1, **overrides):
+    """Lift against spin ratio α = aω/U (or circulation Γ in m²/s with circulation.model = "given") by
+    superposition: one factorization and two solves for any number of points (potential flow). Returns a
+    Sweep: a dict of 1-D arrays (alpha, circulation, lift, drag, cl, cl_kutta_joukowski, cd, …) with
+    .units."""
+    if (spin_ratio is None) == (circulation is None):
+        raise ValueError("sweep: give exactly one of spin_ratio=… and circulation=…")
+    variable = "spin_ratio" if spin_ratio is not None else "circulation"
+    values = _sweep_values(spin_ratio if spin_ratio is not None else circulation, variable)
+    source, is_path = _source(case)
+    raw = _magnus._sweep(source, is_path, variable, values, _overrides(overrides, set), _threads(threads))
+    return Sweep(raw)

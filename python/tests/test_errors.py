@@ -1,0 +1,64 @@
+"""Errors: ValueError for bad input, RuntimeError otherwise, each with the command line's one line."""
+import pytest
+
+import magnus
+from conftest import DEMO, NS_CASE, cli_error
+
+
+@pytest.mark.parametrize(
+    "kwargs, sets",
+    [
+        ({"cylinder__radus": 0.1}, ["cylinder.radus=0.1"]),
+        ({"grid__n_theta": 7}, ["grid.n_theta=7"]),
+        ({"set": {"grid.spacing": "cubic"}}, ['grid.spacing="cubic"']),
+        ({"flow__speed": -1.0}, ["flow.speed=-1.0"]),
+    ],
+)
+def test_bad_overrides_raise_the_command_lines_message(kwargs, sets):
+    args = [a for s in sets for a in ("--set", s)]
+    expected = cli_error("run", DEMO, *args)
+    with pytest.raises(ValueError) as e:
+        magnus.run(DEMO, **kwargs)
+    assert str(e.value) == expected
+
+
+def test_a_missing_case_file(tmp_path):
+    missing = tmp_path / "nope.toml"
+    expected = cli_error("run", missing)
+    with pytest.raises(ValueError) as e:
+        magnus.run(missing)
+    assert str(e.value) == expected
+
+
+def test_a_dict_case_names_its_origin():
+    with pytest.raises(ValueError, match=r"^<dict>: .*cylinder\.radius"):
+        magnus.run({"cylinder": {"spin": 1.0}, "flow": {"speed": 1.0}})
+
+
+def test_reading_a_file_that_is_not_a_result(tmp_path):
+    with pytest.raises(RuntimeError) as e:
+        magnus.read(DEMO)
+    assert str(e.value) == cli_error("inspect", DEMO)
+    assert "\n" not in str(e.value)
+
+
+def test_bad_python_arguments():
+    with pytest.raises(TypeError, match="section__key"):
+        magnus.run(DEMO, n_theta=64)
+    with pytest.raises(ValueError, match="threads"):
+        magnus.run(DEMO, threads=0)
+    with pytest.raises(TypeError, match="case"):
+        magnus.run(42)
+    with pytest.raises(ValueError, match="exactly one"):
+        magnus.sweep(DEMO)
+    with pytest.raises(ValueError, match="finite"):
+        magnus.sweep(DEMO, spin_ratio=[0.0, float("nan")])
+    with pytest.raises(ValueError, match="1-D"):
+        magnus.sweep(DEMO, spin_ratio=[[0.0, 1.0]])
+
+
+def test_a_navier_stokes_sweep_is_refused_as_on_the_command_line():
+    expected = cli_error("sweep", NS_CASE, "--spin-ratio", "0:1:1")
+    with pytest.raises(RuntimeError) as e:
+        magnus.sweep(NS_CASE, spin_ratio=[0.0, 1.0])
+    assert str(e.value) == expected
