@@ -56,7 +56,7 @@ std::vector<AttrSpec> make_attributes() {
             return r.c.scene.speed > 0.0 ? opt(r.c.scene.spin_ratio()) : std::nullopt;
           }),
       num(
-          P, "speed", "m/s", "freestream speed U towards +x",
+          P, "speed", "m/s", "freestream speed U (towards the direction)",
           [](const FlowResult& r) { return opt(r.c.scene.speed); },
           [](FlowResult& r, double v) { r.c.scene.speed = v; }),
       num(
@@ -222,6 +222,13 @@ std::vector<AttrSpec> make_attributes() {
     if (g == E || (g == P && (n == "far_field" || n == "method" || n == "stencil" || n == "circulation_model")))
       a.models = Models::potential;
   }
+  // The scene's world placement and engineering forces, each after the last entry of its group.
+  for (const AttrSpec& a : scene_attributes()) {
+    auto at = table.end();
+    for (auto it = table.begin(); it != table.end(); ++it)
+      if (std::string(it->group) == a.group) at = it + 1;
+    table.insert(at, a);
+  }
   const std::vector<AttrSpec> viscous = viscous_attributes();
   table.insert(table.end(), viscous.begin(), viscous.end());
   return table;
@@ -249,13 +256,46 @@ DatasetSpec surface(const char* name, const char* units, const char* description
           [m](FlowResult& r, std::vector<double> v) { r.surface.*m = std::move(v); }};
 }
 
-/// x = r cos θ or y = r sin θ on the grid, row-major (n_r, n_θ).
-std::vector<double> coordinate(const PolarGrid& g, bool y) {
+/// The world x or y of each node, row-major (n_r, n_θ): (r cos θ, r sin θ) of the wind frame turned by the
+/// direction β (exactly r cos θ, r sin θ when β = 0).
+std::vector<double> coordinate(const PolarGrid& g, bool y, double direction_deg) {
   std::vector<double> v(size_t(g.n_r) * size_t(g.n_theta));
   for (size_t i = 0; i < size_t(g.n_r); ++i)
-    for (size_t j = 0; j < size_t(g.n_theta); ++j)
-      v[i * size_t(g.n_theta) + j] = g.r[i] * (y ? std::sin(g.theta[j]) : std::cos(g.theta[j]));
+    for (size_t j = 0; j < size_t(g.n_theta); ++j) {
+      const WorldForce p = rotate_deg(g.r[i] * std::cos(g.theta[j]), g.r[i] * std::sin(g.theta[j]), direction_deg);
+      v[i * size_t(g.n_theta) + j] = y ? p.y : p.x;
+    }
   return v;
+}
+
+/// u_x (y false) or u_y of the world frame: the wind-frame components turned by the direction β. Read back,
+/// the pair is turned back (when u_y arrives after u_x), so that a result in memory is in the wind frame.
+DatasetSpec world_velocity(const char* name, const char* description, bool y) {
+  return {std::string("/fields/") + name,
+          "m/s",
+          description,
+          DataShape::grid,
+          [y](const FlowResult& r) {
+            const double beta = r.c.scene.direction_deg;
+            const auto &ux = r.fields.u_x, &uy = r.fields.u_y;
+            if (beta == 0.0 || ux.size() != uy.size()) return y ? uy : ux;
+            std::vector<double> v(ux.size());
+            for (size_t q = 0; q < v.size(); ++q) {
+              const WorldForce w = rotate_deg(ux[q], uy[q], beta);
+              v[q] = y ? w.y : w.x;
+            }
+            return v;
+          },
+          [y](FlowResult& r, std::vector<double> v) {
+            (y ? r.fields.u_y : r.fields.u_x) = std::move(v);
+            auto &ux = r.fields.u_x, &uy = r.fields.u_y;
+            const double beta = r.c.scene.direction_deg;
+            if (!y || beta == 0.0 || ux.size() != uy.size()) return;
+            for (size_t q = 0; q < ux.size(); ++q) {
+              const WorldForce w = rotate_deg(ux[q], uy[q], -beta);
+              ux[q] = w.x, uy[q] = w.y;
+            }
+          }};
 }
 
 DatasetSpec stagnation(const char* name, const char* units, const char* description, bool exact, bool theta) {
@@ -317,26 +357,27 @@ std::vector<DatasetSpec> make_datasets() {
       {"/grid/r", "m", "radius r_i of grid row i (dimension scale of every field's first axis)",
        DataShape::n_r, [](const FlowResult& r) { return r.grid.r; },
        [](FlowResult& r, std::vector<double> v) { r.grid.r = std::move(v); }},
-      {"/grid/theta", "rad", "angle θ_j of grid column j from +x, counter-clockwise (dimension scale)",
+      {"/grid/theta", "rad",
+       "angle θ_j of grid column j from the freestream direction, counter-clockwise (wind frame; dimension scale)",
        DataShape::n_theta, [](const FlowResult& r) { return r.grid.theta; },
        [](FlowResult& r, std::vector<double> v) { r.grid.theta = std::move(v); }},
       {"/grid/x",
        "m",
-       "x = r cos θ of each node",
+       "world x of each node: r cos(θ + direction)",
        DataShape::grid,
-       [](const FlowResult& r) { return coordinate(r.grid, false); },
+       [](const FlowResult& r) { return coordinate(r.grid, false, r.c.scene.direction_deg); },
        {}},
       {"/grid/y",
        "m",
-       "y = r sin θ of each node",
+       "world y of each node: r sin(θ + direction)",
        DataShape::grid,
-       [](const FlowResult& r) { return coordinate(r.grid, true); },
+       [](const FlowResult& r) { return coordinate(r.grid, true, r.c.scene.direction_deg); },
        {}},
       field("psi", "m^2/s", "stream function ψ", &Fields::psi),
       field("u_r", "m/s", "radial velocity u_r = (1/r) ∂ψ/∂θ", &Fields::u_r),
       field("u_theta", "m/s", "angular velocity u_θ = −∂ψ/∂r", &Fields::u_theta),
-      field("u_x", "m/s", "velocity component along +x", &Fields::u_x),
-      field("u_y", "m/s", "velocity component along +y", &Fields::u_y),
+      world_velocity("u_x", "velocity component along the world +x", false),
+      world_velocity("u_y", "velocity component along the world +y", true),
       field("pressure", "Pa", "pressure p = p∞ + ½ρ(U² − |u|²)", &Fields::pressure),
       field("cp", "1", "pressure coefficient (p − p∞)/(½ρU²) (undefined when U = 0)", &Fields::cp),
       only(Models::potential,
@@ -355,11 +396,11 @@ std::vector<DatasetSpec> make_datasets() {
       only(Models::potential,
            stagnation("r", "m", "radius of each stagnation point, numeric (sorted by θ)", false, false)),
       only(Models::potential,
-           stagnation("theta", "rad", "angle of each stagnation point, numeric, in [0, 2π)", false, true)),
+           stagnation("theta", "rad", "angle of each stagnation point from the freestream direction, numeric, in [0, 2π)", false, true)),
       only(Models::potential,
            stagnation("r_exact", "m", "radius of each stagnation point, exact", true, false)),
       only(Models::potential,
-           stagnation("theta_exact", "rad", "angle of each stagnation point, exact, in [0, 2π)", true, true)),
+           stagnation("theta_exact", "rad", "angle of each stagnation point from the freestream direction, exact, in [0, 2π)", true, true)),
       only(Models::viscous, {"/separation/theta",
                              "rad",
                              "angles where the wall shear stress changes sign (separation, reattachment)",
