@@ -297,7 +297,9 @@ std::string to_toml(const Case& c) {
   t += c.scene.rpm_given ? fmt::format("rpm = {}\n", num(*c.scene.rpm_given))
                          : fmt::format("spin = {}\n", num(c.scene.spin));
   if (c.scene.span > 0.0) t += fmt::format("span = {}\n", num(c.scene.span));
-  t += fmt::format("\n[flow]\nspeed = {}\ndirection = {}\n", num(c.scene.speed), num(c.scene.direction_deg));
+  // The world keys only when given (the default direction 0 leaves the text of a plain case as it was).
+  t += fmt::format("\n[flow]\nspeed = {}\n", num(c.scene.speed));
+  if (c.scene.direction_deg != 0.0) t += fmt::format("direction = {}\n", num(c.scene.direction_deg));
   if (c.scene.course_deg) t += fmt::format("course = {}\n", num(*c.scene.course_deg));
   t += fmt::format("density = {}\npressure = {}\n", num(c.scene.density), num(c.scene.pressure_inf));
   // The viscosity as given: a given Re stays the input (ν follows U and a), not the ν derived from it.

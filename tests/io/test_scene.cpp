@@ -122,7 +122,7 @@ TEST_CASE("direction, course, span: one-line range and type errors naming the ke
   CHECK(error_of(scene("", "", "[output]\nfields = [\"u_x\"]\n")) == "");
 }
 
-TEST_CASE("key hints: span, direction and course are keys; spin and span are never mistaken", "[io][case][scene]") {
+TEST_CASE("key hints: span, direction and course are keys, and spin and span are never mistaken", "[io][case][scene]") {
   const auto& keys = case_keys();
   for (const char* k : {"cylinder.span", "flow.direction", "flow.course"})
     CHECK(std::find(keys.begin(), keys.end(), k) != keys.end());
