@@ -71,8 +71,10 @@ std::string summary_text(const FlowResult& r, const std::string& output_path) {
   if (given && moving)
     alpha += fmt::format(", α_Γ = Γ/(2πaU) = {} (the given Γ sets the flow)",
                          num(sc.Gamma() / (2.0 * M_PI * sc.radius * sc.speed)));
-  line("case", fmt::format("a = {} m, ω = {} rad/s ({} rpm), U = {} m/s, α = aω/U = {}, ρ = {} kg/m³",
-                           num(sc.radius), num(sc.spin), num(sc.rpm()), num(sc.speed), alpha, num(sc.density)));
+  // The spin as given: in rev/min beside ω when cylinder.rpm set it.
+  line("case", fmt::format("a = {} m, ω = {} rad/s{}, U = {} m/s, α = aω/U = {}, ρ = {} kg/m³", num(sc.radius),
+                           num(sc.spin), sc.rpm_given ? fmt::format(" ({} rpm)", num(*sc.rpm_given)) : "",
+                           num(sc.speed), alpha, num(sc.density)));
   s += reynolds_line(sc);
   line("circulation", fmt::format("Γ = {} m²/s ({})", num(sc.Gamma(), "{:.8g}"),
                                   given ? "given, not from the spin" : "spin model, Γ = 2πa²ω"));

@@ -17,6 +17,14 @@ std::string num(double v, const char* spec = "{:.6g}") { return fmt::format(fmt:
 
 std::string line(const std::string& label, const std::string& text) { return fmt::format("{:<15}{}\n", label, text); }
 
+/// "Stojković et al. 2002" from a label "viscous, Re = 100 (Stojković et al. 2002)"; else the label.
+std::string who(const std::string& label) {
+  const size_t open = label.rfind('('), close = label.rfind(')');
+  return open != std::string::npos && close != std::string::npos && close > open + 1
+             ? label.substr(open + 1, close - open - 1)
+             : label;
+}
+
 std::string deg(double d) { return num(d, "{:.6g}") + "°"; }
 
 }  // namespace
@@ -100,8 +108,10 @@ std::string inviscid_bound_lines(const FlowResult& r) {
   const ViscousReference* ref = shipped_reference();
   if (!ref) return s + line("", "viscous reference: the data file cannot be read");
   if (const auto n = nearest_reference(sc, *ref))
-    s += line("", fmt::format("viscous reference at Re = {}, α = {}: C_L = {} ({}, {}){}", num(n->reynolds),
-                              num(n->alpha), num(n->cl, "{:.4g}"), n->label, n->source,
+    s += line("", fmt::format("viscous reference at Re = {}, α = {}: C_L = {} = {} of −2πα ({}, {}){}",
+                              num(n->reynolds), num(n->alpha), num(n->cl, "{:.4g}"),
+                              n->alpha != 0.0 ? num(n->cl / (-2.0 * M_PI * n->alpha), "{:.3f}") : "—",
+                              who(n->label), n->source,
                               sc.viscosity > 0.0 && std::fabs(std::log(sc.reynolds() / n->reynolds)) > std::log(2.0)
                                   ? fmt::format(" — not this Re ({})", num(sc.reynolds(), "{:.3g}"))
                                   : ""));
