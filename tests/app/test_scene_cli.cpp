@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "io/hdf5_io.hpp"
+#include "io/result_reader.hpp"
 #include "support.hpp"
 
 using namespace magnus;
@@ -85,9 +86,14 @@ TEST_CASE("flow.direction 90°: the same C_L, C_D and the flow turned, probed at
   const size_t far = ux.size() - 1;  // outer ring, last θ
   CHECK(std::fabs(ux[far]) < 1.0);  // the circulation adds Γ/(2πR) = 0.5 m/s across
   CHECK(uy[far] == Approx(10.0).epsilon(0.05));
-  // Read back, a result is in the wind frame again: the unturned file's fields.
   const ResultFile fa(dir + "/a.h5");
   CHECK(fa.dataset("/fields/u_x")[far] == Approx(uy[far]).epsilon(1e-12));
+  // Read back, a result is in the wind frame again: the unturned result's fields, to round-off.
+  const FlowResult ra = read_result(dir + "/a.h5"), rb = read_result(dir + "/b.h5");
+  CHECK(rb.c.scene.direction_deg == 90.0);
+  REQUIRE(rb.fields.u_x.size() == ra.fields.u_x.size());
+  CHECK(test::max_abs_diff(rb.fields.u_x, ra.fields.u_x) <= 1e-13 * test::max_abs(ra.fields.u_x));
+  CHECK(test::max_abs_diff(rb.fields.u_y, ra.fields.u_y) <= 1e-13 * test::max_abs(ra.fields.u_x));
 }
 
 TEST_CASE("rotor sail: thrust and side force along the course, totals over the span", "[app][scene]") {
