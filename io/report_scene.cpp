@@ -13,8 +13,10 @@ namespace magnus {
 
 namespace {
 
+/// A number as {spec} would print it, with −0 printed as 0.
 std::string num(double v, const char* spec = "{:.6g}") { return fmt::format(fmt::runtime(spec), v + 0.0); }
 
+/// One summary line: the label in 15 columns, then the text.
 std::string line(const std::string& label, const std::string& text) { return fmt::format("{:<15}{}\n", label, text); }
 
 /// "Stojković et al. 2002" from a label "viscous, Re = 100 (Stojković et al. 2002)"; else the label.
@@ -25,6 +27,7 @@ std::string who(const std::string& label) {
              : label;
 }
 
+/// An angle in degrees as given: "90°".
 std::string deg(double d) { return num(d, "{:.6g}") + "°"; }
 
 }  // namespace

@@ -6,6 +6,7 @@ namespace magnus {
 
 namespace {
 
+/// v·b, N (or N·m, W); empty without a span or when the product is not finite.
 std::optional<double> times(const std::optional<double>& v, double span) {
   if (!v || span <= 0.0 || !std::isfinite(*v * span)) return std::nullopt;
   return *v * span;
