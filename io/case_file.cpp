@@ -1,7 +1,5 @@
 #include "io/case_file.hpp"
 
-#include "io/case_keys.hpp"
-
 #include <fmt/core.h>
 
 #include <toml++/toml.h>
@@ -10,192 +8,20 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <functional>
-#include <map>
 #include <sstream>
 
+#include "io/case_keys.hpp"
+#include "io/case_reader.hpp"
 #include "io/toml_safe.hpp"
 
 namespace magnus {
 
-using toml_safe::decode_utf8;
 using toml_safe::parse_toml;
 using toml_safe::unshield;
+using case_reader::Reader;
+using case_reader::apply_override;
+using case_reader::reject_unknown_keys;
 
-namespace {
-
-/// Reads typed values from the parsed table, naming origin and key in every error.
-class Reader {
- public:
-  Reader(const toml::table& t, std::string origin) : t_(t), origin_(std::move(origin)) {}
-
-  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
-    throw CaseError(fmt::format("{}: {}: {}", origin_, key, what));
-  }
-
-  const toml::node* find(const std::string& section, const std::string& key) const {
-    if (section.empty()) return t_.get(key);
-    const toml::table* s = t_.get_as<toml::table>(section);
-    return s ? s->get(key) : nullptr;
-  }
-  bool has(const std::string& section, const std::string& key) const { return find(section, key); }
-  /// Fails with "KEY: required key is missing (what)" unless the key is present.
-  void require(const std::string& section, const std::string& key, const char* what) const {
-    if (!has(section, key)) fail(key_name(section, key), fmt::format("required key is missing ({})", what));
-  }
-
-  double number(const std::string& section, const std::string& key, double fallback,
-                const std::function<bool(double)>& ok, const char* range) const {
-    const toml::node* n = find(section, key);
-    if (!n) return fallback;
-    double v;
-    if (auto i = n->as_integer())
-      v = double(i->get());
-    else if (auto f = n->as_floating_point())
-      v = f->get();
-    else
-      fail(key_name(section, key), fmt::format("expected a number, got {}", type_name(*n)));
-    if (!std::isfinite(v)) fail(key_name(section, key), fmt::format("must be finite, got {}", v));
-    if (!ok(v)) fail(key_name(section, key), fmt::format("{} is out of range: must be {}", v, range));
-    return v;
-  }
-
-  long integer(const std::string& section, const std::string& key, long fallback,
-               const std::function<bool(long)>& ok, const char* range) const {
-    const toml::node* n = find(section, key);
-    if (!n) return fallback;
-    const auto i = n->as_integer();
-    if (!i) fail(key_name(section, key), fmt::format("expected an integer, got {}", type_name(*n)));
-    const long v = long(i->get());
-    if (!ok(v)) fail(key_name(section, key), fmt::format("{} is out of range: must be {}", v, range));
-    return v;
-  }
-
-  std::string word(const std::string& section, const std::string& key, const std::string& fallback,
-                   const std::vector<std::string>& allowed = {}) const {
-    const toml::node* n = find(section, key);
-    if (!n) return fallback;
-    const auto s = n->as_string();
-    if (!s) fail(key_name(section, key), fmt::format("expected a string, got {}", type_name(*n)));
-    const std::string v = s->get();
-    if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), v) == allowed.end()) {
-      std::string list;
-      for (const auto& a : allowed) list += (list.empty() ? "\"" : ", \"") + a + "\"";
-      fail(key_name(section, key), fmt::format("\"{}\" is not one of {}", v, list));
-    }
-    return v;
-  }
-
-  std::vector<std::string> words(const std::string& section, const std::string& key) const {
-    const toml::node* n = find(section, key);
-    if (!n) return {};
-    const auto arr = n->as_array();
-    if (!arr)
-      fail(key_name(section, key), fmt::format("expected an array of strings, got {}", type_name(*n)));
-    std::vector<std::string> out;
-    for (const auto& e : *arr) {
-      const auto s = e.as_string();
-      if (!s) fail(key_name(section, key), fmt::format("expected strings, got {}", type_name(e)));
-      out.push_back(s->get());
-    }
-    return out;
-  }
-
-  static const char* type_name(const toml::node& n) {
-    switch (n.type()) {
-      case toml::node_type::string:
-        return "a string";
-      case toml::node_type::integer:
-        return "an integer";
-      case toml::node_type::floating_point:
-        return "a float";
-      case toml::node_type::boolean:
-        return "a boolean";
-      case toml::node_type::array:
-        return "an array";
-      case toml::node_type::table:
-        return "a table";
-      default:
-        return "a date/time";
-    }
-  }
-
- private:
-  const toml::table& t_;
-  std::string origin_;
-};
-
-void reject_unknown_keys(const toml::table& t, const std::string& origin) {
-  const auto& s = case_key_table();
-  for (auto&& [k, v] : t) {
-    const std::string key(k.str());
-    if (v.is_table()) {
-      const auto sec = s.find(key);
-      if (sec == s.end() || key.empty()) {
-        std::string near;
-        for (const auto& [name, keys] : s)
-          if (!name.empty() && edit_distance(name, key) <= 2) near = name;
-        throw CaseError(fmt::format("{}: unknown section [{}]{}", origin, key,
-                                    near.empty() ? "" : fmt::format(" (did you mean [{}]?)", near)));
-      }
-      for (auto&& [k2, v2] : *v.as_table()) {
-        const std::string key2(k2.str());
-        const auto& keys = sec->second;
-        if (std::find(keys.begin(), keys.end(), key2) == keys.end()) {
-          throw CaseError(
-              fmt::format("{}: unknown key {}.{}{}", origin, key, key2, unknown_key_hint(key + "." + key2)));
-        }
-        (void)v2;
-      }
-    } else if (key != "title") {
-      throw CaseError(fmt::format("{}: unknown key {}{}", origin, key, unknown_key_hint(key)));
-    }
-  }
-}
-
-/// s without the spaces and tabs at either end.
-std::string trim(const std::string& s) {
-  const size_t b = s.find_first_not_of(" \t"), e = s.find_last_not_of(" \t");
-  return b == std::string::npos ? "" : s.substr(b, e - b + 1);
-}
-
-void apply_override(toml::table& t, const std::string& spec) {
-  const auto eq = spec.find('=');
-  const std::string path = eq == std::string::npos ? "" : trim(spec.substr(0, eq));
-  if (path.empty()) throw CaseError(fmt::format("--set {}: expected section.key=value", spec));
-  const std::string text = trim(spec.substr(eq + 1));  // spaces around '=' and the key are allowed
-  if (text.empty()) throw CaseError(fmt::format("--set {}: no value", spec));
-  const auto dot = path.find('.');
-  const std::string section = dot == std::string::npos ? "" : path.substr(0, dot);
-  const std::string key = dot == std::string::npos ? path : path.substr(dot + 1);
-  const auto& keys = case_keys();
-  if (std::find(keys.begin(), keys.end(), path) == keys.end()) {
-    throw CaseError(fmt::format("--set {}: unknown key {}{}", spec, path, unknown_key_hint(path)));
-  }
-  toml::table* target = &t;
-  if (!section.empty()) {
-    if (!t.contains(section)) t.insert(section, toml::table{});
-    target = t.get_as<toml::table>(section);
-    if (!target) throw CaseError(fmt::format("--set {}: {} is not a table in the case", spec, section));
-  }
-  // An override of one of a mutually exclusive group replaces the others of its group.
-  if (section == "cylinder" && (key == "spin" || key == "spin_ratio" || key == "rpm"))
-    for (const char* k : {"spin", "spin_ratio", "rpm"}) target->erase(k);
-  if (section == "flow" && (key == "viscosity" || key == "reynolds"))
-    for (const char* k : {"viscosity", "reynolds"}) target->erase(k);
-  try {
-    toml::table parsed = parse_toml("v = " + text, "--set " + spec);
-    target->insert_or_assign(key, parsed["v"]);
-  } catch (const toml::parse_error&) {
-    // A bare word is a string; like every TOML string it must be UTF-8.
-    for (size_t i = 0, len = 0; i < text.size(); i += len)
-      if (decode_utf8(text, i, &len) == 0 && static_cast<unsigned char>(text[i]) >= 0x80)
-        throw CaseError(fmt::format("--set {}: the value is not valid UTF-8", spec));
-    target->insert_or_assign(key, text);
-  }
-}
-
-}  // namespace
 
 Case parse_case(const std::string& toml_text, const std::string& origin,
                 const std::vector<std::string>& overrides) {
@@ -298,7 +124,8 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
       r.fail("cylinder.spin_ratio", "needs flow.speed > 0 (alpha = a*omega/U); give cylinder.spin instead");
     c.scene.spin = alpha * c.scene.speed / c.scene.radius;
   } else if (spin_key == "rpm") {
-    c.scene.spin = r.number("cylinder", "rpm", 0.0, any, "finite (rev/min)") * (2.0 * M_PI / 60.0);
+    c.scene.rpm_given = r.number("cylinder", "rpm", 0.0, any, "finite (rev/min)");
+    c.scene.spin = *c.scene.rpm_given * (2.0 * M_PI / 60.0);
   } else {
     c.scene.spin = r.number("cylinder", "spin", 0.0, any, "finite (rad/s)");  // absent: ω = 0 (model "given")
   }
@@ -318,6 +145,14 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
     r.fail("flow.speed",
            "0 needs a spinning cylinder with model.flow = \"navier-stokes\" (cylinder.spin != 0): in still "
            "fluid nothing else moves");
+  // The scene in the world: where the freestream flows, the ship's course, the span. Angles are taken as
+  // given (not normalised) within one turn either way.
+  auto angle = [](double v) { return v >= -360.0 && v <= 360.0; };
+  c.scene.direction_deg = r.number("flow", "direction", 0.0, angle, "in [-360, 360] (deg, CCW from +x)");
+  if (r.has("flow", "course"))
+    c.scene.course_deg = r.number("flow", "course", 0.0, angle, "in [-360, 360] (deg, CCW from +x)");
+  c.scene.span = r.number(
+      "cylinder", "span", 0.0, [](double v) { return v > 0.0 && v <= 1e6; }, "> 0 and <= 1e6 (m)");
   c.grid.outer_radius = r.number(
       "domain", "outer_radius", ns ? kNsDefaultOuterRadius : c.grid.outer_radius,
       [](double v) { return v > 1.0 && v <= 1e12; }, "> 1 and <= 1e12 (R/a)");
@@ -392,6 +227,16 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
                                           f, to_string(c.model), list));
     }
   }
+  // In a turned world each of u_x, u_y mixes both wind-frame components: they are stored together.
+  if (c.scene.direction_deg != 0.0 && c.output.fields) {
+    const auto& f = *c.output.fields;
+    const bool ux = std::find(f.begin(), f.end(), "u_x") != f.end(),
+               uy = std::find(f.begin(), f.end(), "u_y") != f.end();
+    if (ux != uy)
+      r.fail("output.fields", fmt::format("\"{}\" needs \"{}\" too when flow.direction is not 0 (each mixes "
+                                          "both components of the wind frame)",
+                                          ux ? "u_x" : "u_y", ux ? "u_y" : "u_x"));
+  }
   if (c.solver.stencil == StencilKind::nine_point && c.grid.spacing == Spacing::uniform)
     r.fail("solver.stencil", "\"9-point\" needs grid.spacing = \"geometric\" (uniform in ln r)");
   for (const char* key : {"grid.n_theta", "grid.n_r", "solver.stencil"}) {
@@ -447,9 +292,16 @@ std::string to_toml(const Case& c) {
   const bool ns = c.model == FlowModel::navier_stokes;
   std::string t = fmt::format("title = {}\n", str(c.title));
   if (ns) t += fmt::format("\n[model]\nflow = {}\n", str(to_string(c.model)));
-  t += fmt::format("\n[cylinder]\nradius = {}\nspin = {}\n", num(c.scene.radius), num(c.scene.spin));
-  t += fmt::format("\n[flow]\nspeed = {}\ndensity = {}\npressure = {}\n", num(c.scene.speed),
-                   num(c.scene.density), num(c.scene.pressure_inf));
+  // The spin as given when in rev/min (ω follows from it exactly as on reading), else ω.
+  t += fmt::format("\n[cylinder]\nradius = {}\n", num(c.scene.radius));
+  t += c.scene.rpm_given ? fmt::format("rpm = {}\n", num(*c.scene.rpm_given))
+                         : fmt::format("spin = {}\n", num(c.scene.spin));
+  if (c.scene.span > 0.0) t += fmt::format("span = {}\n", num(c.scene.span));
+  // The world keys only when given (the default direction 0 leaves the text of a plain case as it was).
+  t += fmt::format("\n[flow]\nspeed = {}\n", num(c.scene.speed));
+  if (c.scene.direction_deg != 0.0) t += fmt::format("direction = {}\n", num(c.scene.direction_deg));
+  if (c.scene.course_deg) t += fmt::format("course = {}\n", num(*c.scene.course_deg));
+  t += fmt::format("density = {}\npressure = {}\n", num(c.scene.density), num(c.scene.pressure_inf));
   // The viscosity as given: a given Re stays the input (ν follows U and a), not the ν derived from it.
   if (c.scene.reynolds_given)
     t += fmt::format("reynolds = {}\n", num(c.scene.reynolds_value));

@@ -12,8 +12,8 @@ const std::map<std::string, std::vector<std::string>>& case_key_table() {
   static const std::map<std::string, std::vector<std::string>> s = {
       {"", {"title"}},
       {"model", {"flow"}},
-      {"cylinder", {"radius", "spin", "spin_ratio", "rpm"}},
-      {"flow", {"speed", "density", "pressure", "viscosity", "reynolds"}},
+      {"cylinder", {"radius", "spin", "spin_ratio", "rpm", "span"}},
+      {"flow", {"speed", "direction", "course", "density", "pressure", "viscosity", "reynolds"}},
       {"circulation", {"model", "value"}},
       {"domain", {"outer_radius", "far_field"}},
       {"grid", {"n_theta", "n_r", "spacing", "tolerance"}},
@@ -50,6 +50,13 @@ const std::vector<std::string>& case_keys() {
   return keys;
 }
 
+namespace {
+
+/// Keys one letter apart that mean different things: a typo equally near both is not guessed.
+const std::pair<const char*, const char*> kConfusable[] = {{"cylinder.spin", "cylinder.span"}};
+
+}  // namespace
+
 std::string nearest_key(const std::string& key) {
   // Synonyms of a valid key: the one suggestion that is not a near spelling.
   static const std::map<std::string, std::string> aliases = {{"flow.velocity", "flow.speed"},
@@ -60,13 +67,13 @@ std::string nearest_key(const std::string& key) {
                                                              {"cylinder.a", "cylinder.radius"},
                                                              {"flow.nu", "flow.viscosity"},
                                                              {"flow.re", "flow.reynolds"},
+                                                             {"cylinder.length", "cylinder.span"},
+                                                             {"cylinder.height", "cylinder.span"},
+                                                             {"flow.angle", "flow.direction"},
+                                                             {"flow.heading", "flow.course"},
                                                              {"model", "model.flow"},
                                                              {"flow.model", "model.flow"}};
   if (const auto it = aliases.find(key); it != aliases.end()) return it->second;
-  // Keys of the design (docs/design.md) that mean something else and this version does not read: never
-  // "corrected".
-  for (const char* other : {"cylinder.span", "flow.direction", "flow.course"})
-    if (key == other) return "";
   // The edit distance is at least the difference in length, and no valid key is longer than 24 characters:
   // a key this long is never near one (and a megabyte key would cost seconds).
   if (key.size() > 64) return "";
@@ -89,7 +96,13 @@ std::string nearest_key(const std::string& key) {
     } else {
       d = edit_distance(key, k), len = key.size();
     }
-    if (d <= 2 && 3 * d <= len && d < best_d) best_d = d, best = k;
+    if (d <= 2 && 3 * d <= len && d < best_d) {
+      best_d = d, best = k;
+    } else if (d == best_d && !best.empty()) {
+      // Equally near two keys of different meaning ("cylinder.spen": spin or span?): no guess.
+      for (const auto& [x, y] : kConfusable)
+        if ((best == x && k == y) || (best == y && k == x)) return "";
+    }
   }
   return best;
 }

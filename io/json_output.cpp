@@ -9,6 +9,8 @@
 #include "io/compare.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/inspect.hpp"
+#include "io/json_parts.hpp"
+#include "io/report_scene.hpp"
 #include "io/report_viscous.hpp"
 #include "io/schema.hpp"
 #include "postproc/forces.hpp"
@@ -45,12 +47,19 @@ std::string json_text(const Json& j) {
   return j.dump(2, ' ', false, nlohmann::detail::error_handler_t::replace) + "\n";
 }
 
-namespace {
+namespace json_parts {
 
-/// "/forces" → "forces"; "/" → "" (the top level).
 std::string key_of(const std::string& group) { return group.size() > 1 ? group.substr(1) : std::string(); }
 
-/// A stagnation point: r in m and over a, θ in rad and degrees, on the surface or free.
+Json kj_ratios(std::optional<double> cl, std::optional<double> kj, std::optional<double> seed) {
+  Json d;
+  d["cl_over_kj_minus_1"] =
+      quantity(cl && kj && *kj != 0.0 ? std::optional<double>(*cl / *kj - 1.0) : std::nullopt, "1");
+  d["kj_over_seed"] =
+      quantity(kj && seed && *seed != 0.0 ? std::optional<double>(*kj / *seed) : std::nullopt, "1");
+  return d;
+}
+
 Json point_json(const StagnationPoint& p, double a) {
   Json q;
   q["r"] = quantity(p.r, "m");
@@ -60,6 +69,13 @@ Json point_json(const StagnationPoint& p, double a) {
   q["on_surface"] = p.on_surface;
   return q;
 }
+
+}  // namespace json_parts
+
+namespace {
+
+using json_parts::key_of;
+using json_parts::point_json;
 
 Json points_json(const std::vector<StagnationPoint>& unsorted, double a) {
   Json list = Json::array();
@@ -83,18 +99,35 @@ Json potential_derived(const FlowResult& r, Json& j) {
   if (given)
     d["alpha_circulation"] = quantity(
         moving ? std::optional<double>(sc.Gamma() / (2.0 * M_PI * sc.radius * sc.speed)) : std::nullopt, "1");
-  const auto& kj = f.cl_kutta_joukowski;
-  d["cl_over_kj_minus_1"] =
-      quantity(f.cl && kj && *kj != 0.0 ? std::optional<double>(*f.cl / *kj - 1.0) : std::nullopt, "1");
-  d["kj_over_seed"] = quantity(kj && spinning && f.cl_seed_estimate && *f.cl_seed_estimate != 0.0
-                                   ? std::optional<double>(*kj / *f.cl_seed_estimate)
-                                   : std::nullopt,
-                               "1");
+  // The seed's ratio is undefined without spin (the summary: "undefined (ω = 0)").
+  d.update(json_parts::kj_ratios(f.cl, f.cl_kutta_joukowski, spinning ? f.cl_seed_estimate : std::nullopt));
   d["delta_p_over_seed"] = quantity(
       f.delta_p_seed_estimate != 0.0 ? std::optional<double>(f.delta_p_top_bottom / f.delta_p_seed_estimate)
                                      : std::nullopt,
       "1");
   d["magnus_S_seed"] = quantity(4.0 * sc.density * sc.radius * sc.radius, "kg/m");
+  // Real flow: the Reynolds number when a viscosity is given, and the nearest published viscous figure.
+  if (sc.viscosity > 0.0) {
+    d["viscosity"] = quantity(sc.viscosity, "m^2/s");
+    d["reynolds"] = quantity(moving ? std::optional<double>(sc.reynolds()) : std::nullopt, "1");
+  }
+  if (moving && f.cl) {
+    d["inviscid_upper_bound"] = true;
+    const ViscousReference* ref = shipped_reference();
+    const auto n = ref ? nearest_reference(sc, *ref) : std::nullopt;
+    Json q = nullptr;
+    if (n) {
+      q = Json::object();
+      q["reynolds"] = quantity(n->reynolds, "1");
+      q["alpha"] = quantity(n->alpha, "1");
+      q["cl"] = quantity(n->cl, "1");
+      q["cl_over_ideal"] =
+          quantity(n->alpha != 0.0 ? std::optional<double>(n->cl / (-2.0 * M_PI * n->alpha)) : std::nullopt, "1");
+      q["label"] = n->label;
+      q["source"] = n->source;
+    }
+    d["reference"] = std::move(q);
+  }
   return d;
 }
 
@@ -265,225 +298,6 @@ Json sweep_json(const SweepResult& s, const ViscousReference* ref, const std::ve
   }
   j["output"] = written;
   return j;
-}
-
-// ---------------------------------------------------------------------------------------------
-// files: compare and inspect
-
-namespace {
-
-bool bookkeeping(const std::string& name) {
-  return name == "units" || name == "undefined" || name == "note" || name == "description" ||
-         name == "_FillValue" || (name.size() > 6 && name.compare(name.size() - 6, 6, "_units") == 0);
-}
-
-bool is_viscous(const ResultFile& f) {
-  return f.has_attr("/", "model") && f.attr_string("/", "model") == "navier-stokes";
-}
-
-bool belongs(Models m, const ResultFile& f) {
-  return m == Models::all || (m == Models::viscous) == is_viscous(f);
-}
-
-/// An attribute as stored: text, or a number with its unit (the companion NAME_units, else the schema's).
-Json stored_value(const ResultFile& f, const std::string& obj, const std::string& name) {
-  if (f.attr_is_text(obj, name)) return f.attr_string(obj, name);
-  std::string units;
-  if (f.has_attr(obj, name + "_units") && f.attr_is_text(obj, name + "_units"))
-    units = f.attr_string(obj, name + "_units");
-  else if (const AttrSpec* a = find_attribute(obj, name))
-    units = a->units;
-  const AttrSpec* a = find_attribute(obj, name);
-  if (a && a->kind == AttrKind::integer) return count(f.attr_int(obj, name));
-  return quantity(f.attr_double(obj, name), units);
-}
-
-/// A group of a magnus-flow file: the schema's attributes of the file's model (null where undefined), then
-/// any other attribute the file holds.
-Json group_json(const ResultFile& f, const std::string& group) {
-  Json j = Json::object();
-  if (!f.has(group)) return j;
-  std::set<std::string> shown;
-  for (const AttrSpec& a : result_attributes()) {
-    if (group != a.group || !belongs(a.models, f)) continue;
-    shown.insert(a.name);
-    if (f.has_attr(group, a.name))
-      j[a.name] = stored_value(f, group, a.name);
-    else if (a.kind != AttrKind::text)
-      j[a.name] = quantity(std::nullopt, a.units);
-  }
-  for (const auto& name : f.attributes(group))
-    if (!shown.count(name) && !bookkeeping(name)) j[name] = stored_value(f, group, name);
-  if (group == "/" && j.contains("partial") && j["partial"].is_object())
-    j["partial"] = j["partial"]["value"] == 1.0;
-  return j;
-}
-
-/// The root attributes, the schema groups and (potential flow) the ratios the compare table shows.
-Json flow_groups(const ResultFile& f) {
-  Json j;
-  j["file"] = f.path();
-  const Json root = group_json(f, "/");
-  for (auto it = root.begin(); it != root.end(); ++it) j[it.key()] = it.value();
-  if (!j.contains("model")) j["model"] = "potential";  // version 1 files hold potential flow only
-  for (const char* g : {"/parameters", "/forces", "/errors", "/timing"})
-    if (f.has(g)) j[key_of(g)] = group_json(f, g);
-  if (!is_viscous(f) && j.contains("forces")) {
-    auto value = [&](const char* k) -> std::optional<double> {
-      const Json& q = j["forces"].contains(k) ? j["forces"][k]["value"] : Json(nullptr);
-      return q.is_number() ? std::optional<double>(q.get<double>()) : std::nullopt;
-    };
-    const auto cl = value("cl"), kj = value("cl_kutta_joukowski"), seed = value("cl_seed_estimate");
-    j["derived"]["cl_over_kj_minus_1"] =
-        quantity(cl && kj && *kj != 0.0 ? std::optional<double>(*cl / *kj - 1.0) : std::nullopt, "1");
-    j["derived"]["kj_over_seed"] =
-        quantity(kj && seed && *seed != 0.0 ? std::optional<double>(*kj / *seed) : std::nullopt, "1");
-  }
-  return j;
-}
-
-Json undefined_list(const ResultFile& f, const std::string& obj) {
-  Json list = Json::array();
-  if (!f.has_attr(obj, "undefined")) return list;
-  const std::string s = f.attr_string(obj, "undefined");
-  size_t at = 0;
-  while (at < s.size()) {
-    const size_t comma = std::min(s.find(", ", at), s.size());
-    list.push_back(s.substr(at, comma - at));
-    at = comma + 2;
-  }
-  return list;
-}
-
-Json shape_json(const std::vector<size_t>& shape) {
-  std::vector<double> v(shape.begin(), shape.end());
-  return quantity(v, "1");
-}
-
-Json inspect_flow(const ResultFile& f) {
-  Json j = flow_groups(f);
-  j["format"] = f.format();
-  j["format_version"] = count(f.version());
-  for (const char* g : {"/fields", "/surface"}) j["undefined"][key_of(g)] = undefined_list(f, g);
-  const double a = f.has_attr("/parameters", "radius") ? f.attr_double("/parameters", "radius") : 0.0;
-  if (!is_viscous(f)) {
-    Json st;
-    for (const bool exact : {false, true}) {
-      const std::string sfx = exact ? "_exact" : "";
-      std::vector<double> r, th;
-      if (f.has("/stagnation/r" + sfx) && f.has("/stagnation/theta" + sfx)) {
-        r = f.dataset("/stagnation/r" + sfx);
-        th = f.dataset("/stagnation/theta" + sfx);
-      } else if (f.has(exact ? "/stagnation/exact" : "/stagnation/numeric")) {  // version 1: (k, 2)
-        const auto v = f.dataset(exact ? "/stagnation/exact" : "/stagnation/numeric");
-        for (size_t k = 0; k + 1 < v.size(); k += 2) r.push_back(v[k]), th.push_back(v[k + 1]);
-      }
-      Json list = Json::array();
-      for (size_t k = 0; k < std::min(r.size(), th.size()); ++k)
-        list.push_back(point_json({r[k], th[k], a > 0.0 && std::fabs(r[k] / a - 1.0) < 1e-9}, a));
-      st[exact ? "exact" : "numeric"] = std::move(list);
-    }
-    j["stagnation"] = std::move(st);
-  } else {
-    if (f.has("/separation/theta")) j["separation"] = quantity(f.dataset("/separation/theta"), "rad");
-    Json ts;
-    const double unit =
-        f.has_attr("/parameters", "time_unit") ? f.attr_double("/parameters", "time_unit") : 0.0;
-    auto span = [&](const std::string& path, const char* key) {
-      const std::vector<double> t = f.has(path) ? f.dataset(path) : std::vector<double>();
-      Json q;
-      q["count"] = count(long(t.size()));
-      if (!t.empty()) {
-        q["t"] = quantity(std::vector<double>{t.front(), t.back()}, "s");
-        if (unit > 0.0)
-          q["t_convective"] = quantity(std::vector<double>{t.front() / unit, t.back() / unit}, "1");
-      }
-      ts[key] = std::move(q);
-    };
-    span("/history/t", "history");
-    span("/snapshots/t", "snapshots");
-    j["time_series"] = std::move(ts);
-  }
-  Json ds = Json::array();
-  size_t values = 0, n_datasets = 0;
-  for (const auto& [name, shape] : f.datasets()) {
-    size_t n = 1;
-    for (size_t d : shape) n *= d;
-    values += n;
-    ++n_datasets;
-    if (name.rfind("/mesh/snapshots/", 0) == 0) continue;  // one view per state and field: counted only
-    Json q;
-    q["path"] = name;
-    q["shape"] = shape_json(shape);
-    std::string units = dataset_units(name);
-    if (units.empty() && f.has_attr(name, "units")) units = f.attr_string(name, "units");
-    q["units"] = units;
-    if (const DatasetSpec* d = find_dataset(name)) q["description"] = d->description;
-    ds.push_back(std::move(q));
-  }
-  j["datasets"] = std::move(ds);
-  j["checked"]["datasets"] = count(long(n_datasets));
-  j["checked"]["values"] = count(long(values));
-  return j;
-}
-
-Json inspect_sweep(const ResultFile& f) {
-  Json j;
-  j["file"] = f.path();
-  j["format"] = f.format();
-  j["format_version"] = count(f.version());
-  for (const auto& name : f.attributes("/"))
-    if (!bookkeeping(name) && name != "format" && name != "format_version")
-      j[name] = stored_value(f, "/", name);
-  for (const char* g : {"/parameters", "/timing"}) {
-    if (!f.has(g)) continue;
-    Json q = Json::object();
-    for (const auto& name : f.attributes(g))
-      if (!bookkeeping(name)) q[name] = stored_value(f, g, name);
-    j[key_of(g)] = std::move(q);
-  }
-  Json cols = Json::object();
-  size_t values = 0, n_datasets = 0;
-  for (const auto& [name, shape] : f.datasets()) {
-    std::vector<double> v = f.dataset(name);
-    values += v.size();
-    ++n_datasets;
-    if (f.has_attr(name, "_FillValue")) {
-      const double fv = f.attr_double(name, "_FillValue");
-      for (double& x : v)
-        if (x == fv) x = NAN;  // undefined: null
-    }
-    Json q = quantity(v, f.has_attr(name, "units") ? f.attr_string(name, "units") : "");
-    if (f.has_attr(name, "description")) q["description"] = f.attr_string(name, "description");
-    cols[name.rfind("/sweep/", 0) == 0 ? name.substr(7) : name] = std::move(q);
-  }
-  j["columns"] = std::move(cols);
-  j["undefined"] = undefined_list(f, "/sweep");
-  j["checked"]["datasets"] = count(long(n_datasets));
-  j["checked"]["values"] = count(long(values));
-  return j;
-}
-
-}  // namespace
-
-Json compare_json(const std::vector<std::string>& paths, const Comparison& c) {
-  Json j;
-  j["software_version"] = MAGNUS_VERSION;
-  j["differing"] = c.differing;
-  Json files = Json::array();
-  for (const auto& p : paths) {
-    const ResultFile f(p);
-    files.push_back(flow_groups(f));
-  }
-  j["files"] = std::move(files);
-  return j;
-}
-
-Json inspect_json(const std::string& path) {
-  describe_result(
-      path);  // the checks of the text: a damaged or incomplete file is one line, every value read
-  const ResultFile f(path, {"magnus-flow", "magnus-sweep"});
-  return f.format() == "magnus-sweep" ? inspect_sweep(f) : inspect_flow(f);
 }
 
 }  // namespace magnus

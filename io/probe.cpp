@@ -67,10 +67,14 @@ ProbeTable probe_file(const std::string& path, const std::vector<std::pair<doubl
   };
   const auto ux = field("u_x", true), uy = field("u_y", true), p = field("pressure", true),
              cp = field("cp", false);
+  // The grid is the wind frame, the points and the stored u_x, u_y the world's (turned by flow.direction).
+  const double beta = f.has_attr("/parameters", "direction") ? f.attr_double("/parameters", "direction") : 0.0;
   for (const auto& [x, y] : points) {
-    const ProbeStencil s = probe_stencil(g, x, y, t.points);
+    const WorldForce w = rotate_deg(x, y, -beta);
+    const ProbeStencil s = probe_stencil(g, w.x, w.y, t.points);
     ProbeSample q;
-    q.x = x, q.y = y, q.r = s.r, q.theta = s.theta;
+    q.x = x, q.y = y, q.r = s.r, q.theta = beta == 0.0 ? s.theta : std::atan2(y, x);
+    if (q.theta < 0.0) q.theta += 2.0 * M_PI;
     q.u_x = probe_value(s, ux, g.n_theta);
     q.u_y = probe_value(s, uy, g.n_theta);
     q.pressure = probe_value(s, p, g.n_theta);

@@ -6,6 +6,7 @@
 
 #include "io/finite.hpp"
 #include "io/hdf5_io.hpp"
+#include "io/report_scene.hpp"
 #include "io/report_viscous.hpp"
 #include "io/text_format.hpp"
 #include "postproc/forces.hpp"
@@ -70,8 +71,11 @@ std::string summary_text(const FlowResult& r, const std::string& output_path) {
   if (given && moving)
     alpha += fmt::format(", α_Γ = Γ/(2πaU) = {} (the given Γ sets the flow)",
                          num(sc.Gamma() / (2.0 * M_PI * sc.radius * sc.speed)));
-  line("case", fmt::format("a = {} m, ω = {} rad/s, U = {} m/s, α = aω/U = {}, ρ = {} kg/m³", num(sc.radius),
-                           num(sc.spin), num(sc.speed), alpha, num(sc.density)));
+  // The spin as given: in rev/min beside ω when cylinder.rpm set it.
+  line("case", fmt::format("a = {} m, ω = {} rad/s{}, U = {} m/s, α = aω/U = {}, ρ = {} kg/m³", num(sc.radius),
+                           num(sc.spin), sc.rpm_given ? fmt::format(" ({} rpm)", num(*sc.rpm_given)) : "",
+                           num(sc.speed), alpha, num(sc.density)));
+  s += reynolds_line(sc);
   line("circulation", fmt::format("Γ = {} m²/s ({})", num(sc.Gamma(), "{:.8g}"),
                                   given ? "given, not from the spin" : "spin model, Γ = 2πa²ω"));
   const double R = g.outer_radius() / g.a;
@@ -129,6 +133,8 @@ std::string summary_text(const FlowResult& r, const std::string& output_path) {
                                s_exact, num(4.0 * sc.density * sc.radius * sc.radius, "{:.8g}")));
   line("stagnation", "numeric " + numeric_points(r));
   line("", "exact   " + points(r.stagnation_exact, sc.radius));
+  s += scene_lines(r);
+  s += inviscid_bound_lines(r);
   s += "\n";
   line("errors",
        fmt::format("ψ max rel {}   Cp surface max abs {}   C_L rel {}   Γ rel {}",

@@ -88,5 +88,8 @@ inline AttrSpec vlast(const char* name, const char* units, const char* descripti
 
 /// The navier-stokes model's attributes (parameters, means and parts of the forces, run facts).
 std::vector<AttrSpec> viscous_attributes();
+/// The scene's world placement and engineering forces (io/schema_scene.cpp): rpm, direction, course, span,
+/// thrust, side force and the totals over the span.
+std::vector<AttrSpec> scene_attributes();
 
 }  // namespace magnus::schema_build

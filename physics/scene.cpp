@@ -17,6 +17,41 @@ double Scene::reynolds() const { return viscosity > 0.0 ? speed * 2.0 * radius /
 
 double Scene::reference_speed() const { return speed > 0.0 ? speed : radius * std::fabs(spin); }
 
+double Scene::rpm() const { return spin * 60.0 / (2.0 * M_PI); }
+
+namespace {
+
+/// cos and sin of an angle in degrees, exact at multiples of 90° (cos 90° is 0, not 6e-17).
+void cos_sin_deg(double deg, double& c, double& s) {
+  const double q = std::fmod(deg, 360.0);
+  const double k = q / 90.0;
+  if (k == std::floor(k)) {
+    const int n = (int(k) % 4 + 4) % 4;
+    c = n == 0 ? 1.0 : n == 2 ? -1.0 : 0.0;
+    s = n == 1 ? 1.0 : n == 3 ? -1.0 : 0.0;
+    return;
+  }
+  const double rad = q * M_PI / 180.0;
+  c = std::cos(rad), s = std::sin(rad);
+}
+
+}  // namespace
+
+WorldForce rotate_deg(double x, double y, double deg) {
+  double c, s;
+  cos_sin_deg(deg, c, s);
+  return {x * c - y * s, x * s + y * c};
+}
+
+WorldForce world_force(double drag, double lift, double direction_deg) {
+  return rotate_deg(drag, lift, direction_deg);
+}
+
+CourseForce course_force(double drag, double lift, double direction_deg, double course_deg) {
+  const WorldForce f = rotate_deg(drag, lift, direction_deg - course_deg);  // in the course's frame
+  return {f.x, f.y};
+}
+
 std::optional<Overflow> find_overflow(const Scene& s, double outer_radius, const SceneKeys& k) {
   const double a = s.radius, U = s.speed, rho = s.density, w = s.spin, G = s.Gamma(), p = s.pressure_inf;
   struct Factor {
@@ -62,6 +97,8 @@ std::optional<Overflow> find_overflow(const Scene& s, double outer_radius, const
                         s.reference_speed() * 2.0 * a / s.viscosity,
                         U > 0.0 ? std::vector<Factor>{fU, fa, {&k.viscosity, s.viscosity}}
                                 : std::vector<Factor>{fa, fw, {&k.viscosity, s.viscosity}});
+  if (s.span > 0.0)
+    checks.emplace_back("the total lift ρUΓ·b", rho * U * G * s.span, with({frho, fU, {&k.span, s.span}}, gamma));
   for (const auto& [quantity, value, factors] : checks) {
     bool inputs_nonzero = true;
     for (const auto& f : factors) inputs_nonzero = inputs_nonzero && f.value != 0.0;

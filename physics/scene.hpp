@@ -20,7 +20,8 @@ enum class FlowModel { potential, navier_stokes };
 /// periodic means).
 enum class TimeMode { automatic, steady, unsteady };
 
-/// The physical scene: a cylinder of radius a spinning at ω in a freestream U towards +x.
+/// The physical scene: a cylinder of radius a spinning at ω in a freestream U. The solve is done in the wind
+/// frame (freestream towards +x'); the world frame is the wind frame turned CCW by the direction β.
 struct Scene {
   double radius = 0.1;             ///< a, m
   double spin = 100.0;             ///< ω, rad/s, CCW positive
@@ -32,6 +33,10 @@ struct Scene {
   double viscosity = 0.0;          ///< ν, m^2/s (kinematic); 0: not given (potential flow only)
   bool reynolds_given = false;  ///< flow.reynolds was given: ν = U·2a/Re (else flow.viscosity or neither)
   double reynolds_value = 0.0;  ///< Re as given in flow.reynolds (echoed as given), else 0
+  double direction_deg = 0.0;   ///< β, deg CCW from +x: the world direction the freestream flows towards
+  std::optional<double> course_deg;  ///< c, deg CCW from +x: the way the ship moves (rotor sail); absent: none
+  double span = 0.0;                 ///< b, m: the cylinder's length for total forces; 0: not given
+  std::optional<double> rpm_given;   ///< cylinder.rpm as given, rev/min (echoed as given); absent: not rpm
 
   /// Γ = 2πa²ω (spin model) or the given value, m^2/s.
   double Gamma() const;
@@ -42,7 +47,27 @@ struct Scene {
   /// The reference speed of the time unit and the coefficients' dynamic pressure: U, or the wall speed
   /// a|ω| when U = 0 (a spinning cylinder in still fluid), m/s.
   double reference_speed() const;
+  /// The spin in revolutions per minute, ω·60/(2π), 1/min.
+  double rpm() const;
 };
+
+/// A force per unit span (drag D along the freestream, lift L across it, CCW of it) in the world frame:
+/// F_x = D cos β − L sin β, F_y = D sin β + L cos β (β = direction), N/m.
+struct WorldForce {
+  double x = 0.0, y = 0.0;  ///< N/m
+};
+WorldForce world_force(double drag, double lift, double direction_deg);
+
+/// A rotor sail's forces per unit span along its course c: thrust T = F·ĉ = D cos φ − L sin φ (positive
+/// ahead) and side force S = F·(ẑ × ĉ) = D sin φ + L cos φ (positive to port, i.e. CCW of the course),
+/// φ = β − c the freestream's angle from the course, N/m.
+struct CourseForce {
+  double thrust = 0.0, side = 0.0;  ///< N/m
+};
+CourseForce course_force(double drag, double lift, double direction_deg, double course_deg);
+
+/// (x, y) turned CCW by `deg` degrees: (x cos − y sin, x sin + y cos); exact for multiples of 90°.
+WorldForce rotate_deg(double x, double y, double deg);
 
 /// The grid asked for: the domain, the spacing and the resolution (or a tolerance that picks it).
 struct GridRequest {
@@ -110,7 +135,7 @@ struct Overflow {
 struct SceneKeys {
   std::string radius = "cylinder.radius", spin = "cylinder.spin", speed = "flow.speed",
               density = "flow.density", pressure = "flow.pressure", circulation = "circulation.value",
-              viscosity = "flow.viscosity", reynolds = "flow.reynolds";
+              viscosity = "flow.viscosity", reynolds = "flow.reynolds", span = "cylinder.span";
   double spin_value = 0.0;  ///< the value given for `spin` in its own units (α, rev/min); 0: ω itself
 };
 
@@ -118,7 +143,7 @@ struct SceneKeys {
 /// 2πρa², the surface speed 2U + |Γ|/(2πa) and pressure p∞ ± ½ρ(2U + |Γ|/(2πa))², and ψ(R) ≈ U·R +
 /// |Γ|/(2π)·ln(R/a) (R = outer_radius·a), C_L = −Γ/(Ua), the free stagnation radius |Γ|/(2πU) and, when a
 /// viscosity is given, ν = U·2a/Re (from flow.reynolds) or the Reynolds number U_ref·2a/ν (from
-/// flow.viscosity, U_ref = reference_speed()) that is not finite, or that a product of non-zero inputs
+/// flow.viscosity, U_ref = reference_speed()), and with a span b the total lift ρUΓ·b, that is not finite, or that a product of non-zero inputs
 /// underflows below the smallest normal double; empty if none.
 std::optional<Overflow> find_overflow(const Scene& s, double outer_radius, const SceneKeys& keys = {});
 

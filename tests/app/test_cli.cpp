@@ -224,7 +224,10 @@ std::string expect_problem(const toml::table& ex) {
                                                  "stagnation_deg",
                                                  "stagnation_tol_deg",
                                                  "stagnation_free_r_over_a",
-                                                 "stagnation_r_rel_tol"};
+                                                 "stagnation_r_rel_tol",
+                                                 "thrust_total",
+                                                 "thrust_total_rel_max",
+                                                 "side_force_total_abs_max"};
   for (auto&& [k, v] : ex) {
     (void)v;
     if (std::find(known.begin(), known.end(), std::string(k.str())) == known.end())
@@ -253,6 +256,11 @@ std::string expect_problem(const toml::table& ex) {
     return "circulation needs exactly one of circulation_rel_max, circulation_abs_max";
   if (has("stagnation_free_r_over_a") != has("stagnation_r_rel_tol"))
     return "stagnation_free_r_over_a and stagnation_r_rel_tol go together";
+  // A rotor sail (cylinder.span and flow.course): its thrust over the span, N.
+  if (has("thrust_total") != has("thrust_total_rel_max") || has("thrust_total") != has("side_force_total_abs_max"))
+    return "thrust_total, thrust_total_rel_max and side_force_total_abs_max go together";
+  for (const char* k : {"thrust_total", "thrust_total_rel_max", "side_force_total_abs_max"})
+    if (has(k) && !number(k)) return std::string(k) + " must be a number";
   return "";
 }
 
@@ -337,6 +345,12 @@ TEST_CASE("every shipped case runs and meets the expected figures beside it", "[
         for (size_t k = 0; k < n_points; ++k)
           found = found || near(st_theta[k] * 180 / M_PI, *d.value<double>());
         REQUIRE(found);
+      }
+      if (ex.contains("thrust_total")) {
+        CAPTURE(f.attr_double("/forces", "thrust_total"));
+        REQUIRE(std::fabs(f.attr_double("/forces", "thrust_total") / num("thrust_total") - 1) <=
+                num("thrust_total_rel_max"));
+        REQUIRE(std::fabs(f.attr_double("/forces", "side_force_total")) <= num("side_force_total_abs_max"));
       }
       if (ex.contains("stagnation_free_r_over_a")) {
         REQUIRE(n_points == 1);

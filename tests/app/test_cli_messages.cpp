@@ -139,10 +139,10 @@ TEST_CASE("command-line messages: one exact line each, with the exit status", "[
       {{"run", demo, "--set", "flow.velocity=2", "-o", dir + "/r.h5"},
        1,
        "magnus: error: --set flow.velocity=2: unknown key flow.velocity (did you mean flow.speed?)\n"},
-      {{"run", demo, "--set", "cylinder.span=2", "-o", dir + "/r.h5"},
+      {{"run", demo, "--set", "cylinder.spen=2", "-o", dir + "/r.h5"},
        1,
-       "magnus: error: --set cylinder.span=2: unknown key cylinder.span (keys of [cylinder]: radius, spin, "
-       "spin_ratio, rpm)\n"},
+       "magnus: error: --set cylinder.spen=2: unknown key cylinder.spen (keys of [cylinder]: radius, spin, "
+       "spin_ratio, rpm, span)\n"},
       {{"run", demo, "--set", "flow.sped=2", "-o", dir + "/r.h5"},
        1,
        "magnus: error: --set flow.sped=2: unknown key flow.sped (did you mean flow.speed?)\n"},

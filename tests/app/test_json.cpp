@@ -19,8 +19,8 @@ using nlohmann::json;
 namespace {
 
 const std::string kPotentialCase =
-    "title = \"json test\"\n[cylinder]\nradius = 0.1\nspin_ratio = 1.0\n[flow]\nspeed = 10.0\n"
-    "[grid]\nn_theta = 32\n";
+    "title = \"json test\"\n[cylinder]\nradius = 0.1\nspin_ratio = 1.0\nspan = 2.0\n[flow]\nspeed = 10.0\n"
+    "direction = 30.0\ncourse = -20.0\nviscosity = 1e-3\n[grid]\nn_theta = 32\n";
 
 /// The coarse navier-stokes case of test_ns_run.cpp (a = 0.5 m, U = 1 m/s; well under a second).
 std::string ns_case(double Re, double alpha, double t_end) {
@@ -100,8 +100,14 @@ const std::map<std::string, std::vector<std::string>> kSummaryToJson = {
     // both models
     {"<title>", {"/software_version", "/title"}},
     {"case",
-     {"/parameters/radius", "/parameters/spin", "/parameters/speed", "/parameters/spin_ratio",
+     {"/parameters/radius", "/parameters/spin", "/parameters/rpm", "/parameters/speed", "/parameters/spin_ratio",
       "/parameters/density"}},
+    {"direction", {"/parameters/direction"}},
+    {"course", {"/parameters/course", "/forces/thrust", "/forces/side_force"}},
+    {"span",
+     {"/parameters/span", "/forces/lift_total", "/forces/drag_total", "/forces/thrust_total",
+      "/forces/side_force_total"}},
+    {"span+", {"/forces/torque_total", "/forces/spin_power_total"}},
     {"grid",
      {"/parameters/n_theta", "/parameters/n_r", "/derived/nodes", "/parameters/spacing",
       "/parameters/outer_radius", "/parameters/outer_radius_requested"}},
@@ -126,6 +132,9 @@ const std::map<std::string, std::vector<std::string>> kSummaryToJson = {
     {"errors",
      {"/errors/psi_max_rel", "/errors/cp_surface_max_abs", "/errors/cl_rel", "/errors/circulation_rel"}},
     {"errors+", {"/errors/cl_rel_estimated"}},
+    {"Reynolds", {"/derived/reynolds", "/derived/viscosity"}},
+    {"ideal", {"/derived/inviscid_upper_bound"}},
+    {"ideal+", {"/derived/reference"}},
     // navier-stokes
     {"case+", {"/parameters/viscosity", "/parameters/reynolds"}},
     {"model", {"/model"}},

@@ -1,0 +1,20 @@
+#pragma once
+// Pieces the --json outputs share (io/json_output.cpp, io/json_output_files.cpp). Internal to io/.
+#include <optional>
+#include <string>
+
+#include "io/json_output.hpp"
+
+namespace magnus::json_parts {
+
+/// "/forces" → "forces"; "/" → "" (the top level).
+std::string key_of(const std::string& group);
+
+/// cl_over_kj_minus_1 = C_L/C_L,KJ − 1 and kj_over_seed = C_L,KJ/C_L,seed (each null when an input is
+/// undefined or a divisor is 0): the ratios the run summary and the compare table show.
+Json kj_ratios(std::optional<double> cl, std::optional<double> kj, std::optional<double> seed);
+
+/// A stagnation point: r in m and over a, θ in rad and degrees, on the surface or free.
+Json point_json(const StagnationPoint& p, double a);
+
+}  // namespace magnus::json_parts
