@@ -12,6 +12,7 @@
 #include "io/json_parts.hpp"
 #include "io/report_scene.hpp"
 #include "io/report_viscous.hpp"
+#include "io/rotor_data.hpp"
 #include "io/schema.hpp"
 #include "postproc/forces.hpp"
 
@@ -84,6 +85,29 @@ Json points_json(const std::vector<StagnationPoint>& unsorted, double a) {
 }
 
 /// The figures the potential summary derives from the stored ones.
+/// A rotor's published data at the scene's α (the summary's "rotor data" block): each dataset's |C_L| and C_D
+/// (null outside its α range or without drag), its Re and whether it fits the scene's (null: no viscosity).
+Json rotor_data_json(const Scene& sc) {
+  const RotorData* data = shipped_rotor_data();
+  if (!data) return nullptr;
+  const double re = sc.viscosity > 0.0 ? sc.reynolds() : 0.0;
+  Json rows = Json::array();
+  for (const auto& d : data->datasets) {
+    const auto v = rotor_value(d, std::fabs(sc.spin_ratio()));
+    Json q;
+    q["id"] = d.id;
+    q["label"] = d.label;
+    q["citation"] = d.citation;
+    q["method"] = d.method;
+    q["reynolds"] = rotor_reynolds_text(d);
+    q["fits_reynolds"] = re > 0.0 ? Json(rotor_fits_reynolds(d, re)) : Json(nullptr);
+    q["cl_magnitude"] = quantity(v ? std::optional<double>(std::fabs(v->cl)) : std::nullopt, "1");
+    q["cd"] = quantity(v ? v->cd : std::nullopt, "1");
+    rows.push_back(std::move(q));
+  }
+  return rows;
+}
+
 Json potential_derived(const FlowResult& r, Json& j) {
   const Scene& sc = r.c.scene;
   const Forces& f = r.forces;
@@ -128,6 +152,7 @@ Json potential_derived(const FlowResult& r, Json& j) {
     }
     d["reference"] = std::move(q);
   }
+  if (moving && sc.span > 0.0) d["rotor_data"] = rotor_data_json(sc);
   return d;
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "io/reference_file.hpp"
+#include "io/rotor_data.hpp"
 #include "io/report.hpp"
 #include "io/scene_forces.hpp"
 
@@ -129,7 +130,21 @@ std::string inviscid_bound_lines(const FlowResult& r) {
     s += line("", fmt::format("viscous reference: none within Δα = {} of α = {} (tabulated: |α| ≤ {} at Re = {})",
                               kReferenceAlphaReach, num(sc.spin_ratio(), "{:.4g}"), num(amax), res));
   }
-  return s;
+  return s + rotor_lines(sc);
+}
+
+std::string rotor_lines(const Scene& sc) {
+  if (!(sc.span > 0.0) || sc.speed <= 0.0) return "";
+  const RotorData* data = shipped_rotor_data();
+  if (!data) return "\n" + line("rotor data", "cannot be read: " + rotor_data_error());
+  const double re = sc.viscosity > 0.0 ? sc.reynolds() : 0.0;
+  // The block's heading goes on the "rotor data" label; its lines are indented under it.
+  const std::string block = rotor_comparison_text(*data, re, sc.spin_ratio(), sc.span / (2.0 * sc.radius));
+  std::string out;
+  size_t start = 0;
+  for (size_t end; (end = block.find('\n', start)) != std::string::npos; start = end + 1)
+    out += line(start == 0 ? "rotor data" : "", block.substr(start, end - start));
+  return out;
 }
 
 }  // namespace magnus

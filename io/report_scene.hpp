@@ -45,4 +45,9 @@ std::string reynolds_line(const Scene& sc);
 /// and the Re it holds for (or why there is none); "" when U = 0.
 std::string inviscid_bound_lines(const FlowResult& r);
 
+/// A rotor (a scene with cylinder.span): the ideal, the 2D viscous model and the published rotor data at the
+/// scene's α side by side, with what each is good for (rotor_comparison_text, aspect ratio span/D); "" without
+/// a span or with U = 0.
+std::string rotor_lines(const Scene& sc);
+
 }  // namespace magnus

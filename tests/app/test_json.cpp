@@ -135,6 +135,8 @@ const std::map<std::string, std::vector<std::string>> kSummaryToJson = {
     {"Reynolds", {"/derived/reynolds", "/derived/viscosity"}},
     {"ideal", {"/derived/inviscid_upper_bound"}},
     {"ideal+", {"/derived/reference"}},
+    {"rotor data", {"/derived/rotor_data"}},
+    {"rotor data+", {"/derived/rotor_data"}},
     // navier-stokes
     {"case+", {"/parameters/viscosity", "/parameters/reynolds"}},
     {"model", {"/model"}},
