@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "io/case_file.hpp"
@@ -114,4 +115,24 @@ TEST_CASE("shard rows interleave and bad shards are refused in one line", "[cont
   CHECK_THROWS_WITH(shard_rows(3, 0, 2), "--shard 0/2: K/N needs 1 ≤ K ≤ N");
   CHECK_THROWS_WITH(shard_rows(3, 3, 2), "--shard 3/2: K/N needs 1 ≤ K ≤ N");
   CHECK_THROWS_WITH(shard_rows(2, 1, 3), Catch::Contains("at most 2 shards"));
+}
+
+TEST_CASE("the marching stability test: stable at Re 20, unstable at Re 100 without spin, stable at α = 2.5",
+          "[continuation]") {
+  // Known regimes: a steady wake up to Re ≈ 47 at α = 0; vortex shedding at Re 100 for α below ≈ 1.9
+  // (Stojković et al. 2002: steady at α = 2).
+  for (auto [re, alpha, expect] : {std::tuple{20.0, 0.0, true}, std::tuple{100.0, 0.0, false},
+                                   std::tuple{100.0, 2.5, true}}) {
+    INFO("Re " << re << " alpha " << alpha);
+    const Case c = coarse_case(re);
+    const NsParams p = ns_params(map_point_case(c, re, alpha));
+    const PolarGrid g = ns_grid(p);
+    NsMapOptions o;
+    o.alphas = {alpha};
+    const NewtonResult r = solve_steady(p, potential_guess(p, g));
+    REQUIRE(r.converged);
+    const std::optional<bool> s = stability_by_marching(p, r.state);
+    REQUIRE(s.has_value());
+    CHECK(*s == expect);
+  }
 }
