@@ -112,7 +112,7 @@ std::string ns_map_table(const NsMap& m) {
 std::string ns_map_csv(const NsMap& m) {
   std::string t;
   for (const auto& c : columns())
-    t += (t.empty() ? "" : ",") + std::string(c.name) + (std::string(c.units) == "1" ? "" : std::string(" (") + c.units + ")");
+    t += (t.empty() ? "" : ",") + std::string(c.name) + (std::string(c.units) == "1" ? "" : std::string("_") + c.units);
   t += "\n";
   for (const auto& p : m.points) {
     std::string line;
