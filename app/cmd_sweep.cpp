@@ -108,9 +108,9 @@ void command_sweep(const SweepOptions& o) {
       throw std::runtime_error("--circulation: a navier-stokes sweep varies the spin ratio (--spin-ratio)");
     return command_ns_sweep(o, c, range);
   }
-  for (const auto* opt : {&o.reynolds, &o.shard})
-    if (!opt->empty())
-      throw std::runtime_error(fmt::format("{}: --reynolds and --shard need a navier-stokes case", o.case_path));
+  if (!o.reynolds.empty() || !o.shard.empty() || o.steady_only)
+    throw std::runtime_error(
+        fmt::format("{}: --reynolds, --shard and --steady-only need a navier-stokes case", o.case_path));
   if (o.json && is_stdout(o.csv))
     throw std::runtime_error("--json and --csv -: both would go to standard output; name a file for one");
   // Fail before solving, not after.

@@ -46,6 +46,10 @@ TEST_CASE("navier-stokes sweep: shards merged equal the unsharded map exactly", 
   REQUIRE(magnus_cmd(with({"-o", dir + "/s2.h5", "--shard", "2/2"}), dir).status == 0);
   o = magnus_cmd({"merge", dir + "/m.h5", dir + "/s2.h5", dir + "/s1.h5"}, dir);
   REQUIRE(o.status == 0);
+  // magnus plot draws a merged map as S/(2πρa²) per Re.
+  fs::create_directories(dir + "/png");
+  REQUIRE(magnus_cmd({"plot", dir + "/m.h5", "-o", dir + "/png"}, dir).status == 0);
+  CHECK(fs::file_size(dir + "/png/m_s_map.png") > 10000);
   const NsMap all = read_ns_map_hdf5(dir + "/all.h5"), merged = read_ns_map_hdf5(dir + "/m.h5");
   CHECK(merged.shard == 1);
   CHECK(merged.shards == 1);
