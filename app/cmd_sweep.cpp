@@ -58,7 +58,8 @@ void command_ns_sweep(const SweepOptions& o, const Case& c, const SweepRange& al
   // Bad shards fail before any solve.
   shard_rows(mo.reynolds.empty() ? 1 : int(mo.reynolds.size()), mo.shard, mo.shards);
   if (o.json) throw std::runtime_error("--json: not available for a navier-stokes sweep (use --csv -)");
-  if (!o.quiet && is_stdout(o.csv)) throw std::runtime_error("--csv -: add -q (the table also goes to standard output)");
+  if (!o.quiet && is_stdout(o.csv))
+    throw std::runtime_error("--csv -: add -q (the table also goes to standard output)");
   check_distinct_paths({o.case_path}, {o.csv, o.output, o.plot});
   for (const std::string* p : {&o.csv, &o.output, &o.plot})
     if (!p->empty()) check_writable(*p);
@@ -70,7 +71,8 @@ void command_ns_sweep(const SweepOptions& o, const Case& c, const SweepRange& al
     mo.on_point = [](const NsMapPoint& p) {
       std::fprintf(stderr, "magnus: Re %g, α %.4g: %s%s (%.2f s)\n", p.reynolds, p.alpha,
                    p.converged ? "steady" : (p.fold ? "fold" : "no steady state"),
-                   p.source == MapSource::steady || p.source == MapSource::none ? "" : ", time-averaged", p.seconds);
+                   p.source == MapSource::steady || p.source == MapSource::none ? "" : ", time-averaged",
+                   p.seconds);
     };
   const NsMap m = ns_map(c, mo);
   if (!o.csv.empty()) write_text_output(o.csv, ns_map_csv(m));
@@ -191,7 +193,10 @@ void add_sweep_command(CLI::App& app) {
   sweep->add_option("-o,--output", o->output, "write the table as HDF5 (format magnus-sweep)");
   sweep->add_option("--plot", o->plot, "draw C_L(α) as PNG");
   sweep->add_option("--size", o->size, "PNG size WxH in pixels (default 1000x800)");
-  sweep->add_option("--threads", o->threads, "threads for the solver (navier-stokes: Re rows computed at once)")->check(CLI::Range(1, 64));
+  sweep
+      ->add_option("--threads", o->threads,
+                   "threads for the solver (navier-stokes: Re rows computed at once)")
+      ->check(CLI::Range(1, 64));
   auto* quiet = sweep->add_flag("-q,--quiet", o->quiet, "print nothing on success");
   sweep
       ->add_flag("--json", o->json,

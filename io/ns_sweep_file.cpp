@@ -31,10 +31,10 @@ struct Column {
   std::function<void(NsMapPoint&, double)> set;
 };
 
-#define NS_COL(NAME, UNITS, WHAT, FIELD)                                             \
-  Column {                                                                           \
-    NAME, UNITS, WHAT, [](const NsMapPoint& p) { return double(p.FIELD); },          \
-        [](NsMapPoint& p, double v) { p.FIELD = decltype(p.FIELD)(v); }              \
+#define NS_COL(NAME, UNITS, WHAT, FIELD)                                    \
+  Column {                                                                  \
+    NAME, UNITS, WHAT, [](const NsMapPoint& p) { return double(p.FIELD); }, \
+        [](NsMapPoint& p, double v) { p.FIELD = decltype(p.FIELD)(v); }     \
   }
 
 const std::vector<Column>& columns() {
@@ -78,10 +78,14 @@ std::string stable_text(const NsMapPoint& p) { return p.stable ? (*p.stable ? "y
 
 std::string source_short(MapSource s) {
   switch (s) {
-    case MapSource::steady: return "steady";
-    case MapSource::averaged_unstable: return "mean (unstable)";
-    case MapSource::averaged_no_steady: return "mean (no steady)";
-    case MapSource::none: break;
+    case MapSource::steady:
+      return "steady";
+    case MapSource::averaged_unstable:
+      return "mean (unstable)";
+    case MapSource::averaged_no_steady:
+      return "mean (no steady)";
+    case MapSource::none:
+      break;
   }
   return "—";
 }
@@ -112,7 +116,8 @@ std::string ns_map_table(const NsMap& m) {
 std::string ns_map_csv(const NsMap& m) {
   std::string t;
   for (const auto& c : columns())
-    t += (t.empty() ? "" : ",") + std::string(c.name) + (std::string(c.units) == "1" ? "" : std::string("_") + c.units);
+    t += (t.empty() ? "" : ",") + std::string(c.name) +
+         (std::string(c.units) == "1" ? "" : std::string("_") + c.units);
   t += "\n";
   for (const auto& p : m.points) {
     std::string line;
@@ -206,7 +211,8 @@ NsMap read_ns_map_hdf5(const std::string& path) {
     const std::string name = std::string("/sweep/") + c.name;
     if (!f.has(name)) throw std::runtime_error(fmt::format("{}: no dataset {}", path, name));
     const std::vector<double> v = f.dataset(name);
-    if (v.size() != n) throw std::runtime_error(fmt::format("{}: {} has {} values, not {}", path, name, v.size(), n));
+    if (v.size() != n)
+      throw std::runtime_error(fmt::format("{}: {} has {} values, not {}", path, name, v.size(), n));
     for (size_t i = 0; i < n; ++i) c.set(m.points[i], v[i] == kFill ? kNaN : v[i]);
   }
   return m;
@@ -222,27 +228,28 @@ NsMap merge_ns_maps(const std::vector<NsMap>& shards, const std::vector<std::str
     if (s.base.source_text != a.base.source_text)
       throw std::runtime_error(fmt::format("merge: {} and {} come from different cases", paths[0], name));
     if (s.n_theta != a.n_theta || s.n_r != a.n_r || s.outer_over_a != a.outer_over_a)
-      throw std::runtime_error(fmt::format("merge: {} ({} × {}, R/a {:g}) and {} ({} × {}, R/a {:g}) have different grids",
-                                           paths[0], a.n_theta, a.n_r, a.outer_over_a, name, s.n_theta, s.n_r,
-                                           s.outer_over_a));
+      throw std::runtime_error(
+          fmt::format("merge: {} ({} × {}, R/a {:g}) and {} ({} × {}, R/a {:g}) have different grids",
+                      paths[0], a.n_theta, a.n_r, a.outer_over_a, name, s.n_theta, s.n_r, s.outer_over_a));
     if (s.alphas != a.alphas || s.reynolds != a.reynolds)
       throw std::runtime_error(fmt::format("merge: {} and {} map different α or Re values", paths[0], name));
     if (s.shards != a.shards)
-      throw std::runtime_error(fmt::format("merge: {} is shard {}/{} but {} is shard {}/{}", paths[0], a.shard,
-                                           a.shards, name, s.shard, s.shards));
+      throw std::runtime_error(fmt::format("merge: {} is shard {}/{} but {} is shard {}/{}", paths[0],
+                                           a.shard, a.shards, name, s.shard, s.shards));
     if (auto it = seen.find(s.shard); it != seen.end())
-      throw std::runtime_error(fmt::format("merge: {} and {} are both shard {}/{} (overlapping)", paths[it->second],
-                                           name, s.shard, s.shards));
+      throw std::runtime_error(fmt::format("merge: {} and {} are both shard {}/{} (overlapping)",
+                                           paths[it->second], name, s.shard, s.shards));
     seen[s.shard] = i;
     // Complete within itself: exactly its rows, every α.
     std::vector<int> rows = shard_rows(int(s.reynolds.size()), s.shard, s.shards);
     if (s.points.size() != rows.size() * s.alphas.size())
-      throw std::runtime_error(fmt::format("merge: {} (shard {}/{}) holds {} points, not {}: incomplete", name,
-                                           s.shard, s.shards, s.points.size(), rows.size() * s.alphas.size()));
+      throw std::runtime_error(fmt::format("merge: {} (shard {}/{}) holds {} points, not {}: incomplete",
+                                           name, s.shard, s.shards, s.points.size(),
+                                           rows.size() * s.alphas.size()));
     for (size_t q = 0; q < s.points.size(); ++q)
       if (s.points[q].row != rows[q / s.alphas.size()] || s.points[q].column != int(q % s.alphas.size()))
-        throw std::runtime_error(fmt::format("merge: {} (shard {}/{}) holds points of other rows", name, s.shard,
-                                             s.shards));
+        throw std::runtime_error(
+            fmt::format("merge: {} (shard {}/{}) holds points of other rows", name, s.shard, s.shards));
   }
   for (int k = 1; k <= a.shards; ++k)
     if (!seen.count(k))

@@ -46,8 +46,8 @@ ArclengthPoint arclength_tangent(const ArclengthProblem& f, const std::vector<do
   return t;
 }
 
-bool arclength_step(const ArclengthProblem& f, const ArclengthPoint& from, double ds, double tol, int max_iter,
-                    ArclengthPoint& to, int& iterations) {
+bool arclength_step(const ArclengthProblem& f, const ArclengthPoint& from, double ds, double tol,
+                    int max_iter, ArclengthPoint& to, int& iterations) {
   const size_t n = from.x.size();
   std::vector<double> x(n);
   for (size_t i = 0; i < n; ++i) x[i] = from.x[i] + ds * from.tx[i];

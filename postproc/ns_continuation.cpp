@@ -231,10 +231,14 @@ std::vector<NsMapPoint> solve_row(const Case& base, const NsMapOptions& o, int r
 
 const char* to_string(MapSource s) {
   switch (s) {
-    case MapSource::steady: return "steady";
-    case MapSource::averaged_unstable: return "time-averaged (steady state unstable)";
-    case MapSource::averaged_no_steady: return "time-averaged (no steady state found)";
-    case MapSource::none: break;
+    case MapSource::steady:
+      return "steady";
+    case MapSource::averaged_unstable:
+      return "time-averaged (steady state unstable)";
+    case MapSource::averaged_no_steady:
+      return "time-averaged (no steady state found)";
+    case MapSource::none:
+      break;
   }
   return "none";
 }
@@ -263,7 +267,8 @@ std::vector<int> shard_rows(int rows, int shard, int shards) {
   return r;
 }
 
-std::optional<bool> stability_by_marching(const NsParams& p, const NsState& steady, double span, double margin) {
+std::optional<bool> stability_by_marching(const NsParams& p, const NsState& steady, double span,
+                                          double margin) {
   const PolarGrid g = ns_grid(p);
   NsState s = steady;
   s.t = 0.0, s.N_prev.clear(), s.dt_prev = 0.0, s.Gamma_flux_prev = 0.0;
@@ -274,7 +279,8 @@ std::optional<bool> stability_by_marching(const NsParams& p, const NsState& stea
   const size_t n = s.zeta.size();
   auto dev = [&](const NsState& st) {
     double e = 0.0;
-    for (size_t q = size_t(g.n_theta); q < n; ++q) e += (st.zeta[q] - steady.zeta[q]) * (st.zeta[q] - steady.zeta[q]);
+    for (size_t q = size_t(g.n_theta); q < n; ++q)
+      e += (st.zeta[q] - steady.zeta[q]) * (st.zeta[q] - steady.zeta[q]);
     return std::sqrt(e);
   };
   const long steps = long(std::ceil(span * unit / dt));

@@ -40,47 +40,47 @@ const char* to_string(MapSource);
 
 /// One point of the map. Undefined values are NaN.
 struct NsMapPoint {
-  int row = 0, column = 0;                ///< index of Re and of α in the map's axes
-  double reynolds = 0.0, alpha = 0.0;     ///< Re = U·2a/ν, α = aω/U
-  bool converged = false;                 ///< the steady branch reached this α
-  bool fold = false;                      ///< the branch turned back (a fold) before this α
-  int newton_steps = 0;                   ///< Newton steps (plain and corrector steps of arclength)
-  int arclength_steps = 0;                ///< pseudo-arclength steps needed to reach this α
-  std::optional<bool> stable;             ///< of the steady state (empty: not decided or no hook)
-  MapSource source = MapSource::none;     ///< what cl, cd, cm are
-  double cl, cd, cm;                      ///< the reported coefficients (steady or time-averaged)
-  double cl_steady, cd_steady, cm_steady; ///< the steady state's, NaN without one
+  int row = 0, column = 0;                 ///< index of Re and of α in the map's axes
+  double reynolds = 0.0, alpha = 0.0;      ///< Re = U·2a/ν, α = aω/U
+  bool converged = false;                  ///< the steady branch reached this α
+  bool fold = false;                       ///< the branch turned back (a fold) before this α
+  int newton_steps = 0;                    ///< Newton steps (plain and corrector steps of arclength)
+  int arclength_steps = 0;                 ///< pseudo-arclength steps needed to reach this α
+  std::optional<bool> stable;              ///< of the steady state (empty: not decided or no hook)
+  MapSource source = MapSource::none;      ///< what cl, cd, cm are
+  double cl, cd, cm;                       ///< the reported coefficients (steady or time-averaged)
+  double cl_steady, cd_steady, cm_steady;  ///< the steady state's, NaN without one
   double cl_pressure, cl_friction, cd_pressure, cd_friction;  ///< the steady state's parts
-  double strouhal;                        ///< time-averaged periodic points only
-  double cl_ideal;                        ///< potential flow, −2πα
-  double ratio;                           ///< cl / cl_ideal = S/(2πρa²) (NaN at α = 0)
-  double seconds = 0.0;                   ///< wall time of this point (steady, stability, averaging)
+  double strouhal;                                            ///< time-averaged periodic points only
+  double cl_ideal;                                            ///< potential flow, −2πα
+  double ratio;          ///< cl / cl_ideal = S/(2πρa²) (NaN at α = 0)
+  double seconds = 0.0;  ///< wall time of this point (steady, stability, averaging)
 };
 
 /// What to compute.
 struct NsMapOptions {
-  std::vector<double> alphas;             ///< α, ascending (the continuation direction)
-  std::vector<double> reynolds;           ///< Re; empty: the case's own
-  int shard = 1, shards = 1;              ///< compute only rows r with r % shards == shard − 1
-  int threads = 1;                        ///< rows computed at once (std::thread)
-  StabilityHook stability;                ///< empty: stable undefined (then no averaging either)
-  bool average_unstable = true;           ///< run_viscous at unstable points and points without a steady state
-  double newton_tol = 1e-10;              ///< scaled max-norm residual
-  int newton_max = 12;                    ///< Newton steps per solve before arclength takes over
-  int max_arclength_steps = 40;           ///< per gap between two α
-  int corrector_max = 8;                  ///< Newton steps of an arclength corrector (and of its landing)
+  std::vector<double> alphas;    ///< α, ascending (the continuation direction)
+  std::vector<double> reynolds;  ///< Re; empty: the case's own
+  int shard = 1, shards = 1;     ///< compute only rows r with r % shards == shard − 1
+  int threads = 1;               ///< rows computed at once (std::thread)
+  StabilityHook stability;       ///< empty: stable undefined (then no averaging either)
+  bool average_unstable = true;  ///< run_viscous at unstable points and points without a steady state
+  double newton_tol = 1e-10;     ///< scaled max-norm residual
+  int newton_max = 12;           ///< Newton steps per solve before arclength takes over
+  int max_arclength_steps = 40;  ///< per gap between two α
+  int corrector_max = 8;         ///< Newton steps of an arclength corrector (and of its landing)
   /// Progress, after each point (called from the worker threads, one at a time).
   std::function<void(const NsMapPoint&)> on_point;
 };
 
 /// The map (or the shard of it that was computed).
 struct NsMap {
-  Case base;                              ///< the resolved case
-  int n_theta = 0, n_r = 0;               ///< the grid
+  Case base;                 ///< the resolved case
+  int n_theta = 0, n_r = 0;  ///< the grid
   double outer_over_a = 0.0;
-  std::vector<double> alphas, reynolds;   ///< the whole map's axes
+  std::vector<double> alphas, reynolds;  ///< the whole map's axes
   int shard = 1, shards = 1;
-  std::vector<NsMapPoint> points;         ///< the computed rows, row-major (row, then column)
+  std::vector<NsMapPoint> points;  ///< the computed rows, row-major (row, then column)
   int threads = 1;
   double total_s = 0.0;
 };
@@ -128,7 +128,7 @@ ArclengthPoint arclength_tangent(const ArclengthProblem& f, const std::vector<do
 /// One step of length ds: predictor along the tangent, Newton corrector on F = 0 and
 /// ⟨t, (x − x0, λ − λ0)⟩ = ds (bordering). Returns false when the corrector does not converge to tol in
 /// max_iter steps; iterations counts its Newton steps.
-bool arclength_step(const ArclengthProblem& f, const ArclengthPoint& from, double ds, double tol, int max_iter,
-                    ArclengthPoint& to, int& iterations);
+bool arclength_step(const ArclengthProblem& f, const ArclengthPoint& from, double ds, double tol,
+                    int max_iter, ArclengthPoint& to, int& iterations);
 
 }  // namespace magnus

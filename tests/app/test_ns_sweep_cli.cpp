@@ -18,10 +18,11 @@ namespace fs = std::filesystem;
 namespace {
 
 void write_case(const std::string& path, int n_theta) {
-  std::ofstream(path) << "title = \"coarse map\"\n[model]\nflow = \"navier-stokes\"\n[cylinder]\nradius = 0.5\n"
-                         "spin_ratio = 0.0\n[flow]\nspeed = 1.0\ndensity = 1.0\nreynolds = 20.0\n[domain]\n"
-                         "outer_radius = 20.0\n[grid]\nn_theta = "
-                      << n_theta << "\n";
+  std::ofstream(path)
+      << "title = \"coarse map\"\n[model]\nflow = \"navier-stokes\"\n[cylinder]\nradius = 0.5\n"
+         "spin_ratio = 0.0\n[flow]\nspeed = 1.0\ndensity = 1.0\nreynolds = 20.0\n[domain]\n"
+         "outer_radius = 20.0\n[grid]\nn_theta = "
+      << n_theta << "\n";
 }
 
 bool one_line(const std::string& s) { return !s.empty() && s.find('\n') == s.size() - 1; }
@@ -31,8 +32,8 @@ bool one_line(const std::string& s) { return !s.empty() && s.find('\n') == s.siz
 TEST_CASE("navier-stokes sweep: shards merged equal the unsharded map exactly", "[app][sweep][merge]") {
   const std::string dir = temp_dir("ns-sweep-merge");
   write_case(dir + "/c.toml", 32);
-  const std::vector<std::string> map = {"sweep", dir + "/c.toml", "--spin-ratio", "0:2:1", "--reynolds", "20:100:40",
-                                        "-q"};
+  const std::vector<std::string> map = {
+      "sweep", dir + "/c.toml", "--spin-ratio", "0:2:1", "--reynolds", "20:100:40", "-q"};
   auto with = [&](std::vector<std::string> extra) {
     std::vector<std::string> a = map;
     a.insert(a.end(), extra.begin(), extra.end());
@@ -62,9 +63,16 @@ TEST_CASE("navier-stokes sweep: shards merged equal the unsharded map exactly", 
     INFO("point " << i);
     CHECK(a.row == b.row);
     CHECK(a.column == b.column);
-    for (auto [x, y] : {std::pair{a.cl, b.cl}, {a.cd, b.cd}, {a.cm, b.cm}, {a.cl_steady, b.cl_steady},
-                        {a.cl_pressure, b.cl_pressure}, {a.cd_friction, b.cd_friction}, {a.ratio, b.ratio},
-                        {a.strouhal, b.strouhal}, {a.reynolds, b.reynolds}, {a.alpha, b.alpha}})
+    for (auto [x, y] : {std::pair{a.cl, b.cl},
+                        {a.cd, b.cd},
+                        {a.cm, b.cm},
+                        {a.cl_steady, b.cl_steady},
+                        {a.cl_pressure, b.cl_pressure},
+                        {a.cd_friction, b.cd_friction},
+                        {a.ratio, b.ratio},
+                        {a.strouhal, b.strouhal},
+                        {a.reynolds, b.reynolds},
+                        {a.alpha, b.alpha}})
       CHECK(same(x, y));
     CHECK(a.stable == b.stable);
     CHECK(a.source == b.source);
@@ -114,8 +122,12 @@ TEST_CASE("navier-stokes sweep: bad --shard values are refused in one line befor
           "[app][sweep][merge]") {
   const std::string dir = temp_dir("ns-sweep-shard");
   write_case(dir + "/c.toml", 32);
-  for (auto [shard, expect] : {std::pair{"0/2", "1 ≤ K ≤ N"}, {"3/2", "1 ≤ K ≤ N"}, {"a/b", "K/N"}, {"2", "K/N"},
-                               {"-1/2", "K/N"}, {"1/4", "at most 3 shards"}}) {
+  for (auto [shard, expect] : {std::pair{"0/2", "1 ≤ K ≤ N"},
+                               {"3/2", "1 ≤ K ≤ N"},
+                               {"a/b", "K/N"},
+                               {"2", "K/N"},
+                               {"-1/2", "K/N"},
+                               {"1/4", "at most 3 shards"}}) {
     const Outcome o = magnus_cmd({"sweep", dir + "/c.toml", "--spin-ratio", "0:1:1", "--reynolds", "20:60:20",
                                   "--shard", shard, "-o", dir + "/x.h5"},
                                  dir);

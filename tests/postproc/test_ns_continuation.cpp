@@ -18,9 +18,10 @@ namespace {
 
 /// A coarse navier-stokes case: D = 1 m, U = 1 m/s, n_θ = 32, R = 20a.
 Case coarse_case(double re) {
-  const std::string text = "[model]\nflow = \"navier-stokes\"\n[cylinder]\nradius = 0.5\nspin_ratio = 0.0\n"
-                           "[flow]\nspeed = 1.0\ndensity = 1.0\nreynolds = " +
-                           std::to_string(re) + "\n[domain]\nouter_radius = 20.0\n[grid]\nn_theta = 32\n";
+  const std::string text =
+      "[model]\nflow = \"navier-stokes\"\n[cylinder]\nradius = 0.5\nspin_ratio = 0.0\n"
+      "[flow]\nspeed = 1.0\ndensity = 1.0\nreynolds = " +
+      std::to_string(re) + "\n[domain]\nouter_radius = 20.0\n[grid]\nn_theta = 32\n";
   return parse_case(text, "test");
 }
 
@@ -103,10 +104,10 @@ TEST_CASE("the arclength step follows a circle through its fold at λ = 1", "[co
     max_lambda = std::max(max_lambda, Q.lambda);
     P = Q;
   }
-  CHECK(folds == 1);                  // passed the top of the circle once
-  CHECK(max_lambda < 1.0 + 1e-12);    // never beyond the fold
+  CHECK(folds == 1);                // passed the top of the circle once
+  CHECK(max_lambda < 1.0 + 1e-12);  // never beyond the fold
   CHECK(max_lambda > 0.97);
-  CHECK(P.x[0] > 0.0);                // came down the other side
+  CHECK(P.x[0] > 0.0);  // came down the other side
 }
 
 TEST_CASE("shard rows interleave and bad shards are refused in one line", "[continuation]") {
@@ -121,8 +122,8 @@ TEST_CASE("the marching stability test: stable at Re 20, unstable at Re 100 with
           "[continuation]") {
   // Known regimes: a steady wake up to Re ≈ 47 at α = 0; vortex shedding at Re 100 for α below ≈ 1.9
   // (Stojković et al. 2002: steady at α = 2).
-  for (auto [re, alpha, expect] : {std::tuple{20.0, 0.0, true}, std::tuple{100.0, 0.0, false},
-                                   std::tuple{100.0, 2.5, true}}) {
+  for (auto [re, alpha, expect] :
+       {std::tuple{20.0, 0.0, true}, std::tuple{100.0, 0.0, false}, std::tuple{100.0, 2.5, true}}) {
     INFO("Re " << re << " alpha " << alpha);
     const Case c = coarse_case(re);
     const NsParams p = ns_params(map_point_case(c, re, alpha));

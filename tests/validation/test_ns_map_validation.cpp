@@ -11,7 +11,8 @@
 
 using namespace magnus;
 
-TEST_CASE("the s_map case: 420 points within 5 minutes, the shedding onset near Re 47", "[validation][ns-map]") {
+TEST_CASE("the s_map case: 420 points within 5 minutes, the shedding onset near Re 47",
+          "[validation][ns-map]") {
   const Case c = load_case(std::string(MAGNUS_SOURCE_DIR) + "/cases/s_map.toml");
   NsMapOptions o;
   for (int k = 0; k <= 20; ++k) o.alphas.push_back(0.3 * k);
@@ -25,10 +26,10 @@ TEST_CASE("the s_map case: 420 points within 5 minutes, the shedding onset near 
   REQUIRE(m.points.size() == 420);
   CHECK(s < 300.0);
   auto at = [&](int row, int col) -> const NsMapPoint& { return m.points[size_t(row) * 21 + size_t(col)]; };
-  for (int r = 0; r < 4; ++r) CHECK(at(r, 0).stable == std::optional<bool>(true));   // Re 10…40: steady
+  for (int r = 0; r < 4; ++r) CHECK(at(r, 0).stable == std::optional<bool>(true));    // Re 10…40: steady
   for (int r = 4; r < 20; ++r) CHECK(at(r, 0).stable == std::optional<bool>(false));  // Re 50…200: sheds
-  CHECK(at(9, 3).stable == std::optional<bool>(false));  // Re 100, α 0.9: sheds
-  CHECK(at(9, 8).stable == std::optional<bool>(true));   // Re 100, α 2.4: steady
+  CHECK(at(9, 3).stable == std::optional<bool>(false));                               // Re 100, α 0.9: sheds
+  CHECK(at(9, 8).stable == std::optional<bool>(true));  // Re 100, α 2.4: steady
   for (const auto& p : m.points)
     if (p.alpha > 0.0 && std::isfinite(p.ratio)) {
       CHECK(p.ratio > 0.0);
