@@ -1,20 +1,25 @@
 // magnus sweep CASE (--spin-ratio A:B:STEP | --circulation A:B:STEP) [--set k=v]… [--csv FILE]
 //              [-o FILE.h5] [--plot FILE.png] [--size WxH] [--threads N] [-q]
+// navier-stokes: magnus sweep CASE --spin-ratio A:B:STEP [--reynolds A:B:STEP] [--shard K/N] [--steady-only]
 #include <fmt/core.h>
 
 #include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <tuple>
+#include <utility>
 
 #include "app/commands.hpp"
 #include "io/case_file.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/json_output.hpp"
+#include "io/ns_sweep_file.hpp"
 #include "io/reference_file.hpp"
 #include "io/sweep_file.hpp"
 #include "plot/curves.hpp"
 #include "plot/figures.hpp"
+#include "plot/ns_map_plot.hpp"
 
 namespace magnus {
 
@@ -22,11 +27,69 @@ namespace {
 
 /// The options of `magnus sweep`: exactly one of spin_ratio / circulation non-empty.
 struct SweepOptions {
-  std::string case_path, spin_ratio, circulation, csv, output, plot, size;
+  std::string case_path, spin_ratio, circulation, csv, output, plot, size, reynolds, shard;
   std::vector<std::string> sets;
   int threads = 1;
-  bool quiet = false, json = false;
+  bool quiet = false, json = false, steady_only = false;
 };
+
+/// "K/N" with 1 ≤ K ≤ N (whole numbers); throws std::invalid_argument with one line.
+std::pair<int, int> parse_shard(const std::string& text) {
+  const size_t slash = text.find('/');
+  auto whole = [&](const std::string& s, int& v) {
+    if (s.empty() || s.size() > 6 || s.find_first_not_of("0123456789") != std::string::npos) return false;
+    v = std::stoi(s);
+    return true;
+  };
+  int k = 0, n = 0;
+  if (slash == std::string::npos || !whole(text.substr(0, slash), k) || !whole(text.substr(slash + 1), n) ||
+      k < 1 || k > n)
+    throw std::invalid_argument(
+        fmt::format("--shard '{}': expected K/N with whole numbers 1 ≤ K ≤ N (e.g. 2/4)", text));
+  return {k, n};
+}
+
+/// The navier-stokes path: continuation of the steady branch per Re row, the S(Re, α) map.
+void command_ns_sweep(const SweepOptions& o, const Case& c, const SweepRange& alphas) {
+  NsMapOptions mo;
+  mo.alphas = alphas.values;
+  if (!o.reynolds.empty()) mo.reynolds = parse_sweep_range(o.reynolds, "--reynolds").values;
+  if (!o.shard.empty()) std::tie(mo.shard, mo.shards) = parse_shard(o.shard);
+  // Bad shards fail before any solve.
+  shard_rows(mo.reynolds.empty() ? 1 : int(mo.reynolds.size()), mo.shard, mo.shards);
+  if (o.json) throw std::runtime_error("--json: not available for a navier-stokes sweep (use --csv -)");
+  if (!o.quiet && is_stdout(o.csv))
+    throw std::runtime_error("--csv -: add -q (the table also goes to standard output)");
+  check_distinct_paths({o.case_path}, {o.csv, o.output, o.plot});
+  for (const std::string* p : {&o.csv, &o.output, &o.plot})
+    if (!p->empty()) check_writable(*p);
+  const PlotSize size = o.size.empty() ? PlotSize{} : parse_plot_size(o.size);
+  mo.threads = o.threads;
+  if (!o.steady_only) mo.stability = make_stability_hook();
+  mo.average_unstable = !o.steady_only;
+  if (!o.quiet)
+    mo.on_point = [](const NsMapPoint& p) {
+      std::fprintf(stderr, "magnus: Re %g, α %.4g: %s%s (%.2f s)\n", p.reynolds, p.alpha,
+                   p.converged ? "steady" : (p.fold ? "fold" : "no steady state"),
+                   p.source == MapSource::steady || p.source == MapSource::none ? "" : ", time-averaged",
+                   p.seconds);
+    };
+  const NsMap m = ns_map(c, mo);
+  if (!o.csv.empty()) write_text_output(o.csv, ns_map_csv(m));
+  if (!o.output.empty()) write_ns_map_hdf5(m, o.output);
+  if (!o.plot.empty()) plot_ns_map(m, o.plot, size);
+  if (o.quiet) return;
+  std::string text = ns_map_table(m);
+  std::vector<std::string> written;
+  for (const std::string* p : {&o.csv, &o.output, &o.plot})
+    if (!p->empty()) written.push_back(*p);
+  if (!written.empty()) {
+    std::string list;
+    for (const auto& w : written) list += (list.empty() ? "" : ", ") + w;
+    text += fmt::format("\n{:<13}{}\n", "output", list);
+  }
+  std::fputs(text.c_str(), stdout);
+}
 
 void command_sweep(const SweepOptions& o) {
   const bool by_spin = !o.spin_ratio.empty();
@@ -42,11 +105,14 @@ void command_sweep(const SweepOptions& o) {
   if (by_spin) sets.push_back(fmt::format("cylinder.spin_ratio={}", range.values.front()));
   sets.insert(sets.end(), o.sets.begin(), o.sets.end());
   Case c = load_case(o.case_path, sets);
-  if (c.model == FlowModel::navier_stokes)
-    throw std::runtime_error(fmt::format(
-        "{}: model.flow = \"navier-stokes\": magnus sweep solves potential flow by superposition, which "
-        "viscous flow does not allow; run each spin ratio with magnus run --set cylinder.spin_ratio=A",
-        o.case_path));
+  if (c.model == FlowModel::navier_stokes) {
+    if (!by_spin)
+      throw std::runtime_error("--circulation: a navier-stokes sweep varies the spin ratio (--spin-ratio)");
+    return command_ns_sweep(o, c, range);
+  }
+  if (!o.reynolds.empty() || !o.shard.empty() || o.steady_only)
+    throw std::runtime_error(
+        fmt::format("{}: --reynolds, --shard and --steady-only need a navier-stokes case", o.case_path));
   if (o.json && is_stdout(o.csv))
     throw std::runtime_error("--json and --csv -: both would go to standard output; name a file for one");
   // Fail before solving, not after.
@@ -116,12 +182,21 @@ void add_sweep_command(CLI::App& app) {
   auto* circ = sweep->add_option("--circulation", o->circulation,
                                  "circulations Γ (m²/s) for circulation.model = \"given\": A:B:STEP");
   spin->excludes(circ);
+  sweep->add_option("--reynolds", o->reynolds,
+                    "navier-stokes: Reynolds numbers A:B:STEP, one continuation row each (the S(Re, α) map)");
+  sweep->add_option("--shard", o->shard,
+                    "navier-stokes: compute only the K-th of N interleaved slices of the Re rows (K/N)");
+  sweep->add_flag("--steady-only", o->steady_only,
+                  "navier-stokes: the steady branch only (no stability test, no time averages)");
   sweep->add_option("--set", o->sets, "override a case key: section.key=value (repeatable)");
   sweep->add_option("--csv", o->csv, "write the table as CSV");
   sweep->add_option("-o,--output", o->output, "write the table as HDF5 (format magnus-sweep)");
   sweep->add_option("--plot", o->plot, "draw C_L(α) as PNG");
   sweep->add_option("--size", o->size, "PNG size WxH in pixels (default 1000x800)");
-  sweep->add_option("--threads", o->threads, "threads for the solver")->check(CLI::Range(1, 64));
+  sweep
+      ->add_option("--threads", o->threads,
+                   "threads for the solver (navier-stokes: Re rows computed at once)")
+      ->check(CLI::Range(1, 64));
   auto* quiet = sweep->add_flag("-q,--quiet", o->quiet, "print nothing on success");
   sweep
       ->add_flag("--json", o->json,

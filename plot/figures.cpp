@@ -10,11 +10,13 @@
 #include <stdexcept>
 
 #include "io/hdf5_io.hpp"
+#include "io/ns_sweep_file.hpp"
 #include "io/reference_file.hpp"
 #include "io/result_reader.hpp"
 #include "physics/exact.hpp"
 #include "plot/figure_labels.hpp"
 #include "plot/figures_rotor.hpp"
+#include "plot/ns_map_plot.hpp"
 
 namespace magnus {
 
@@ -306,11 +308,19 @@ std::string output_base(const std::string& path, const std::string& dir_in) {
 PlotOutcome plot_result_file(const std::string& path, const std::string& dir, PlotSize size) {
   PlotOutcome out;
   // A sweep file draws C_L(α) (or C_L(Γ)); anything else goes to the result reader and its messages.
-  bool sweep = false;
+  bool sweep = false, ns_map = false;
   try {
-    sweep = ResultFile(path, {"magnus-sweep"}).format() == "magnus-sweep";
+    const ResultFile f(path, {"magnus-sweep"});
+    sweep = f.format() == "magnus-sweep";
+    ns_map = f.has_attr("/", "model") && f.attr_string("/", "model") == "navier-stokes";
   } catch (const std::exception&) {
     sweep = false;  // not a sweep: the result reader below says what it is
+  }
+  if (ns_map) {  // the viscous S(Re, α) map: S/(2πρa²) against α per Re
+    const std::string png = output_base(path, dir) + "_s_map.png";
+    plot_ns_map(read_ns_map_hdf5(path), png, size);
+    out.written.push_back(png);
+    return out;
   }
   if (sweep) {
     const LiftSweep s = read_lift_sweep(path);

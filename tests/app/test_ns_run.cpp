@@ -171,9 +171,9 @@ TEST_CASE("navier-stokes run: a killed run resumes from its last checkpoint and 
   REQUIRE(test::lines(other.err) == 1);
 }
 
-TEST_CASE("navier-stokes: sweep refuses in one line, a potential run refuses --resume", "[app][ns]") {
+TEST_CASE("navier-stokes: sweep --circulation refuses in one line, a potential run refuses --resume", "[app][ns]") {
   const std::string dir = test::temp_dir("ns-sweep");
-  const auto s = test::magnus_cmd({"sweep", write_case(dir, ns_case(100, 1, 5)), "--spin-ratio", "0:1:0.5"}, dir);
+  const auto s = test::magnus_cmd({"sweep", write_case(dir, ns_case(100, 1, 5)), "--circulation", "0:1:0.5"}, dir);
   REQUIRE(s.status != 0);
   REQUIRE(test::lines(s.err) == 1);
   REQUIRE(s.err.find("navier-stokes") != std::string::npos);

@@ -1,0 +1,14 @@
+#pragma once
+// The viscous S(Re, α) map as curves: S/(2πρa²) = C_L/C_L,ideal against α, one curve per Reynolds number.
+#include <string>
+
+#include "plot/curves.hpp"
+#include "postproc/ns_continuation.hpp"
+
+namespace magnus {
+
+/// One joined point set per Re row (colours cycle): ● steady points, ○ time-averaged ones; points without
+/// a ratio (α = 0, undefined) are left out. Throws std::runtime_error when nothing is drawable.
+void plot_ns_map(const NsMap& m, const std::string& png, PlotSize size = {});
+
+}  // namespace magnus

@@ -1,0 +1,140 @@
+// magnus sweep on a navier-stokes case and magnus merge, through the binary: shards merged equal the
+// unsharded map exactly; merge and --shard refuse bad input in one line and write nothing.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "io/hdf5_io.hpp"
+#include "io/ns_sweep_file.hpp"
+#include "support.hpp"
+
+using namespace magnus;
+using namespace magnus::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+void write_case(const std::string& path, int n_theta) {
+  std::ofstream(path)
+      << "title = \"coarse map\"\n[model]\nflow = \"navier-stokes\"\n[cylinder]\nradius = 0.5\n"
+         "spin_ratio = 0.0\n[flow]\nspeed = 1.0\ndensity = 1.0\nreynolds = 20.0\n[domain]\n"
+         "outer_radius = 20.0\n[grid]\nn_theta = "
+      << n_theta << "\n";
+}
+
+bool one_line(const std::string& s) { return !s.empty() && s.find('\n') == s.size() - 1; }
+
+}  // namespace
+
+TEST_CASE("navier-stokes sweep: shards merged equal the unsharded map exactly", "[app][sweep][merge]") {
+  const std::string dir = temp_dir("ns-sweep-merge");
+  write_case(dir + "/c.toml", 32);
+  const std::vector<std::string> map = {
+      "sweep", dir + "/c.toml", "--spin-ratio", "0:2:1", "--reynolds", "20:100:40", "-q"};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> a = map;
+    a.insert(a.end(), extra.begin(), extra.end());
+    return a;
+  };
+  Outcome o = magnus_cmd(with({"-o", dir + "/all.h5"}), dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  REQUIRE(magnus_cmd(with({"-o", dir + "/threads.h5", "--threads", "2"}), dir).status == 0);
+  REQUIRE(magnus_cmd(with({"-o", dir + "/s1.h5", "--shard", "1/2"}), dir).status == 0);
+  REQUIRE(magnus_cmd(with({"-o", dir + "/s2.h5", "--shard", "2/2"}), dir).status == 0);
+  o = magnus_cmd({"merge", dir + "/m.h5", dir + "/s2.h5", dir + "/s1.h5"}, dir);
+  REQUIRE(o.status == 0);
+  // magnus plot draws a merged map as S/(2πρa²) per Re.
+  fs::create_directories(dir + "/png");
+  REQUIRE(magnus_cmd({"plot", dir + "/m.h5", "-o", dir + "/png"}, dir).status == 0);
+  CHECK(fs::file_size(dir + "/png/m_s_map.png") > 10000);
+  const NsMap all = read_ns_map_hdf5(dir + "/all.h5"), merged = read_ns_map_hdf5(dir + "/m.h5");
+  CHECK(merged.shard == 1);
+  CHECK(merged.shards == 1);
+  REQUIRE(all.points.size() == 9);
+  REQUIRE(merged.points.size() == 9);
+  // Every column but the timing, bit for bit (NaN = NaN: both undefined).
+  auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
+  for (size_t i = 0; i < 9; ++i) {
+    const NsMapPoint &a = all.points[i], &b = merged.points[i];
+    INFO("point " << i);
+    CHECK(a.row == b.row);
+    CHECK(a.column == b.column);
+    for (auto [x, y] : {std::pair{a.cl, b.cl},
+                        {a.cd, b.cd},
+                        {a.cm, b.cm},
+                        {a.cl_steady, b.cl_steady},
+                        {a.cl_pressure, b.cl_pressure},
+                        {a.cd_friction, b.cd_friction},
+                        {a.ratio, b.ratio},
+                        {a.strouhal, b.strouhal},
+                        {a.reynolds, b.reynolds},
+                        {a.alpha, b.alpha}})
+      CHECK(same(x, y));
+    CHECK(a.stable == b.stable);
+    CHECK(a.source == b.source);
+    CHECK(a.newton_steps == b.newton_steps);
+  }
+  // Two rows at once (threads): the same map to round-off (the LU's kernels round differently in a second
+  // thread), the same decisions.
+  const NsMap threaded = read_ns_map_hdf5(dir + "/threads.h5");
+  REQUIRE(threaded.points.size() == 9);
+  for (size_t i = 0; i < 9; ++i) {
+    const NsMapPoint &a = all.points[i], &b = threaded.points[i];
+    CHECK(std::fabs(a.cl - b.cl) < 1e-12);
+    CHECK(std::fabs(a.cd - b.cd) < 1e-12);
+    CHECK(a.stable == b.stable);
+    CHECK(a.source == b.source);
+  }
+  // Re 20 is steady and stable at every α; Re 100 without spin sheds (time-averaged, with a Strouhal number).
+  CHECK(all.points[0].source == MapSource::steady);
+  CHECK(all.points[0].stable == std::optional<bool>(true));
+  CHECK(all.points[6].source == MapSource::averaged_unstable);
+  CHECK(all.points[6].strouhal > 0.1);
+
+  SECTION("merge refuses overlapping, missing and mismatched shards in one line") {
+    write_case(dir + "/d.toml", 36);
+    REQUIRE(magnus_cmd({"sweep", dir + "/d.toml", "--spin-ratio", "0:2:1", "--reynolds", "20:100:40", "-q",
+                        "--steady-only", "-o", dir + "/o2.h5", "--shard", "2/2"},
+                       dir)
+                .status == 0);
+    for (auto [args, expect] :
+         {std::pair{std::vector<std::string>{dir + "/s1.h5", dir + "/s1.h5"}, "are both shard 1/2"},
+          {std::vector<std::string>{dir + "/s1.h5"}, "shard 2/2 is missing"},
+          {std::vector<std::string>{dir + "/s1.h5", dir + "/o2.h5"}, "different cases"},
+          {std::vector<std::string>{dir + "/s1.h5", dir + "/all.h5"}, "is shard 1/2 but"}}) {
+      std::vector<std::string> a = {"merge", dir + "/bad.h5"};
+      a.insert(a.end(), args.begin(), args.end());
+      const Outcome b = magnus_cmd(a, dir);
+      INFO(b.err);
+      CHECK(b.status != 0);
+      CHECK(one_line(b.err));
+      CHECK(b.err.find(expect) != std::string::npos);
+      CHECK_FALSE(fs::exists(dir + "/bad.h5"));
+    }
+  }
+}
+
+TEST_CASE("navier-stokes sweep: bad --shard values are refused in one line before solving",
+          "[app][sweep][merge]") {
+  const std::string dir = temp_dir("ns-sweep-shard");
+  write_case(dir + "/c.toml", 32);
+  for (auto [shard, expect] : {std::pair{"0/2", "1 ≤ K ≤ N"},
+                               {"3/2", "1 ≤ K ≤ N"},
+                               {"a/b", "K/N"},
+                               {"2", "K/N"},
+                               {"-1/2", "K/N"},
+                               {"1/4", "at most 3 shards"}}) {
+    const Outcome o = magnus_cmd({"sweep", dir + "/c.toml", "--spin-ratio", "0:1:1", "--reynolds", "20:60:20",
+                                  "--shard", shard, "-o", dir + "/x.h5"},
+                                 dir);
+    INFO(shard << ": " << o.err);
+    CHECK(o.status != 0);
+    CHECK(one_line(o.err));
+    CHECK(o.err.find(expect) != std::string::npos);
+    CHECK_FALSE(fs::exists(dir + "/x.h5"));
+  }
+}

@@ -1,0 +1,38 @@
+// The shipped S(Re, α) map (cases/s_map.toml): a 20 × 21 map over Re 10…200 and α 0…6 within 5 minutes on
+// two cores, and the regimes the literature knows: the wake of a non-spinning cylinder starts to shed at
+// Re ≈ 47 (Provansal et al. 1987), spin ratios around 2 stop the shedding at Re 100 (Stojković et al. 2002).
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "io/case_file.hpp"
+#include "postproc/ns_continuation.hpp"
+
+using namespace magnus;
+
+TEST_CASE("the s_map case: 420 points within 5 minutes, the shedding onset near Re 47",
+          "[validation][ns-map]") {
+  const Case c = load_case(std::string(MAGNUS_SOURCE_DIR) + "/cases/s_map.toml");
+  NsMapOptions o;
+  for (int k = 0; k <= 20; ++k) o.alphas.push_back(0.3 * k);
+  for (int k = 1; k <= 20; ++k) o.reynolds.push_back(10.0 * k);
+  o.threads = 2;
+  o.stability = make_stability_hook();
+  const auto t0 = std::chrono::steady_clock::now();
+  const NsMap m = ns_map(c, o);
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("s_map: %zu points in %.1f s (wall, 2 threads)\n", m.points.size(), s);
+  REQUIRE(m.points.size() == 420);
+  CHECK(s < 300.0);
+  auto at = [&](int row, int col) -> const NsMapPoint& { return m.points[size_t(row) * 21 + size_t(col)]; };
+  for (int r = 0; r < 4; ++r) CHECK(at(r, 0).stable == std::optional<bool>(true));    // Re 10…40: steady
+  for (int r = 4; r < 20; ++r) CHECK(at(r, 0).stable == std::optional<bool>(false));  // Re 50…200: sheds
+  CHECK(at(9, 3).stable == std::optional<bool>(false));                               // Re 100, α 0.9: sheds
+  CHECK(at(9, 8).stable == std::optional<bool>(true));  // Re 100, α 2.4: steady
+  for (const auto& p : m.points)
+    if (p.alpha > 0.0 && std::isfinite(p.ratio)) {
+      CHECK(p.ratio > 0.0);
+      CHECK(p.ratio < 1.0);  // never more than the ideal lift
+    }
+}
