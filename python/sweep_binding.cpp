@@ -66,8 +66,8 @@ py::dict sweep(const std::string& source, bool is_path, const std::string& varia
     if (c.model == FlowModel::navier_stokes)
       throw std::runtime_error(
           (is_path ? source : std::string("<dict>")) +
-          ": model.flow = \"navier-stokes\": magnus sweep solves potential flow by superposition, which "
-          "viscous flow does not allow; run each spin ratio with magnus run --set cylinder.spin_ratio=A");
+          ": model.flow = \"navier-stokes\": magnus.sweep sweeps potential flow by superposition; the viscous "
+          "continuation and S(Re, α) map run on the command line: magnus sweep CASE --spin-ratio A:B:STEP");
     s = by_spin ? sweep_spin_ratio(c, values, threads) : sweep_circulation(c, values, threads);
   }
   std::vector<SweepRow> rows;
