@@ -137,19 +137,30 @@ SteadyStudy steady_study(const NsParams& p, const SteadyStudyOptions& o, const N
   SteadyStudy st;
   NsState prev;
   PolarGrid prev_grid;
+  bool have_prev = false;
+  std::string skipped;
   for (size_t k = 0; k < o.scales.size(); ++k) {
+    const bool last = k + 1 == o.scales.size();
     const NsParams q = level_params(p, o.scales[k]);
+    if (!last && (q.n_theta < kMinStudyTheta || ns_grid(q).n_r < kMinStudyRings)) continue;  // too coarse
     SteadyJacobian jac(q);
     const PolarGrid& g = jac.grid();
-    const NsState start = k > 0 ? interpolate_state(prev_grid, prev, g) : guess ? *guess : potential_guess(q, g);
+    const NsState start = have_prev ? interpolate_state(prev_grid, prev, g)
+                          : guess && k == 0 ? *guess
+                                            : potential_guess(q, g);
     NewtonOptions no = o.newton;
     no.on_iteration = nullptr;
-    if (k == 0 && o.plain_first) no.chord_ratio = 0.0;
+    if (st.levels.empty() && o.plain_first) no.chord_ratio = 0.0;
     if (o.on_iteration) no.on_iteration = [&o, k](int it, double r) { o.on_iteration(int(k), it, r); };
     SteadyLevel lv;
     lv.n_theta = g.n_theta, lv.n_r = g.n_r;
     lv.h = std::sqrt(g.d_theta * std::log(g.r[1] / g.r[0]));
     lv.newton = solve_steady(jac, start, no);
+    if (!lv.newton.converged && !last) {  // a coarse grid without a steady state: the next from scratch
+      skipped += fmt::format("{}{} x {}", skipped.empty() ? "" : ", ", g.n_theta, g.n_r);
+      have_prev = false;
+      continue;
+    }
     if (!lv.newton.converged) {
       st.message = fmt::format("grid {} x {} (level {} of {}): {}", g.n_theta, g.n_r, k + 1, o.scales.size(),
                                lv.newton.message);
@@ -160,8 +171,8 @@ SteadyStudy steady_study(const NsParams& p, const SteadyStudyOptions& o, const N
     const ViscousForces f = viscous_forces(g, q, 1.0, lv.newton.state);
     lv.C_D = f.C_D.value_or(0.0), lv.C_L = f.C_L.value_or(0.0);
     if (q.U > 0.0) lv.recirculation = recirculation_length(g, lv.newton.state);
-    if (k + 1 < o.scales.size())
-      prev = std::move(lv.newton.state);
+    if (!last)
+      prev = std::move(lv.newton.state), have_prev = true;
     else
       st.state = std::move(lv.newton.state);
     lv.newton.state = NsState{};
@@ -180,6 +191,7 @@ SteadyStudy steady_study(const NsParams& p, const SteadyStudyOptions& o, const N
   int steps = 0, factors = 0;
   for (const SteadyLevel& lv : st.levels) steps += lv.newton.iterations, factors += lv.newton.factorisations;
   st.message = fmt::format("{} grids, {} Newton steps ({} factorisations)", st.levels.size(), steps, factors);
+  if (!skipped.empty()) st.message += "; not converged on " + skipped + ", left out";
   st.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return st;
 }

@@ -66,6 +66,10 @@ struct SteadyStudy {
   double wall_seconds = 0.0;
 };
 
+/// Levels coarser than this (n_θ or rings) are left out of a study: Newton's answer there says little.
+constexpr int kMinStudyTheta = 16;
+constexpr int kMinStudyRings = 8;
+
 /// The grid of level `scale` of the parameters' grid (scale 1: ns_grid(p) itself).
 NsParams level_params(const NsParams& p, double scale);
 
@@ -74,8 +78,10 @@ NsParams level_params(const NsParams& p, double scale);
 NsState interpolate_state(const PolarGrid& from, const NsState& s, const PolarGrid& to);
 
 /// The study: the first level from `guess` (potential_guess when null; it must be on the first level's
-/// grid), each next one from the previous state interpolated. Stops at the first level that does not
-/// converge (converged = false, message says which). Throws std::invalid_argument for bad scales.
+/// grid), each next one from the previous state interpolated. Levels below kMinStudyTheta/Rings are left
+/// out; a coarser level where Newton does not converge is left out too (the next starts from the potential
+/// flow; message names it); converged = false, message saying why, when the finest does not converge.
+/// Throws std::invalid_argument for bad scales.
 SteadyStudy steady_study(const NsParams& p, const SteadyStudyOptions& o = {}, const NsState* guess = nullptr);
 
 }  // namespace magnus

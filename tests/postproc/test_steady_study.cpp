@@ -85,7 +85,7 @@ TEST_CASE("[steady] the grid study: sequenced Newton gives the direct solve's st
           "[steady]") {
   NsParams p;
   p.a = 0.5, p.U = 1.0, p.nu = 1.0 / 20.0, p.omega = 2.0 * 0.3;  // Re 20, α 0.3
-  p.n_theta = 48, p.outer_over_a = 20.0;
+  p.n_theta = 64, p.outer_over_a = 20.0;
   SteadyStudyOptions o;
   int calls = 0;
   o.on_iteration = [&calls](int, int, double) { ++calls; };
@@ -93,10 +93,18 @@ TEST_CASE("[steady] the grid study: sequenced Newton gives the direct solve's st
   INFO(st.message);
   REQUIRE(st.converged);
   REQUIRE(st.levels.size() == 4);
-  CHECK(st.levels[0].n_theta == 12);
-  CHECK(st.levels[1].n_theta == 24);
-  CHECK(st.levels[2].n_theta == 32);
-  CHECK(st.levels[3].n_theta == 48);
+  CHECK(st.levels[0].n_theta == 16);
+  CHECK(st.levels[1].n_theta == 32);
+  CHECK(st.levels[2].n_theta == 42);
+  CHECK(st.levels[3].n_theta == 64);
+  // A case grid whose quarter is below kMinStudyTheta: that level is left out.
+  NsParams small = p;
+  small.n_theta = 32;
+  SteadyStudyOptions two;
+  two.scales = {0.25, 1.0};
+  const SteadyStudy s2 = steady_study(small, two);
+  REQUIRE(s2.converged);
+  CHECK(s2.levels.size() == 1);
   int residuals = 0;
   for (const SteadyLevel& lv : st.levels) residuals += int(lv.newton.residuals.size());
   CHECK(calls == residuals);
