@@ -7,6 +7,7 @@
 #include "io/finite.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/report.hpp"
+#include "io/report_steady.hpp"
 
 namespace magnus {
 
@@ -108,6 +109,7 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
   for (double th : v.separation) sep += (sep.empty() ? "" : ", ") + fmt::format("{:.2f}°", th * 180.0 / M_PI);
   line("separation", sep.empty() ? "none (τ_w keeps its sign)" : "τ_w = 0 at θ = " + sep + " (last step)");
   if (v.recirculation_length) line("recirculation", fmt::format("L/D = {:.4f} (steady)", *v.recirculation_length));
+  s += steady_study_text(v);
   if (v.reynolds && *v.reynolds > kReynolds3D)
     line("note", fmt::format("Re = {:.4g} > {:.0f}: real flow past a cylinder is three-dimensional there; this is "
                              "the 2D laminar answer, not the real one",

@@ -6,6 +6,7 @@
 
 #include "postproc/fields.hpp"
 #include "postproc/forces.hpp"
+#include "postproc/steady_study.hpp"
 #include "postproc/unsteady.hpp"
 
 namespace magnus {
@@ -54,6 +55,8 @@ struct ViscousPart {
   std::optional<double> recirculation_length;  ///< behind the body along +x, over D (steady flow)
   std::vector<ForceSample> history;      ///< one sample per step
   std::vector<Snapshot> snapshots;       ///< the last output.snapshots states, oldest first
+  /// time.mode = "steady": the grids solved, Newton's residuals, the Richardson values (state moved out).
+  std::optional<SteadyStudy> steady_study;
 };
 
 struct FlowResult {

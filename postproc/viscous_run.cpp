@@ -10,6 +10,7 @@
 
 #include "physics/exact.hpp"
 #include "postproc/ns_pressure.hpp"
+#include "postproc/steady_study.hpp"
 #include "solver/ns_newton.hpp"
 
 namespace magnus {
@@ -153,20 +154,28 @@ FlowResult viscous_result(const Case& c, const NsParams& p, const UnsteadyResult
 
 namespace {
 
-/// time.mode = "steady": Newton's method on the time stepper's discrete steady equations, from the
-/// potential flow with circulation (or a checkpoint's state); the result has one history sample.
+/// time.mode = "steady": Newton's method on the time stepper's discrete steady equations on four grids
+/// (a quarter, half, two thirds and all of the case's spacing), each from the previous one's state (the
+/// first from the potential flow with circulation), and C_D, C_L, L/D extrapolated from the last three
+/// (Richardson); a
+/// checkpoint's state is solved on the case's grid alone. The result has one history sample.
 FlowResult steady_by_newton(const Case& c, const NsParams& p, const PolarGrid& g, const Checkpoint* resume) {
-  const NsState guess = resume ? resume->state : potential_guess(p, g);
-  const NewtonResult nr = solve_steady(p, guess, NewtonOptions{});
-  if (!nr.converged)
+  SteadyStudyOptions o;
+  if (resume) o.scales = {1.0};
+  SteadyStudy study = steady_study(p, o, resume ? &resume->state : nullptr);
+  if (!study.converged) {
+    const NewtonResult& nr = study.levels.back().newton;
     throw std::runtime_error(fmt::format(
         "time.mode = \"steady\": Newton's method did not converge ({}; residual {:.2e} after {} steps): the "
         "flow may have no steady state here; time.mode = \"auto\" marches in time instead",
-        nr.message, nr.residuals.empty() ? 0.0 : nr.residuals.back(), nr.iterations));
+        study.message, nr.residuals.empty() ? 0.0 : nr.residuals.back(), nr.iterations));
+  }
+  const NewtonResult& nr = study.levels.back().newton;
   UnsteadyResult u;
-  u.state = nr.state;
+  u.state = std::move(study.state);
+  study.state = NsState{};
   u.steady = u.converged = true;
-  u.message = fmt::format("steady, by Newton's method: {} steps, residual {:.1e}", nr.iterations,
+  u.message = fmt::format("steady, by Newton's method: {}, residual {:.1e}", study.message,
                           nr.residuals.empty() ? 0.0 : nr.residuals.back());
   const ViscousForces f = viscous_forces(g, p, c.scene.density, u.state);
   u.history = {force_sample(0.0, f)};
@@ -174,8 +183,10 @@ FlowResult steady_by_newton(const Case& c, const NsParams& p, const PolarGrid& g
   u.C_L_mean = f.C_L.value_or(0.0), u.C_D_mean = f.C_D.value_or(0.0), u.C_M_mean = f.C_M.value_or(0.0);
   u.M_mean = f.M;
   u.reference_speed = c.scene.reference_speed();
-  u.wall_seconds = nr.wall_seconds;
-  return viscous_result(c, p, u, {});
+  u.wall_seconds = study.wall_seconds;
+  FlowResult r = viscous_result(c, p, u, {});
+  r.viscous->steady_study = std::move(study);
+  return r;
 }
 
 }  // namespace
