@@ -12,6 +12,7 @@ void add_compare_command(CLI::App& app);
 void add_plot_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_probe_command(CLI::App& app);
+void add_stability_command(CLI::App& app);
 
 /// Every subcommand.
 inline void add_commands(CLI::App& app) {
@@ -22,6 +23,7 @@ inline void add_commands(CLI::App& app) {
   add_plot_command(app);
   add_bench_command(app);
   add_probe_command(app);
+  add_stability_command(app);
 }
 
 }  // namespace magnus

@@ -171,8 +171,7 @@ std::vector<Eigenpair> arnoldi_at(const SteadyJacobian& jac, const std::vector<d
     for (int i = 0; i < k; ++i) order[size_t(i)] = i;
     std::sort(order.begin(), order.end(),
               [&](int u, int v) { return std::abs(es.eigenvalues()(u)) > std::abs(es.eigenvalues()(v)); });
-    found.clear();
-    cvec next(n, 0.0);
+    cvec next(n, 0.0);  // kept pairs stay in `found`; a restart may find them again (merged later)
     for (int r = 0; r < std::min(k, count); ++r) {
       const cplx mu = es.eigenvalues()(order[size_t(r)]);
       if (std::abs(mu) == 0.0) continue;
@@ -194,7 +193,10 @@ std::vector<Eigenpair> arnoldi_at(const SteadyJacobian& jac, const std::vector<d
         for (size_t q = 0; q < n; ++q) next[q] += x[q];
       }
     }
-    if (int(found.size()) >= std::min(k, count) || pass == o.restarts) break;
+    // All wanted converged; or some after a restart (a cluster of damped far-field modes can keep the rest
+    // from converging: more restarts buy little).
+    if (int(found.size()) >= std::min(k, count) || (!found.empty() && pass >= 1) || pass == o.restarts) break;
+    if (norm(next) == 0.0) break;
     start = std::move(next);
   }
   return found;
@@ -204,6 +206,12 @@ std::vector<Eigenpair> arnoldi_at(const SteadyJacobian& jac, const std::vector<d
 
 double stability_speed(const NsParams& p) {
   return p.U > 0.0 ? p.U : std::fabs(p.a * p.omega) > 0.0 ? std::fabs(p.a * p.omega) : p.nu / p.a;
+}
+
+std::optional<std::complex<double>> StabilityResult::leading_pair() const {
+  for (const auto& l : eigenvalues)
+    if (l.imag() > 0.0) return l;
+  return std::nullopt;
 }
 
 double StabilityResult::strouhal() const {
