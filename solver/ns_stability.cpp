@@ -172,7 +172,9 @@ std::vector<Eigenpair> arnoldi_at(const SteadyJacobian& jac, const std::vector<d
     std::sort(order.begin(), order.end(),
               [&](int u, int v) { return std::abs(es.eigenvalues()(u)) > std::abs(es.eigenvalues()(v)); });
     cvec next(n, 0.0);  // kept pairs stay in `found`; a restart may find them again (merged later)
-    for (int r = 0; r < std::min(k, count); ++r) {
+    // Check twice as many Ritz values as wanted: on a fine grid a cluster of damped far-field modes can sit
+    // nearer the shift than the wake's pair.
+    for (int r = 0; r < std::min(k, 2 * count + 4); ++r) {
       const cplx mu = es.eigenvalues()(order[size_t(r)]);
       if (std::abs(mu) == 0.0) continue;
       const Eigen::VectorXcd y = es.eigenvectors().col(order[size_t(r)]);
@@ -195,7 +197,7 @@ std::vector<Eigenpair> arnoldi_at(const SteadyJacobian& jac, const std::vector<d
     }
     // All wanted converged; or some after a restart (a cluster of damped far-field modes can keep the rest
     // from converging: more restarts buy little).
-    if (int(found.size()) >= std::min(k, count) || (!found.empty() && pass >= 1) || pass == o.restarts) break;
+    if (int(found.size()) >= std::min(k, 2 * count + 4) || (!found.empty() && pass >= 1) || pass == o.restarts) break;
     if (norm(next) == 0.0) break;
     start = std::move(next);
   }
