@@ -15,7 +15,7 @@
 // ‖J x − λ M x‖ is small relative to ‖J x‖ + |λ|·‖M x‖.
 //
 // Finding the rightmost pair: shift-invert converges first to the eigenvalues nearest σ. The default
-// shifts sit just right of the imaginary axis, σ·D/U = 0.1 + i·{0, 0.8, 1.6}: a steady (Im λ = 0) mode and
+// shifts sit just right of the imaginary axis, σ·D/U = 0.1 + i·{0, 0.55, 0.95, 1.4}: a steady (Im λ = 0) mode and
 // the wake's Hopf pair (Im λ·D/U = 2π·St ≈ 0.75–1.1 for St 0.12–0.17) lie near them. The eigenvalues of
 // all shifts are merged (conjugates added: the problem is real) and sorted by real part. An eigenvalue with
 // a larger real part that none of the shifts found would have to lie farther from every shift than the
@@ -32,7 +32,7 @@ namespace magnus {
 /// How leading_eigenvalues searches.
 struct StabilityOptions {
   /// Shifts σ in units of U/D (U → a|ω| when U = 0); the conjugates of their eigenvalues come free.
-  std::vector<std::complex<double>> shifts{{0.1, 0.0}, {0.1, 0.8}, {0.1, 1.6}};
+  std::vector<std::complex<double>> shifts{{0.1, 0.0}, {0.1, 0.55}, {0.1, 0.95}, {0.1, 1.4}};
   int krylov = 40;        ///< Arnoldi vectors per restart (≥ count + 10)
   int restarts = 2;       ///< explicit restarts per shift when fewer than `count` Ritz values converged
   /// Relative residual ‖Jx − λMx‖/(‖Jx‖ + |λ|‖Mx‖) of an accepted eigenpair (the complex LU's solves
