@@ -13,6 +13,7 @@ void add_plot_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_probe_command(CLI::App& app);
 void add_merge_command(CLI::App& app);
+void add_stability_command(CLI::App& app);
 
 /// Every subcommand.
 inline void add_commands(CLI::App& app) {
@@ -24,6 +25,7 @@ inline void add_commands(CLI::App& app) {
   add_bench_command(app);
   add_probe_command(app);
   add_merge_command(app);
+  add_stability_command(app);
 }
 
 }  // namespace magnus

@@ -110,6 +110,11 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
   line("separation", sep.empty() ? "none (τ_w keeps its sign)" : "τ_w = 0 at θ = " + sep + " (last step)");
   if (v.recirculation_length) line("recirculation", fmt::format("L/D = {:.4f} (steady)", *v.recirculation_length));
   s += steady_study_text(v);
+  if (v.eigenvalue_real && v.eigenvalue_imag)
+    line("stability", fmt::format("steady state's leading eigenvalue λ·D/U = {:+.5f} {:+.5f}i ({}; St {:.4f})",
+                                  *v.eigenvalue_real, *v.eigenvalue_imag,
+                                  *v.eigenvalue_real < 0.0 ? "stable" : "unstable: it sheds",
+                                  std::fabs(*v.eigenvalue_imag) / (2.0 * M_PI)));
   if (v.reynolds && *v.reynolds > kReynolds3D)
     line("note", fmt::format("Re = {:.4g} > {:.0f}: real flow past a cylinder is three-dimensional there; this is "
                              "the 2D laminar answer, not the real one",

@@ -53,6 +53,9 @@ struct ViscousPart {
   std::optional<double> magnus_ratio;    ///< S(Re, α)/(2πρa²) = C_L,mean / C_L,ideal (undefined at α = 0)
   std::vector<double> separation;        ///< angles where τ_w = 0, rad in [0, 2π)
   std::optional<double> recirculation_length;  ///< behind the body along +x, over D (steady flow)
+  /// Leading eigenvalue λ of the steady state's linear stability (time.mode = "auto"), U/D: Re λ is the
+  /// growth rate, Im λ/(2π) the Strouhal number of the growing (or decaying) wake mode.
+  std::optional<double> eigenvalue_real, eigenvalue_imag;
   std::vector<ForceSample> history;      ///< one sample per step
   std::vector<Snapshot> snapshots;       ///< the last output.snapshots states, oldest first
   /// time.mode = "steady": the grids solved, Newton's residuals, the Richardson values (state moved out).

@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <complex>
+#include <optional>
+#include <string>
 #include <deque>
 #include <stdexcept>
 
@@ -12,6 +15,7 @@
 #include "postproc/ns_pressure.hpp"
 #include "postproc/steady_study.hpp"
 #include "solver/ns_newton.hpp"
+#include "solver/ns_stability.hpp"
 
 namespace magnus {
 
@@ -154,11 +158,33 @@ FlowResult viscous_result(const Case& c, const NsParams& p, const UnsteadyResult
 
 namespace {
 
+/// The steady result of a converged Newton solve, with its status line and solve time (one history sample)
+/// and, when computed, the leading eigenvalue of its linear stability.
+FlowResult steady_result(const Case& c, const NsParams& p, const PolarGrid& g, NsState state,
+                         const std::string& status, double wall_seconds, const StabilityResult* stab) {
+  UnsteadyResult u;
+  u.state = std::move(state);
+  u.steady = u.converged = true;
+  u.message = status;
+  const ViscousForces f = viscous_forces(g, p, c.scene.density, u.state);
+  u.history = {force_sample(0.0, f)};
+  u.has_coefficients = f.C_L.has_value();
+  u.C_L_mean = f.C_L.value_or(0.0), u.C_D_mean = f.C_D.value_or(0.0), u.C_M_mean = f.C_M.value_or(0.0);
+  u.M_mean = f.M;
+  u.reference_speed = c.scene.reference_speed();
+  u.wall_seconds = wall_seconds;
+  FlowResult r = viscous_result(c, p, u, {});
+  if (stab && !stab->eigenvalues.empty()) {
+    r.viscous->eigenvalue_real = stab->eigenvalues.front().real();
+    r.viscous->eigenvalue_imag = stab->eigenvalues.front().imag();
+  }
+  return r;
+}
+
 /// time.mode = "steady": Newton's method on the time stepper's discrete steady equations on four grids
 /// (a quarter, half, two thirds and all of the case's spacing), each from the previous one's state (the
 /// first from the potential flow with circulation), and C_D, C_L, L/D extrapolated from the last three
-/// (Richardson); a
-/// checkpoint's state is solved on the case's grid alone. The result has one history sample.
+/// (Richardson); a checkpoint's state is solved on the case's grid alone. The result has one history sample.
 FlowResult steady_by_newton(const Case& c, const NsParams& p, const PolarGrid& g, const Checkpoint* resume) {
   SteadyStudyOptions o;
   if (resume) o.scales = {1.0};
@@ -171,22 +197,63 @@ FlowResult steady_by_newton(const Case& c, const NsParams& p, const PolarGrid& g
         study.message, nr.residuals.empty() ? 0.0 : nr.residuals.back(), nr.iterations));
   }
   const NewtonResult& nr = study.levels.back().newton;
-  UnsteadyResult u;
-  u.state = std::move(study.state);
+  const std::string status = fmt::format("steady, by Newton's method: {}, residual {:.1e}", study.message,
+                                         nr.residuals.empty() ? 0.0 : nr.residuals.back());
+  NsState state = std::move(study.state);
   study.state = NsState{};
-  u.steady = u.converged = true;
-  u.message = fmt::format("steady, by Newton's method: {}, residual {:.1e}", study.message,
-                          nr.residuals.empty() ? 0.0 : nr.residuals.back());
-  const ViscousForces f = viscous_forces(g, p, c.scene.density, u.state);
-  u.history = {force_sample(0.0, f)};
-  u.has_coefficients = f.C_L.has_value();
-  u.C_L_mean = f.C_L.value_or(0.0), u.C_D_mean = f.C_D.value_or(0.0), u.C_M_mean = f.C_M.value_or(0.0);
-  u.M_mean = f.M;
-  u.reference_speed = c.scene.reference_speed();
-  u.wall_seconds = study.wall_seconds;
-  FlowResult r = viscous_result(c, p, u, {});
+  FlowResult r = steady_result(c, p, g, std::move(state), status, study.wall_seconds, nullptr);
   r.viscous->steady_study = std::move(study);
   return r;
+}
+
+/// What time.mode = "auto" decided before marching (empty `steady` when it marches).
+struct AutoChoice {
+  std::optional<FlowResult> steady;
+  std::string why;  ///< for the status line of a marched run
+  std::optional<std::complex<double>> eigenvalue;
+};
+
+/// time.mode = "auto": Newton from the potential flow; a converged state that is linearly stable (leading
+/// eigenvalue Re λ < 0) is the result; otherwise the flow is marched in time. Where shedding is certain
+/// the two solves are skipped: α = 0 … 1 at Re ≥ 60 lies well inside the shedding region (Re_c ≈ 47 at
+/// α = 0, and the critical spin ratio rises with Re, about 1.9 at Re 100).
+AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g) {
+  AutoChoice a;
+  const double Re = p.reynolds(), alpha = p.U > 0.0 ? std::fabs(p.a * p.omega / p.U) : 0.0;
+  if (Re >= 60.0 && alpha <= 1.0) {
+    a.why = fmt::format("auto: marched in time (Re {:.4g} ≥ 60, α {:.3g} ≤ 1: the wake sheds); ", Re, alpha);
+    return a;
+  }
+  NewtonOptions o;
+  o.max_iterations = 15;
+  const NewtonResult nr = solve_steady(p, potential_guess(p, g), o);
+  if (!nr.converged) {
+    a.why = fmt::format("auto: marched in time (no steady state by Newton: {}); ", nr.message);
+    return a;
+  }
+  StabilityResult st;
+  try {
+    st = leading_eigenvalues(p, nr.state, 4);
+  } catch (const std::exception& e) {
+    a.why = fmt::format("auto: marched in time (stability not computed: {}); ", e.what());
+    return a;
+  }
+  if (st.eigenvalues.empty()) {
+    a.why = fmt::format("auto: marched in time (steady state found, {}); ", st.message);
+    return a;
+  }
+  const std::complex<double> l = st.eigenvalues.front();
+  a.eigenvalue = l;
+  const std::string lam = fmt::format("leading eigenvalue {:.4g} {:+.4g}i U/D, St {:.4g}", l.real(), l.imag(),
+                                      st.strouhal());
+  if (st.stable)
+    a.steady = steady_result(c, p, g, nr.state,
+                             fmt::format("auto: stable ({}); steady, by Newton's method: {} steps, residual {:.1e}",
+                                         lam, nr.iterations, nr.residuals.empty() ? 0.0 : nr.residuals.back()),
+                             nr.wall_seconds + st.seconds, &st);
+  else
+    a.why = fmt::format("auto: marched in time (the steady state is unstable: {}); ", lam);
+  return a;
 }
 
 }  // namespace
@@ -204,6 +271,11 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
   const double unit = time_unit(sc);
 
   if (c.time.mode == TimeMode::steady) return steady_by_newton(c, p, g, resume);
+  AutoChoice choice;
+  if (c.time.mode == TimeMode::automatic && !resume) {
+    choice = auto_steady(c, p, g);
+    if (choice.steady) return std::move(*choice.steady);
+  }
 
   NsState start;
   if (resume) {
@@ -253,10 +325,16 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
     }
     return !hooks.on_step || hooks.on_step(s, f);
   };
-  const UnsteadyResult run = run_unsteady(p, o, std::move(start), std::move(history));
+  UnsteadyResult run = run_unsteady(p, o, std::move(start), std::move(history));
+  run.message = choice.why + run.message;
   if (!run.ok) throw std::runtime_error(run.message);  // the last checkpoint stays as it was
   if (run.interrupted && hooks.on_checkpoint) hooks.on_checkpoint({run.state, run.history, {snaps.begin(), snaps.end()}});
-  return viscous_result(c, p, run, {snaps.begin(), snaps.end()});
+  FlowResult r = viscous_result(c, p, run, {snaps.begin(), snaps.end()});
+  if (choice.eigenvalue) {
+    r.viscous->eigenvalue_real = choice.eigenvalue->real();
+    r.viscous->eigenvalue_imag = choice.eigenvalue->imag();
+  }
+  return r;
 }
 
 }  // namespace magnus

@@ -62,6 +62,11 @@ class SteadyJacobian {
   const NsParams& params() const { return p_; }
   /// Unknowns 2·n_r·n_θ + 1.
   long size() const { return size_; }
+  /// The ζ rows' scale (a/U, s; residual() multiplies them by h²/ν first): linear stability's mass matrix
+  /// on interior ζ rows is zeta_row_scale()·h²·J/ν (s·s/m²·m² = s), so M x_t = F(x) is the time stepper.
+  double zeta_row_scale() const { return s_zeta_; }
+  /// Δξ of the grid.
+  double d_xi() const { return h_; }
 
   /// x = (ψ_q, ζ_q interleaved, Γ_R) of a state, and back (t = 0 and no AB2 history: advance()'s first,
   /// Euler-advection step has the same fixed points as its AB2 steps).

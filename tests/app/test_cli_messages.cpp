@@ -151,7 +151,7 @@ TEST_CASE("command-line messages: one exact line each, with the exit status", "[
        "magnus: error: --tolerance 1e-15: must be between 1e-14 and 0.1\n"},
       {{"frobnicate"},
        2,
-       "magnus: unknown command 'frobnicate' (commands: run, inspect, sweep, compare, plot, bench, probe, merge; "
+       "magnus: unknown command 'frobnicate' (commands: run, inspect, sweep, compare, plot, bench, probe, merge, stability; "
        "see "
        "magnus --help)\n"},
       {{"run", demo, "--tolerance", "1e-6", "--set", "grid.spacing=uniform", "-o", dir + "/r.h5"},

@@ -252,10 +252,14 @@ TEST_CASE("navier-stokes run in steady mode: Newton's state is the time stepper'
   REQUIRE(m.status == 0);
   const FlowResult a = read_result(dir + "/n.h5"), b = read_result(dir + "/m.h5");
   REQUIRE(a.viscous->status.find("steady, by Newton") == 0);
-  REQUIRE(b.viscous->status == "steady");  // marched until C_L, C_D were flat to 1e-5 over 10 D/U
-  // The march stops when the forces change by < 1e-5 over 10 D/U, still creeping towards the steady state
-  // (a long march meets Newton's state to 2e-10: tests/solver/test_ns_newton.cpp): 5e-4 here.
-  REQUIRE(*a.viscous->cl_mean == Approx(*b.viscous->cl_mean).margin(5e-4));
-  REQUIRE(*a.viscous->cd_mean == Approx(*b.viscous->cd_mean).margin(5e-4));
+  // "auto" solves by Newton too, checks the state's linear stability (Re 20: stable) and keeps it.
+  INFO(b.viscous->status);
+  REQUIRE(b.viscous->status.find("auto: stable (leading eigenvalue") == 0);
+  REQUIRE(b.viscous->status.find("steady, by Newton") != std::string::npos);
+  REQUIRE(b.viscous->eigenvalue_real.has_value());
+  REQUIRE(*b.viscous->eigenvalue_real < 0.0);
+  REQUIRE(*a.viscous->cl_mean == Approx(*b.viscous->cl_mean).margin(1e-9));
+  REQUIRE(*a.viscous->cd_mean == Approx(*b.viscous->cd_mean).margin(1e-9));
+  REQUIRE(!a.viscous->eigenvalue_real.has_value());  // "steady" does not compute it: undefined
   REQUIRE(a.viscous->history.size() == 1);
 }

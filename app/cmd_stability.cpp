@@ -1,0 +1,117 @@
+// magnus stability CASE [--set k=v]… [--critical-spin A:B] [--tolerance T] [--json]
+// The steady state's leading eigenvalues (growth rate, St; stable or not), or the critical spin ratio.
+#include <fmt/core.h>
+
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "app/commands.hpp"
+#include "io/case_file.hpp"
+#include "io/json_output.hpp"
+#include "postproc/ns_critical.hpp"
+#include "postproc/viscous_run.hpp"
+
+namespace magnus {
+
+namespace {
+
+struct StabilityCliOptions {
+  std::string case_path, critical;
+  std::vector<std::string> sets;
+  double tolerance = 0.01;
+  bool json = false;
+};
+
+std::string eig_text(const std::complex<double>& l) {
+  return fmt::format("{:+.5f} {:+.5f}i   St {:.4f}", l.real(), l.imag(), std::fabs(l.imag()) / (2.0 * M_PI));
+}
+
+Json eig_json(const StabilityResult& s) {
+  Json a = Json::array();
+  for (const auto& l : s.eigenvalues)
+    a.push_back({{"growth_rate", l.real()}, {"frequency", l.imag()}, {"strouhal", std::fabs(l.imag()) / (2.0 * M_PI)}});
+  return a;
+}
+
+void command_stability(const StabilityCliOptions& o) {
+  const Case c = load_case(o.case_path, o.sets);
+  if (c.model != FlowModel::navier_stokes)
+    throw std::runtime_error(o.case_path + ": magnus stability needs model.flow = \"navier-stokes\"");
+  const NsParams p = ns_params(c);
+  if (!(p.U > 0.0)) throw std::runtime_error(o.case_path + ": flow.speed must be > 0 (eigenvalues in U/D)");
+  const double alpha = p.a * p.omega / p.U;
+  std::string text;
+  Json j;
+  if (o.critical.empty()) {
+    const SpinStability s = spin_stability(p, alpha, nullptr, 6);
+    if (!s.converged)
+      throw std::runtime_error(fmt::format("{}: Newton's method found no steady state (Re {:.4g}, α {:g})",
+                                           o.case_path, p.reynolds(), alpha));
+    const StabilityResult& st = s.stability;
+    if (st.eigenvalues.empty()) throw std::runtime_error(o.case_path + ": " + st.message);
+    text += fmt::format("steady state   Re {:.4g}, α {:g}: Newton {:.2f} s, eigenvalues {:.2f} s\n", p.reynolds(),
+                        alpha, s.newton_seconds, st.seconds);
+    text += "eigenvalues    λ·D/U (growth rate, frequency), rightmost first\n";
+    for (const auto& l : st.eigenvalues) text += "               " + eig_text(l) + "\n";
+    text += fmt::format("verdict        {} (leading growth rate {:+.5f} U/D{})\n",
+                        st.stable ? "STABLE: the steady flow persists" : "UNSTABLE: the wake sheds",
+                        st.growth_rate(),
+                        st.eigenvalues.front().imag() != 0.0 ? fmt::format(", St {:.4f}", st.strouhal()) : "");
+    j = {{"reynolds", p.reynolds()}, {"spin_ratio", alpha}, {"stable", st.stable}, {"eigenvalues", eig_json(st)},
+         {"seconds", s.newton_seconds + st.seconds}};
+  } else {
+    const size_t colon = o.critical.find(':');
+    double A = 0.0, B = 0.0;
+    try {
+      if (colon == std::string::npos) throw std::invalid_argument("");
+      size_t ea = 0, eb = 0;
+      const std::string sa = o.critical.substr(0, colon), sb = o.critical.substr(colon + 1);
+      A = std::stod(sa, &ea), B = std::stod(sb, &eb);
+      if (ea != sa.size() || eb != sb.size()) throw std::invalid_argument("");
+    } catch (const std::exception&) {
+      throw std::invalid_argument("--critical-spin: expected A:B (two spin ratios), got \"" + o.critical + "\"");
+    }
+    const CriticalSpin cs = critical_spin(p, A, B, o.tolerance, [&](const SpinStability& s) {
+      if (!o.json)
+        std::fprintf(stderr, "  α = %-9.5g growth rate %+.5f U/D  (%s)\n", s.alpha, s.growth(),
+                     s.growth() < 0.0 ? "stable" : "unstable");
+    });
+    text += fmt::format("critical α     {:.4f}  (Re {:.4g}; bracket [{:.4f}, {:.4f}], {} steady states, {:.1f} s)\n",
+                        cs.alpha_c, p.reynolds(), cs.lo, cs.hi, cs.evaluations.size(), cs.seconds);
+    const auto pair = [](const SpinStability& s) { return s.stability.leading_pair().value_or(s.stability.eigenvalues.front()); };
+    text += "leading pair   λ·D/U at the ends of the bracket asked for\n";
+    text += fmt::format("at α = {:<7g} {}  ({})\n", A, eig_text(pair(cs.at_a)),
+                        cs.at_a.growth() < 0.0 ? "decays" : "grows");
+    text += fmt::format("at α = {:<7g} {}  ({})\n", B, eig_text(pair(cs.at_b)),
+                        cs.at_b.growth() < 0.0 ? "decays" : "grows");
+    j = {{"reynolds", p.reynolds()},
+         {"critical_spin_ratio", cs.alpha_c},
+         {"bracket", {cs.lo, cs.hi}},
+         {"at_a", {{"spin_ratio", A}, {"stable", cs.at_a.stability.stable}, {"eigenvalues", eig_json(cs.at_a.stability)}}},
+         {"at_b", {{"spin_ratio", B}, {"stable", cs.at_b.stability.stable}, {"eigenvalues", eig_json(cs.at_b.stability)}}},
+         {"seconds", cs.seconds}};
+  }
+  if (o.json)
+    std::fputs((json_text(j) + "\n").c_str(), stdout);
+  else
+    std::fputs(text.c_str(), stdout);
+}
+
+}  // namespace
+
+void add_stability_command(CLI::App& app) {
+  auto o = std::make_shared<StabilityCliOptions>();
+  auto* cmd = app.add_subcommand(
+      "stability", "linear stability of the steady viscous state: leading eigenvalues, or the critical spin ratio");
+  cmd->add_option("case", o->case_path, "case file (TOML, model.flow = \"navier-stokes\")")->required();
+  cmd->add_option("--set", o->sets, "override a case key: section.key=value (repeatable)");
+  cmd->add_option("--critical-spin", o->critical, "bisect on the growth rate over spin ratios A:B");
+  cmd->add_option("--tolerance", o->tolerance, "bracket width of the critical spin ratio (default 0.01)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--json", o->json, "print one JSON object instead of the table");
+  cmd->callback([o] { command_stability(*o); });
+}
+
+}  // namespace magnus

@@ -1,0 +1,72 @@
+#pragma once
+// Linear stability of a steady viscous state: the leading eigenvalues of the time stepper's equations
+// linearised about it. With F the steady residual of SteadyJacobian (rows scaled as there) the stepper is
+//     M x_t = F(x),   M = diag(s_ζ·h²·J_i/ν) on the ζ rows of rings 1…n_r−2, 0 on the algebraic rows
+// (ψ rows, the wall ζ row (Thom), inflow ζ rows on R: these hold at every instant), so a small
+// perturbation x' e^{λt} obeys the generalised problem  J x' = λ M x',  J = ∂F/∂x at the state.
+// The outflow ζ rows on R and the Γ_R row are dynamic in the stepper (ζ_t = −(ψ_θ/R²)ζ_ξ, dΓ_R/dt = flux)
+// and carry those time derivatives in M: with them algebraic, Γ_R would follow the far field's tiny
+// vorticity at once, and the leading pair at Re 80 came out at 0.24 + 0.91i instead of the stepper's
+// 0.074 + 0.68i (U/D).
+// M is singular: the problem has infinite eigenvalues. Shift-invert removes them: the operator
+// (J − σM)⁻¹M maps an eigenpair (λ, x) to μ = 1/(λ − σ) and the infinite ones to μ = 0. Each shift σ
+// (complex, UMFPACK's complex LU) gets a complex Arnoldi factorisation (modified Gram–Schmidt twice,
+// explicit restarts) whose Ritz values μ give λ = σ + 1/μ; a value is kept when its residual
+// ‖J x − λ M x‖ is small relative to ‖J x‖ + |λ|·‖M x‖.
+//
+// Finding the rightmost pair: shift-invert converges first to the eigenvalues nearest σ. The default
+// shifts sit just right of the imaginary axis, σ·D/U = 0.1 + i·{0, 0.55, 0.95, 1.4}: a steady (Im λ = 0) mode and
+// the wake's Hopf pair (Im λ·D/U = 2π·St ≈ 0.75–1.1 for St 0.12–0.17) lie near them. The eigenvalues of
+// all shifts are merged (conjugates added: the problem is real) and sorted by real part. An eigenvalue with
+// a larger real part that none of the shifts found would have to lie farther from every shift than the
+// eigenvalues they did find (reported in `reach`, U/D); the wake's modes of higher frequency are damped.
+#include <complex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "solver/navier_stokes.hpp"
+
+namespace magnus {
+
+/// How leading_eigenvalues searches.
+struct StabilityOptions {
+  /// Shifts σ in units of U/D (U → a|ω| when U = 0); the conjugates of their eigenvalues come free.
+  std::vector<std::complex<double>> shifts{{0.1, 0.0}, {0.1, 0.55}, {0.1, 0.95}, {0.1, 1.4}};
+  int krylov = 40;        ///< Arnoldi vectors per restart (≥ count + 10)
+  int restarts = 2;       ///< explicit restarts per shift when fewer than `count` Ritz values converged
+  /// Relative residual ‖Jx − λMx‖/(‖Jx‖ + |λ|‖Mx‖) of an accepted eigenpair (the complex LU's solves
+  /// reach 1e-8…1e-6 on the leading pairs; λ is then good to about that relative accuracy).
+  double tol = 1e-6;
+  unsigned seed = 12345;  ///< of the random start vector (results do not depend on it beyond tol)
+};
+
+/// The leading eigenvalues and the state they belong to.
+struct StabilityResult {
+  std::vector<std::complex<double>> eigenvalues;  ///< rightmost first (Im ≥ 0 first in a pair), U/D
+  bool stable = false;  ///< every eigenvalue found has Re λ < 0 (false when none was found)
+  double seconds = 0.0;  ///< wall time, s
+  std::string message;   ///< what was found (or why nothing was)
+  double reach = 0.0;    ///< per shift the distance to its farthest accepted eigenvalue, the minimum, U/D
+  /// The leading eigenvector (ψ, ζ fields row-major as NsState, complex; Γ_R), normalised to max |ζ| = 1.
+  std::vector<std::complex<double>> mode_psi, mode_zeta;
+  std::complex<double> mode_Gamma_R;
+  /// Growth rate Re λ and Strouhal number |Im λ|/(2π) of the leading eigenvalue (U/D units, so St = f·D/U).
+  double growth_rate() const { return eigenvalues.empty() ? 0.0 : eigenvalues.front().real(); }
+  double strouhal() const;
+  /// The rightmost complex pair's member with Im λ > 0 (the wake's Hopf mode), if one was found. The
+  /// spectrum also holds slow real modes of the far field (Re λ·D/U ≈ −0.001 … −0.003 at R = 40a: the
+  /// circulation on R relaxing through the outflow), which lead whenever the wake is stable.
+  std::optional<std::complex<double>> leading_pair() const;
+};
+
+/// The leading eigenvalues at a steady state of p (a converged solve_steady state on ns_grid(p)). Throws
+/// std::invalid_argument for a state of the wrong size, std::runtime_error when a factorisation fails.
+StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, int count = 6);
+StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, int count,
+                                    const StabilityOptions& o);
+
+/// The speed the eigenvalues are made dimensionless with: U, or a|ω| when U = 0, or ν/a (m/s).
+double stability_speed(const NsParams& p);
+
+}  // namespace magnus

@@ -1,0 +1,67 @@
+// The critical spin ratio at Re = 100 on the default grid (label `validation`, many minutes): linear
+// stability of the Newton steady state against Kang, Choi & Lee 1999 (α_c ≈ 1.9 at Re 100) and
+// Stojković, Breuer & Durst 2002 (steady flow at α = 2); then the time stepper itself on either side.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+
+#include "postproc/ns_critical.hpp"
+#include "postproc/unsteady.hpp"
+
+using namespace magnus;
+
+namespace {
+
+NsParams re100() {
+  NsParams p;  // the default grid: n_θ = 192, R = 100a
+  p.a = 0.5, p.U = 1.0, p.nu = 1.0 / 100.0;
+  return p;
+}
+
+/// The time stepper from the steady state at α plus a weak vortex; the C_L amplitude at t_end.
+UnsteadyResult march(double alpha, double t_end, const NsState& steady) {
+  NsParams p = re100();
+  p.omega = alpha * p.U / p.a;
+  const PolarGrid g = ns_grid(p);
+  NsState s = steady;
+  add_vortex_blob(g, s, 1.5, 0.3, 0.25, 1e-2);
+  UnsteadyOptions o;
+  o.t_end = t_end;
+  o.steady_tol = 0.0;  // march to t_end
+  return run_unsteady(p, o, std::move(s));
+}
+
+}  // namespace
+
+TEST_CASE("[validation][stability] Re 100: the critical spin ratio lies in 1.8–2.0 and the stepper agrees",
+          "[validation][stability]") {
+  const CriticalSpin c = critical_spin(re100(), 1.6, 2.2, 0.01, [](const SpinStability& s) {
+    std::printf("  alpha %.5f growth %+.5f St %.4f\n", s.alpha, s.growth(), s.stability.strouhal());
+    std::fflush(stdout);
+  });
+  std::printf("Re 100: alpha_c %.4f in [%.4f, %.4f], %zu steady states, %.1f s\n", c.alpha_c, c.lo, c.hi,
+              c.evaluations.size(), c.seconds);
+  CHECK(c.alpha_c > 1.8);
+  CHECK(c.alpha_c < 2.0);
+  CHECK(!c.at_a.stability.stable);
+  CHECK(c.at_b.stability.stable);
+
+  // The time stepper on either side, from the steady state plus a disturbance: at α_c − 0.1 the lift
+  // oscillates with a clear amplitude; at α_c + 0.1 the disturbance dies away.
+  const double below = c.alpha_c - 0.1, above = c.alpha_c + 0.1;
+  const SpinStability sb = spin_stability(re100(), below, nullptr);
+  const SpinStability sa = spin_stability(re100(), above, nullptr);
+  REQUIRE(sb.converged);
+  REQUIRE(sa.converged);
+  const UnsteadyResult rb = march(below, 400.0, sb.state), ra = march(above, 400.0, sa.state);
+  const auto amplitude = [](const UnsteadyResult& r) {
+    double lo = 1e300, hi = -1e300;  // over the last 20 D/U
+    for (const auto& f : r.history)
+      if (f.t > r.state.t - 20.0) lo = std::min(lo, f.C_L), hi = std::max(hi, f.C_L);
+    return 0.5 * (hi - lo);
+  };
+  std::printf("stepper: alpha %.3f C_L amplitude %.4g; alpha %.3f C_L amplitude %.4g\n", below, amplitude(rb),
+              above, amplitude(ra));
+  CHECK(amplitude(rb) > 0.05);
+  CHECK(amplitude(ra) < 1e-3);
+}
