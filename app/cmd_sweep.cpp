@@ -31,6 +31,7 @@ struct SweepOptions {
   std::vector<std::string> sets;
   int threads = 1;
   bool quiet = false, json = false, steady_only = false;
+  std::string stability = "eigenvalues";
 };
 
 /// "K/N" with 1 ≤ K ≤ N (whole numbers); throws std::invalid_argument with one line.
@@ -65,7 +66,8 @@ void command_ns_sweep(const SweepOptions& o, const Case& c, const SweepRange& al
     if (!p->empty()) check_writable(*p);
   const PlotSize size = o.size.empty() ? PlotSize{} : parse_plot_size(o.size);
   mo.threads = o.threads;
-  if (!o.steady_only) mo.stability = make_stability_hook();
+  if (!o.steady_only)
+    mo.stability = make_stability_hook(o.stability == "march" ? StabilityMethod::march : StabilityMethod::eigenvalues);
   mo.average_unstable = !o.steady_only;
   if (!o.quiet)
     mo.on_point = [](const NsMapPoint& p) {
@@ -110,9 +112,9 @@ void command_sweep(const SweepOptions& o) {
       throw std::runtime_error("--circulation: a navier-stokes sweep varies the spin ratio (--spin-ratio)");
     return command_ns_sweep(o, c, range);
   }
-  if (!o.reynolds.empty() || !o.shard.empty() || o.steady_only)
+  if (!o.reynolds.empty() || !o.shard.empty() || o.steady_only || o.stability != "eigenvalues")
     throw std::runtime_error(
-        fmt::format("{}: --reynolds, --shard and --steady-only need a navier-stokes case", o.case_path));
+        fmt::format("{}: --reynolds, --shard, --steady-only and --stability need a navier-stokes case", o.case_path));
   if (o.json && is_stdout(o.csv))
     throw std::runtime_error("--json and --csv -: both would go to standard output; name a file for one");
   // Fail before solving, not after.
@@ -188,6 +190,10 @@ void add_sweep_command(CLI::App& app) {
                     "navier-stokes: compute only the K-th of N interleaved slices of the Re rows (K/N)");
   sweep->add_flag("--steady-only", o->steady_only,
                   "navier-stokes: the steady branch only (no stability test, no time averages)");
+  sweep->add_option("--stability", o->stability,
+                    "navier-stokes: eigenvalues (the Jacobian's leading pair, default) or march (the linearised "
+                    "time stepper's growth: cheaper on coarse grids)")
+      ->check(CLI::IsMember({"eigenvalues", "march"}));
   sweep->add_option("--set", o->sets, "override a case key: section.key=value (repeatable)");
   sweep->add_option("--csv", o->csv, "write the table as CSV");
   sweep->add_option("-o,--output", o->output, "write the table as HDF5 (format magnus-sweep)");

@@ -1,5 +1,7 @@
 #include "postproc/ns_continuation.hpp"
 
+#include "solver/ns_stability.hpp"
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -308,14 +310,14 @@ std::optional<bool> stability_by_marching(const NsParams& p, const NsState& stea
   return std::nullopt;
 }
 
-StabilityHook make_stability_hook() {
-  // LEAD: replace by leading_eigenvalues (solver/ns_stability.hpp) after the "stab" merge, e.g.
-  //   return [](const NsParams& p, const NsState& s) -> std::optional<bool> {
-  //     const StabilityResult r = leading_eigenvalues(p, s);
-  //     if (r.eigenvalues.empty()) return std::nullopt;
-  //     return r.stable;
-  //   };
-  return [](const NsParams& p, const NsState& s) { return stability_by_marching(p, s); };
+StabilityHook make_stability_hook(StabilityMethod m) {
+  if (m == StabilityMethod::march)
+    return [](const NsParams& p, const NsState& s) { return stability_by_marching(p, s); };
+  return [](const NsParams& p, const NsState& s) -> std::optional<bool> {
+    const StabilityResult r = leading_eigenvalues(p, s);
+    if (r.eigenvalues.empty()) return std::nullopt;
+    return r.stable;
+  };
 }
 
 NsMap ns_map(const Case& c, const NsMapOptions& o) {

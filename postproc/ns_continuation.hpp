@@ -30,7 +30,8 @@ using StabilityHook = std::function<std::optional<bool>(const NsParams&, const N
 /// The interim hook: march the steady state plus a weak off-axis vortex (circulation 1e-4·U·D) with the
 /// time stepper for `span` convective times D/U and fit the growth rate σ of the perturbation's norm
 /// ‖ζ − ζ_s‖ over the second half: stable when σ·D/U < −margin, unstable when > margin, else undecided.
-/// The lead will replace it by solver/ns_stability.hpp's leading_eigenvalues (see make_stability_hook).
+/// A cheap verdict (the linearised time stepper's growth, measured); make_stability_hook's default is the
+/// Jacobian's leading eigenvalues.
 std::optional<bool> stability_by_marching(const NsParams& p, const NsState& steady, double span = 30.0,
                                           double margin = 2e-3);
 
@@ -95,10 +96,13 @@ std::vector<int> shard_rows(int rows, int shard, int shards);
 /// is not navier-stokes, U = 0, unsorted α, Re ≤ 0, or a bad shard.
 NsMap ns_map(const Case& c, const NsMapOptions& o);
 
-/// The stability hook the map uses by default. LEAD: after merging the "stab" branch, return a hook that
-/// calls leading_eigenvalues(p, steady) from solver/ns_stability.hpp (stable ↦ result.stable, an empty
-/// optional when its message says it failed) instead of stability_by_marching.
-StabilityHook make_stability_hook();
+/// How a map decides stability: the leading eigenvalues of the steady Jacobian (solver/ns_stability: shift-invert
+/// Arnoldi, exact for the discrete equations), or stability_by_marching (cheaper on coarse grids, can be
+/// undecided when the growth rate is within its margin of 0).
+enum class StabilityMethod { eigenvalues, march };
+
+/// The stability hook of a method: stable ↦ true, unstable ↦ false, undecided or failed ↦ empty.
+StabilityHook make_stability_hook(StabilityMethod m = StabilityMethod::eigenvalues);
 
 // --- pseudo-arclength continuation on an abstract problem F(x, λ) = 0 (tested on known curves) ---
 
