@@ -7,6 +7,7 @@
 #include "io/finite.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/report.hpp"
+#include "io/report_scene.hpp"
 #include "io/report_steady.hpp"
 
 namespace magnus {
@@ -105,6 +106,7 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
     line("", fmt::format("steady potential vortex: −4πμa²ω = {} N·m/m (this run: {:+.2f}%)", num(exact, "{:.6g}"),
                          exact != 0.0 ? 100.0 * (v.torque_mean / exact - 1.0) : 0.0));
   }
+  s += scene_lines(r);  // direction, a rotor sail's course, the span's totals
   std::string sep;
   for (double th : v.separation) sep += (sep.empty() ? "" : ", ") + fmt::format("{:.2f}°", th * 180.0 / M_PI);
   line("separation", sep.empty() ? "none (τ_w keeps its sign)" : "τ_w = 0 at θ = " + sep + " (last step)");
