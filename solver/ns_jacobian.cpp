@@ -1,6 +1,7 @@
 // The analytic Jacobian of the steady viscous equations (see ns_newton.hpp): its triplet pattern, built once,
 // and its values at a state, summed into compressed columns for UMFPACK.
 #include "solver/ns_newton.hpp"
+#include "solver/umfpack_error.hpp"
 
 #include <umfpack.h>
 
@@ -47,15 +48,6 @@ constexpr ArakawaTerm kArakawa[24] = {
     {+1, -1, +1, 0, +1},
     {+1, +1, -1, 0, -1},
     {-1, -1, -1, 0, -1}};
-
-/// One line for a failed UMFPACK call (the same wording as ns_newton.cpp's).
-std::string triplet_error(const char* what, long status) {
-  std::string s =
-      std::string("SteadyJacobian: UMFPACK ") + what + " failed (status " + std::to_string(status);
-  if (status == UMFPACK_WARNING_singular_matrix) s += ": the Jacobian is singular";
-  if (status == UMFPACK_ERROR_out_of_memory) s += ": out of memory";
-  return s + ")";
-}
 
 }  // namespace
 
@@ -134,7 +126,7 @@ void SteadyJacobian::assemble(const std::vector<double>& x) {
     Map_.resize(Ti_.size());
     const long status = umfpack_dl_triplet_to_col(size_, size_, long(Ti_.size()), Ti_.data(), Tj_.data(),
                                                   nullptr, Ap_.data(), Ai_.data(), nullptr, Map_.data());
-    if (status != UMFPACK_OK) throw std::runtime_error(triplet_error("triplet_to_col", status));
+    if (status != UMFPACK_OK) throw std::runtime_error(umfpack_error("triplet_to_col", status));
     Ai_.resize(size_t(Ap_.back()));
     Ax_.resize(size_t(Ap_.back()));
   }

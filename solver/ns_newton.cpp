@@ -1,6 +1,7 @@
 #include "solver/ns_newton.hpp"
 
 #include "solver/arakawa.hpp"
+#include "solver/umfpack_error.hpp"
 
 #include <dlfcn.h>
 #include <umfpack.h>
@@ -68,6 +69,8 @@ class SingleThreadBlas {
   int saved_ = 1;
 };
 
+}  // namespace
+
 std::string umfpack_error(const char* what, long status) {
   std::string s =
       std::string("SteadyJacobian: UMFPACK ") + what + " failed (status " + std::to_string(status);
@@ -75,8 +78,6 @@ std::string umfpack_error(const char* what, long status) {
   if (status == UMFPACK_ERROR_out_of_memory) s += ": out of memory";
   return s + ")";
 }
-
-}  // namespace
 
 SteadyJacobian::SteadyJacobian(const NsParams& p) : p_(p) {
   NsOperator check(p, 1.0);  // the stepper's own parameter checks (and grid)
