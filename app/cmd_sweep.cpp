@@ -58,8 +58,9 @@ void command_ns_sweep(const SweepOptions& o, const Case& c, const SweepRange& al
   if (!o.shard.empty()) std::tie(mo.shard, mo.shards) = parse_shard(o.shard);
   // Bad shards fail before any solve.
   shard_rows(mo.reynolds.empty() ? 1 : int(mo.reynolds.size()), mo.shard, mo.shards);
-  if (o.json) throw std::runtime_error("--json: not available for a navier-stokes sweep (use --csv -)");
-  if (!o.quiet && is_stdout(o.csv))
+  if (o.json && is_stdout(o.csv))
+    throw std::runtime_error("--json and --csv -: both would go to standard output; name a file for one");
+  if (!o.quiet && !o.json && is_stdout(o.csv))
     throw std::runtime_error("--csv -: add -q (the table also goes to standard output)");
   check_distinct_paths({o.case_path}, {o.csv, o.output, o.plot});
   for (const std::string* p : {&o.csv, &o.output, &o.plot})
@@ -80,11 +81,15 @@ void command_ns_sweep(const SweepOptions& o, const Case& c, const SweepRange& al
   if (!o.csv.empty()) write_text_output(o.csv, ns_map_csv(m));
   if (!o.output.empty()) write_ns_map_hdf5(m, o.output);
   if (!o.plot.empty()) plot_ns_map(m, o.plot, size);
-  if (o.quiet) return;
-  std::string text = ns_map_table(m);
   std::vector<std::string> written;
   for (const std::string* p : {&o.csv, &o.output, &o.plot})
-    if (!p->empty()) written.push_back(*p);
+    if (!p->empty() && !is_stdout(*p)) written.push_back(*p);
+  if (o.json) {
+    std::fputs(ns_map_json(m, written).c_str(), stdout);
+    return;
+  }
+  if (o.quiet) return;
+  std::string text = ns_map_table(m);
   if (!written.empty()) {
     std::string list;
     for (const auto& w : written) list += (list.empty() ? "" : ", ") + w;

@@ -10,6 +10,7 @@
 
 #include "io/case_file.hpp"
 #include "io/hdf5_io.hpp"
+#include "io/json_output.hpp"
 #include "io/text_format.hpp"
 
 namespace magnus {
@@ -111,6 +112,32 @@ std::string ns_map_table(const NsMap& m) {
                      p.fold ? std::string("fold") : source_short(p.source), p.newton_steps, p.arclength_steps,
                      cell(p.seconds, "{:.2f}"));
   return t;
+}
+
+std::string ns_map_json(const NsMap& m, const std::vector<std::string>& written) {
+  Json j;
+  j["software_version"] = MAGNUS_VERSION;
+  j["model"] = "navier-stokes";
+  j["title"] = m.base.title;
+  j["grid"] = {{"n_theta", count(m.n_theta)}, {"n_r", count(m.n_r)}, {"outer_radius", quantity(m.outer_over_a, "a")}};
+  j["shard"] = {{"k", count(m.shard)}, {"n", count(m.shards)}};
+  j["axes"] = {{"alpha", quantity(m.alphas, "1")}, {"reynolds", quantity(m.reynolds, "1")}};
+  j["timing"] = {{"total_s", quantity(m.total_s, "s")}, {"threads", count(m.threads)}};
+  Json cols = Json::object();
+  for (const auto& c : columns()) cols[c.name] = {{"units", c.units}, {"description", c.what}};
+  j["columns"] = std::move(cols);
+  Json points = Json::array();
+  for (const auto& p : m.points) {
+    Json q = Json::object();
+    for (const auto& c : columns()) {
+      const double v = c.get(p);
+      q[c.name] = quantity(std::isfinite(v) ? std::optional<double>(v) : std::nullopt, c.units);
+    }
+    points.push_back(std::move(q));
+  }
+  j["points"] = std::move(points);
+  j["output"] = written;
+  return json_text(j);
 }
 
 std::string ns_map_csv(const NsMap& m) {

@@ -14,6 +14,11 @@ std::string ns_map_table(const NsMap& m);
 /// CSV: one header line (names with units), one line per point; undefined values empty.
 std::string ns_map_csv(const NsMap& m);
 
+/// `magnus sweep --json` on a navier-stokes case: one JSON object with the table's figures: model, title,
+/// grid, shard, axes, timing, then "columns" (each column's units and description) and "points" (one object
+/// per point, each figure {"value", "units"}, null where undefined), and the files written.
+std::string ns_map_json(const NsMap& m, const std::vector<std::string>& written);
+
 /// HDF5, format "magnus-sweep" version 2, root model = "navier-stokes": root attributes (case text, shard,
 /// shards), /parameters (radius, speed, density, n_theta, n_r, outer_radius), /axes/alpha and
 /// /axes/reynolds (the whole map's axes), /timing, and one dataset per column in /sweep (row-major points

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "io/hdf5_io.hpp"
@@ -136,5 +137,37 @@ TEST_CASE("navier-stokes sweep: bad --shard values are refused in one line befor
     CHECK(one_line(o.err));
     CHECK(o.err.find(expect) != std::string::npos);
     CHECK_FALSE(fs::exists(dir + "/x.h5"));
+  }
+}
+
+TEST_CASE("navier-stokes sweep --json: every column of every point with its units, as in the file",
+          "[app][sweep][json]") {
+  const std::string dir = temp_dir("ns-sweep-json");
+  write_case(dir + "/c.toml", 32);
+  const Outcome o = magnus_cmd({"sweep", dir + "/c.toml", "--spin-ratio", "0:1:1", "--steady-only", "--json",
+                                "-o", dir + "/m.h5"},
+                               dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  const auto j = nlohmann::json::parse(o.out);  // throws (fails) on anything but one JSON object
+  const NsMap m = read_ns_map_hdf5(dir + "/m.h5");
+  REQUIRE(j["points"].size() == m.points.size());
+  REQUIRE(m.points.size() == 2);
+  CHECK(j["model"] == "navier-stokes");
+  CHECK(j["output"][0] == dir + "/m.h5");
+  const std::string csv = magnus_cmd({"sweep", dir + "/c.toml", "--spin-ratio", "0:1:1", "--steady-only", "-q",
+                                      "--csv", "-"},
+                                     dir)
+                              .out;
+  const std::string header = csv.substr(0, csv.find('\n'));
+  for (const auto& [name, col] : j["columns"].items()) {
+    INFO("column " << name);
+    CHECK(header.find(name) != std::string::npos);  // the same columns as the CSV
+    CHECK(col.contains("units"));
+    for (const auto& p : j["points"]) CHECK((p[name].contains("value") && p[name]["units"] == col["units"]));
+  }
+  for (size_t k = 0; k < m.points.size(); ++k) {
+    CHECK(j["points"][k]["cl"]["value"].get<double>() == m.points[k].cl);
+    CHECK(j["points"][k]["stable"]["value"].is_null());  // --steady-only: stability not decided
   }
 }
