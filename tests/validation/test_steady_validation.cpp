@@ -43,7 +43,7 @@ void compare(const char* what, double ours, double err, double published, const 
 
 }  // namespace
 
-TEST_CASE("[validation] steady Re 40, alpha 0: C_D to 4 digits and L/D by Richardson (Fornberg; Dennis & Chang)",
+TEST_CASE("[validation] steady Re 40, alpha 0: C_D to 4 digits and L/D by Richardson (Fornberg, Dennis & Chang)",
           "[validation]") {
   // Grids 64, 128, 170, 256 at R = 100a. Measured: C_D 1.49529 ± 0.00041 (−0.18% from Fornberg),
   // L/D 2.2378;
@@ -62,7 +62,7 @@ TEST_CASE("[validation] steady Re 40, alpha 0: C_D to 4 digits and L/D by Richar
   CHECK(st.recirculation->error < 0.01);
 }
 
-TEST_CASE("[validation] steady Re 20, alpha 0: C_D and L/D by Richardson (Fornberg; Dennis & Chang)",
+TEST_CASE("[validation] steady Re 20, alpha 0: C_D and L/D by Richardson (Fornberg, Dennis & Chang)",
           "[validation]") {
   // Measured: C_D 1.9963 ± 0.0003 (−0.18% from Fornberg, −2.4% from Dennis & Chang), L/D 0.9034 (−2.9%).
   const SteadyStudy st = study(20, 0.0, 192, 100.0);
