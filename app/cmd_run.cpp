@@ -39,9 +39,10 @@ void command_run(const std::string& case_path, const std::string& output,
   if (c.model == FlowModel::navier_stokes) {
     check_writable(checkpoint_path(c.output.file));
     check_output_space(c, c.output.file);
-    run_viscous_case(c, resume, quiet || json, threads);
-    // The JSON says what the file holds: the result is read back through the schema table.
-    if (json) std::fputs(json_text(result_json(read_result(c.output.file), c.output.file)).c_str(), stdout);
+    const FlowResult r = run_viscous_case(c, resume, quiet || json, threads);
+    // The JSON shows what the summary shows: the result in memory (which the file holds, and more: the
+    // steady grid study's levels are not stored).
+    if (json) std::fputs(json_text(result_json(r, c.output.file)).c_str(), stdout);
     return;
   }
   if (resume) throw std::runtime_error("--resume: only a navier-stokes case has checkpoints to resume from");

@@ -42,7 +42,7 @@ std::string clock_text(double seconds) {
 
 }  // namespace
 
-void run_viscous_case(const Case& c, bool resume, bool quiet, int threads) {
+FlowResult run_viscous_case(const Case& c, bool resume, bool quiet, int threads) {
   const std::string ckpt = checkpoint_path(c.output.file);
   std::unique_ptr<Checkpoint> start;
   if (resume) start = std::make_unique<Checkpoint>(read_checkpoint(ckpt, c));
@@ -98,6 +98,7 @@ void run_viscous_case(const Case& c, bool resume, bool quiet, int threads) {
   // --resume goes on from there.
   if (!r.viscous->partial) std::remove(ckpt.c_str());
   if (!quiet) std::fputs(summary_text(r, c.output.file).c_str(), stdout);
+  return r;
 }
 
 }  // namespace magnus

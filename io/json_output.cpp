@@ -176,6 +176,7 @@ Json viscous_derived(const FlowResult& r) {
       r.timing.solve_s > 0.0 ? std::optional<double>(double(v.steps) / r.timing.solve_s) : std::nullopt,
       "1/s");
   d["three_dimensional"] = v.reynolds && *v.reynolds > kReynolds3D;
+  if (v.steady_study) d["steady_study"] = json_parts::steady_study_json(*v.steady_study);
   if (sc.speed <= 0.0) {  // still fluid: the potential vortex u_θ = a²ω/r is an exact viscous solution
     const double nu = v.viscosity > 0.0 ? v.viscosity : sc.viscosity;
     const double exact = -4.0 * M_PI * sc.density * nu * sc.radius * sc.radius * sc.spin;

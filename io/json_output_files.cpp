@@ -229,4 +229,39 @@ Json inspect_json(const std::string& path) {
   return f.format() == "magnus-sweep" ? inspect_sweep(f) : inspect_flow(f);
 }
 
+namespace json_parts {
+
+Json steady_study_json(const SteadyStudy& st) {
+  Json levels = Json::array();
+  for (const SteadyLevel& lv : st.levels) {
+    Json l;
+    l["n_theta"] = count(lv.n_theta);
+    l["n_r"] = count(lv.n_r);
+    l["cd"] = quantity(lv.C_D, "1");
+    l["cl"] = quantity(lv.C_L, "1");
+    l["recirculation_length"] = quantity(lv.recirculation, "1");
+    l["residuals"] = quantity(lv.newton.residuals, "1");
+    l["factorisations"] = count(lv.newton.factorisations);
+    l["seconds"] = quantity(lv.newton.wall_seconds, "s");
+    levels.push_back(std::move(l));
+  }
+  const auto extrapolated = [](const std::optional<Richardson>& r) -> Json {
+    if (!r) return nullptr;
+    Json q = quantity(r->value, "1");
+    q["error"] = quantity(r->error, "1");
+    q["finest"] = quantity(r->finest, "1");
+    q["order"] = quantity(r->order, "1");
+    q["order_observed"] = r->observed;
+    return q;
+  };
+  Json j;
+  j["levels"] = std::move(levels);
+  j["cd"] = extrapolated(st.C_D);
+  j["cl"] = extrapolated(st.C_L);
+  j["recirculation_length"] = extrapolated(st.recirculation);
+  return j;
+}
+
+}  // namespace json_parts
+
 }  // namespace magnus

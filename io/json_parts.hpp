@@ -4,6 +4,7 @@
 #include <string>
 
 #include "io/json_output.hpp"
+#include "postproc/steady_study.hpp"
 
 namespace magnus::json_parts {
 
@@ -16,5 +17,10 @@ Json kj_ratios(std::optional<double> cl, std::optional<double> kj, std::optional
 
 /// A stagnation point: r in m and over a, θ in rad and degrees, on the surface or free.
 Json point_json(const StagnationPoint& p, double a);
+
+/// A steady grid study (time.mode = "steady"): each level's grid, C_D, C_L, L/D, Newton's residuals,
+/// factorisations and seconds, and the Richardson values of C_D, C_L and L/D with their error bars and the
+/// order used (the summary's "grid study" and "Richardson" lines).
+Json steady_study_json(const SteadyStudy& st);
 
 }  // namespace magnus::json_parts

@@ -52,7 +52,7 @@ std::string steady_study_text(const ViscousPart& v) {
                          fmt::format("{} × {}", lv.n_theta, lv.n_r), lv.C_D, lv.C_L + 0.0, lv.recirculation, res,
                          lv.newton.factorisations, lv.newton.wall_seconds));
   }
-  if (st.C_D) line("grid-converged", richardson_line("C_D", *st.C_D, grids));
+  if (st.C_D) line("Richardson", richardson_line("C_D", *st.C_D, grids));
   if (st.C_L && std::fabs(st.C_L->finest) > 1e-6) {
     Richardson cl = *st.C_L;
     cl.value = std::fabs(cl.value), cl.finest = std::fabs(cl.finest);

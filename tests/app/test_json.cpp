@@ -155,6 +155,11 @@ const std::map<std::string, std::vector<std::string>> kSummaryToJson = {
     {"separation", {"/separation"}},
     {"recirculation", {"/forces/recirculation_length"}},
     {"note", {"/derived/three_dimensional"}},
+    {"stability", {"/forces/eigenvalue_real", "/forces/eigenvalue_imag"}},
+    {"grid study", {"/derived/steady_study/levels"}},
+    {"grid study+", {"/derived/steady_study/levels"}},
+    {"Richardson", {"/derived/steady_study/cd"}},
+    {"Richardson+", {"/derived/steady_study/cl", "/derived/steady_study/recirculation_length"}},
 };
 
 /// Model-specific figures of labels both summaries share.
@@ -258,6 +263,31 @@ TEST_CASE("run --json, navier-stokes: the means, St, S/(2πρa²), the ideal, st
       Approx(j["forces"]["cl_mean"]["value"].get<double>() / j["forces"]["cl_ideal"]["value"].get<double>()));
   CHECK_FALSE(j.contains("errors"));
   CHECK(j["separation"]["units"] == "rad");
+}
+
+TEST_CASE("run --json, navier-stokes steady and auto: the grid study and the eigenvalue", "[app][json][ns]") {
+  const std::string dir = test::temp_dir("json-run-ns-steady");
+  for (const char* mode : {"steady", "auto"}) {
+    INFO("time.mode = " << mode);
+    const std::string c = write(dir + "/case.toml", ns_case(20, 0.5, 4));
+    const std::string set = std::string("time.mode=") + mode;
+    const auto text = test::magnus_cmd({"run", c, "-o", dir + "/r.h5", "--set", set}, dir);
+    INFO(text.err);
+    REQUIRE(text.status == 0);
+    const auto o = test::magnus_cmd({"run", c, "-o", dir + "/r.h5", "--set", set, "--json"}, dir);
+    REQUIRE(o.status == 0);
+    const json j = parse_checked(o.out);
+    check_counterparts(text.out, j, true);
+    if (std::string(mode) == "steady") {
+      REQUIRE(j["derived"]["steady_study"]["levels"].size() >= 2);
+      const auto& cd = j["derived"]["steady_study"]["cd"];
+      CHECK(cd["error"]["value"].get<double>() > 0.0);
+      CHECK(std::fabs(cd["value"].get<double>() - cd["finest"]["value"].get<double>()) <
+            0.05 * cd["finest"]["value"].get<double>());
+    } else {  // Re 20: a stable steady state, and its leading eigenvalue decays
+      CHECK(j["forces"]["eigenvalue_real"]["value"].get<double>() < 0.0);
+    }
+  }
 }
 
 TEST_CASE("json output: errors stay one line on stderr, nothing on stdout", "[app][json]") {
