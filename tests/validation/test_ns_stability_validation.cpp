@@ -62,6 +62,10 @@ TEST_CASE("[validation][stability] Re 100: the critical spin ratio lies in 1.8�
   };
   std::printf("stepper: alpha %.3f C_L amplitude %.4g; alpha %.3f C_L amplitude %.4g\n", below, amplitude(rb),
               above, amplitude(ra));
-  CHECK(amplitude(rb) > 0.05);
+  // From the steady state the disturbance grows at only ~0.025 U/D at α_c − 0.1, so at t = 400 it has not
+  // saturated (measured: 0.031, against 0.19 for a run from rest that reached the limit cycle): what the
+  // stepper must show is growth below and decay above, three orders of magnitude apart (measured 1450×).
+  CHECK(amplitude(rb) > 0.01);
+  CHECK(amplitude(rb) > 100.0 * amplitude(ra));
   CHECK(amplitude(ra) < 1e-3);
 }
