@@ -203,19 +203,31 @@ void check_counterparts(const std::string& summary, const json& j, bool viscous)
   }
 }
 
+/// `magnus run CASE` for its summary, then the same with --json: both succeed, the JSON alone on stdout
+/// and nothing on stderr, and every label of the summary has its figures in the JSON.
+json run_beside_summary(const std::string& c, const std::string& dir, const std::vector<std::string>& extra,
+                        bool viscous) {
+  std::vector<std::string> args = {"run", c, "-o", dir + "/r.h5"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  const auto text = test::magnus_cmd(args, dir);
+  INFO(text.err);
+  REQUIRE(text.status == 0);
+  args.push_back("--json");
+  const auto o = test::magnus_cmd(args, dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  REQUIRE(o.err.empty());
+  const json j = parse_checked(o.out);
+  check_counterparts(text.out, j, viscous);
+  return j;
+}
+
 }  // namespace
 
 TEST_CASE("run --json, potential flow: every figure of the summary with its units", "[app][json]") {
   const std::string dir = test::temp_dir("json-run");
   const std::string c = write(dir + "/case.toml", kPotentialCase);
-  const auto text = test::magnus_cmd({"run", c, "-o", dir + "/r.h5"}, dir);
-  REQUIRE(text.status == 0);
-  const auto o = test::magnus_cmd({"run", c, "-o", dir + "/r.h5", "--json"}, dir);
-  INFO(o.err);
-  REQUIRE(o.status == 0);
-  REQUIRE(o.err.empty());
-  const json j = parse_checked(o.out);
-  check_counterparts(text.out, j, false);
+  const json j = run_beside_summary(c, dir, {}, false);
   CHECK(j["model"] == "potential");
   CHECK(j["forces"]["cl"]["units"] == "1");
   CHECK(j["forces"]["lift"]["units"] == "N/m");
@@ -230,13 +242,7 @@ TEST_CASE("run --json, no flow: undefined coefficients are null", "[app][json]")
   const std::string c =
       write(dir + "/case.toml",
             "[cylinder]\nradius = 0.1\nspin = 50.0\n[flow]\nspeed = 0.0\n[grid]\nn_theta = 16\n");
-  const auto text = test::magnus_cmd({"run", c, "-o", dir + "/r.h5"}, dir);
-  REQUIRE(text.status == 0);
-  const auto o = test::magnus_cmd({"run", c, "-o", dir + "/r.h5", "--json"}, dir);
-  INFO(o.err);
-  REQUIRE(o.status == 0);
-  const json j = parse_checked(o.out);
-  check_counterparts(text.out, j, false);
+  const json j = run_beside_summary(c, dir, {}, false);
   CHECK(j["forces"]["cl"]["value"].is_null());
   CHECK(j["forces"]["cl"]["units"] == "1");
   CHECK(j["parameters"]["spin_ratio"]["value"].is_null());
@@ -245,13 +251,7 @@ TEST_CASE("run --json, no flow: undefined coefficients are null", "[app][json]")
 TEST_CASE("run --json, navier-stokes: the means, St, S/(2πρa²), the ideal, status", "[app][json][ns]") {
   const std::string dir = test::temp_dir("json-run-ns");
   const std::string c = write(dir + "/case.toml", ns_case(100, 1, 4));
-  const auto text = test::magnus_cmd({"run", c, "-o", dir + "/r.h5"}, dir);
-  REQUIRE(text.status == 0);
-  const auto o = test::magnus_cmd({"run", c, "-o", dir + "/r.h5", "--json"}, dir);
-  INFO(o.err);
-  REQUIRE(o.status == 0);
-  const json j = parse_checked(o.out);
-  check_counterparts(text.out, j, true);
+  const json j = run_beside_summary(c, dir, {}, true);
   CHECK(j["model"] == "navier-stokes");
   CHECK(j["partial"] == false);
   CHECK(j["status"].is_string());
@@ -270,14 +270,7 @@ TEST_CASE("run --json, navier-stokes steady and auto: the grid study and the eig
   for (const char* mode : {"steady", "auto"}) {
     INFO("time.mode = " << mode);
     const std::string c = write(dir + "/case.toml", ns_case(20, 0.5, 4));
-    const std::string set = std::string("time.mode=") + mode;
-    const auto text = test::magnus_cmd({"run", c, "-o", dir + "/r.h5", "--set", set}, dir);
-    INFO(text.err);
-    REQUIRE(text.status == 0);
-    const auto o = test::magnus_cmd({"run", c, "-o", dir + "/r.h5", "--set", set, "--json"}, dir);
-    REQUIRE(o.status == 0);
-    const json j = parse_checked(o.out);
-    check_counterparts(text.out, j, true);
+    const json j = run_beside_summary(c, dir, {"--set", std::string("time.mode=") + mode}, true);
     if (std::string(mode) == "steady") {
       REQUIRE(j["derived"]["steady_study"]["levels"].size() >= 2);
       const auto& cd = j["derived"]["steady_study"]["cd"];
