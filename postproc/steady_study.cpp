@@ -128,6 +128,27 @@ NsState interpolate_state(const PolarGrid& from, const NsState& s, const PolarGr
   return out;
 }
 
+namespace {
+
+/// The part of a state odd in θ (ψ, ζ at θ_{n−j} the negatives of those at θ_j, 0 on the axis θ = 0, π;
+/// Γ_R = 0): the symmetric start of a mirror solve, exactly.
+NsState odd_part(const PolarGrid& g, NsState s) {
+  const int n = g.n_theta;
+  for (std::vector<double>* f : {&s.psi, &s.zeta})
+    for (int i = 0; i < g.n_r; ++i) {
+      double* row = &(*f)[size_t(i) * n];
+      row[0] = row[n / 2] = 0.0;
+      for (int j = 1; 2 * j < n; ++j) {
+        const double odd = 0.5 * (row[j] - row[n - j]);
+        row[j] = odd, row[n - j] = -odd;
+      }
+    }
+  s.Gamma_R = 0.0;
+  return s;
+}
+
+}  // namespace
+
 SteadyStudy steady_study(const NsParams& p, const SteadyStudyOptions& o, const NsState* guess) {
   const auto t0 = std::chrono::steady_clock::now();
   if (o.scales.empty() || o.scales.back() != 1.0)
@@ -143,11 +164,13 @@ SteadyStudy steady_study(const NsParams& p, const SteadyStudyOptions& o, const N
     const bool last = k + 1 == o.scales.size();
     const NsParams q = level_params(p, o.scales[k]);
     if (!last && (q.n_theta < kMinStudyTheta || ns_grid(q).n_r < kMinStudyRings)) continue;  // too coarse
-    SteadyJacobian jac(q);
+    st.mirror = o.mirror && q.omega == 0.0 && q.U > 0.0;
+    SteadyJacobian jac(q, st.mirror);
     const PolarGrid& g = jac.grid();
-    const NsState start = have_prev ? interpolate_state(prev_grid, prev, g)
-                          : guess && k == 0 ? *guess
-                                            : potential_guess(q, g);
+    NsState start = have_prev ? interpolate_state(prev_grid, prev, g)
+                    : guess && k == 0 ? *guess
+                                      : potential_guess(q, g);
+    if (st.mirror) start = odd_part(g, std::move(start));
     NewtonOptions no = o.newton;
     no.on_iteration = nullptr;
     if (st.levels.empty() && o.plain_first) no.chord_ratio = 0.0;
@@ -191,6 +214,7 @@ SteadyStudy steady_study(const NsParams& p, const SteadyStudyOptions& o, const N
   int steps = 0, factors = 0;
   for (const SteadyLevel& lv : st.levels) steps += lv.newton.iterations, factors += lv.newton.factorisations;
   st.message = fmt::format("{} grids, {} Newton steps ({} factorisations)", st.levels.size(), steps, factors);
+  if (st.mirror) st.message += ", each on the mirror-symmetric half";
   if (!skipped.empty()) st.message += "; not converged on " + skipped + ", left out";
   st.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return st;

@@ -26,6 +26,10 @@ struct SteadyStudyOptions {
     o.chord_ratio = 0.3;  // one factorisation per level once the guess is close
     return o;
   }();
+  /// Without spin (ω = 0, U > 0) solve the mirror-symmetric half of each grid (SteadyJacobian's mirror):
+  /// the same steady state to round-off for about a third of the cost. Off: the whole grid (the symmetric
+  /// state all the same; Newton does not break the symmetry).
+  bool mirror = true;
   /// After each residual: (level, iteration, scaled max-norm residual); iteration 0 = the level's guess.
   std::function<void(int, int, double)> on_iteration;
 };
@@ -61,6 +65,7 @@ struct SteadyStudy {
   std::vector<SteadyLevel> levels;  ///< coarse → fine
   NsState state;                    ///< the finest level's steady state
   bool converged = false;           ///< every level's Newton iteration converged
+  bool mirror = false;              ///< the levels were solved on the mirror-symmetric half
   std::string message;              ///< the first failure, or a one-line account
   std::optional<Richardson> C_D, C_L, recirculation;  ///< from ≥ 2 levels, U > 0
   double wall_seconds = 0.0;

@@ -57,11 +57,27 @@ void SteadyJacobian::assemble(const std::vector<double>& x) {
   const double a2 = p_.a * p_.a;
   const bool first = Ti_.empty();
   size_t k = 0;
+  // Arakawa's 48 terms of a ζ row fall on 18 columns: the first assembly merges the entries of each run
+  // of one row into distinct triplets (k-th call → Slot_[k]), so the compressed columns are built from
+  // 2.5 times fewer triplets; the later ones only add into Tx_.
+  long run_row = -1;
+  size_t run_begin = 0;
+  if (first) {
+    const size_t calls = size_t(n) * (16 + size_t(nr - 2) * (p_.stokes ? 11 : 11 + 48));
+    Slot_.reserve(calls), Ti_.reserve(calls / 2), Tj_.reserve(calls / 2), Tx_.reserve(calls / 2);
+  } else {
+    std::fill(Tx_.begin(), Tx_.end(), 0.0);
+  }
   auto add = [&](long row, long col, double v) {
     if (first) {
-      Ti_.push_back(row), Tj_.push_back(col), Tx_.push_back(v);
+      if (row != run_row) run_row = row, run_begin = Ti_.size();
+      size_t slot = run_begin;
+      while (slot < Ti_.size() && Tj_[slot] != col) ++slot;
+      if (slot == Ti_.size()) Ti_.push_back(row), Tj_.push_back(col), Tx_.push_back(0.0);
+      Slot_.push_back(int(slot));
+      Tx_[slot] += v;
     } else {
-      Tx_[k] = v;
+      Tx_[size_t(Slot_[k])] += v;
     }
     ++k;
   };
@@ -118,7 +134,7 @@ void SteadyJacobian::assemble(const std::vector<double>& x) {
     add(gamma, cz(iN - 1, j), -2.0 * p_.nu / h * ff);
     add(gamma, cz(iN - 2, j), 0.5 * p_.nu / h * ff);
   }
-  if (!first && k != Tx_.size()) throw std::logic_error("SteadyJacobian: the pattern changed");
+  if (!first && k != Slot_.size()) throw std::logic_error("SteadyJacobian: the pattern changed");
   if (first) {
     Ap_.assign(size_t(size_) + 1, 0);
     Ai_.resize(Ti_.size());

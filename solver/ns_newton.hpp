@@ -53,7 +53,12 @@ struct NewtonResult {
 class SteadyJacobian {
  public:
   /// The equations of the parameters' grid (ns_grid(p)); throws std::invalid_argument like NsOperator.
-  explicit SteadyJacobian(const NsParams& p);
+  /// mirror: factor only the mirror-symmetric half (a cylinder without spin, ω = 0 and U > 0, has steady
+  /// states with ψ and ζ odd in θ, Γ_R = 0; the Jacobian there maps odd corrections to odd residuals, so
+  /// its restriction to the nodes 0 < θ_j < π is the whole Newton system at half the size and about a third
+  /// of the factorisation's cost). solve() then expects an odd right-hand side and returns an odd vector
+  /// with Γ_R's component 0. Throws std::invalid_argument for mirror with ω ≠ 0 or U = 0.
+  explicit SteadyJacobian(const NsParams& p, bool mirror = false);
   ~SteadyJacobian();
   SteadyJacobian(const SteadyJacobian&) = delete;
   SteadyJacobian& operator=(const SteadyJacobian&) = delete;
@@ -80,12 +85,15 @@ class SteadyJacobian {
   /// Assemble ∂F/∂x at x and factor it (the symbolic analysis once, on the first call). Throws
   /// std::runtime_error when UMFPACK fails or finds the matrix singular.
   void factor(const std::vector<double>& x);
+  /// Whether the factors are of the mirror-symmetric half (see the constructor).
+  bool mirror() const { return mirror_; }
   /// Solve J·y = b (transpose: Jᵀ·y = b) with the last factors; throws std::logic_error before factor().
   std::vector<double> solve(const std::vector<double>& b, bool transpose = false) const;
   /// y = J·x with the last assembled matrix.
   std::vector<double> multiply(const std::vector<double>& x) const;
 
-  /// The last assembled matrix, compressed sparse columns (row indices sorted in each column).
+  /// The last assembled matrix (the whole one, also with mirror), compressed sparse columns (row indices
+  /// sorted in each column).
   const std::vector<long>& col_ptr() const { return Ap_; }
   const std::vector<long>& row_index() const { return Ai_; }
   const std::vector<double>& values() const { return Ax_; }
@@ -96,14 +104,31 @@ class SteadyJacobian {
 
  private:
   void assemble(const std::vector<double>& x);
+  void build_half();  ///< the half system's pattern from the whole one's (mirror, first factor)
+  /// The system UMFPACK factors: the whole (Ap_, Ai_, Ax_) or, with mirror, the half (Hp_, Hi_, Hx_).
+  const long* fp() const { return mirror_ ? Hp_.data() : Ap_.data(); }
+  const long* fi() const { return mirror_ ? Hi_.data() : Ai_.data(); }
+  const double* fx() const { return mirror_ ? Hx_.data() : Ax_.data(); }
+  long factored_size() const { return mirror_ ? half_size_ : size_; }
   NsParams p_;
+  bool mirror_ = false;
   PolarGrid grid_;
   long size_ = 0;
   double h_ = 0.0, s_psi_ = 1.0, s_zeta_ = 1.0;
-  std::vector<long> Ti_, Tj_, Map_;  ///< triplet pattern (fixed) and its slots in Ax_
+  std::vector<long> Ti_, Tj_, Map_;  ///< distinct triplets (fixed pattern) and their slots in Ax_
+  std::vector<int> Slot_;            ///< the triplet each entry of assemble() adds into
   std::vector<double> Tx_;
   std::vector<long> Ap_, Ai_;
   std::vector<double> Ax_;
+  /// Mirror: the half system's unknown of each whole unknown (−1: none; odd: its value is ∓ that one's),
+  /// its size, and its compressed columns summed from the whole matrix's values (entry Ax_[from] times
+  /// sign into Hx_[to]).
+  std::vector<long> half_of_;
+  std::vector<signed char> half_sign_;
+  long half_size_ = 0;
+  std::vector<long> Hp_, Hi_, half_from_, half_to_;
+  std::vector<signed char> half_entry_sign_;
+  std::vector<double> Hx_;
   void* symbolic_ = nullptr;
   void* numeric_ = nullptr;
   double symbolic_s_ = 0.0, numeric_s_ = 0.0;

@@ -137,10 +137,35 @@ TEST_CASE("[steady] the grid study: sequenced Newton gives the direct solve's st
   CHECK(st.C_D->finest == st.levels.back().C_D);
   CHECK(st.C_D->value > st.C_D->finest);
   CHECK(std::isfinite(st.C_D->error));
+  CHECK_FALSE(st.mirror);  // spin: the whole grid
 
   SteadyStudyOptions bad;
   bad.scales = {0.5, 0.8};
   CHECK_THROWS_AS(steady_study(p, bad), std::invalid_argument);
   bad.scales = {0.6, 0.5, 1.0};
   CHECK_THROWS_AS(steady_study(p, bad), std::invalid_argument);
+}
+
+TEST_CASE("[steady] without spin the study solves the mirror half, and finds the whole grid's figures",
+          "[steady]") {
+  NsParams p;
+  p.a = 0.5, p.U = 1.0, p.nu = 1.0 / 20.0, p.omega = 0.0;  // Re 20, α 0
+  p.n_theta = 64, p.outer_over_a = 20.0;
+  SteadyStudyOptions o;
+  const SteadyStudy half = steady_study(p, o);
+  o.mirror = false;
+  const SteadyStudy whole = steady_study(p, o);
+  INFO(half.message << " | " << whole.message);
+  REQUIRE((half.converged && whole.converged));
+  CHECK(half.mirror);
+  CHECK_FALSE(whole.mirror);
+  CHECK(half.message.find("mirror-symmetric half") != std::string::npos);
+  REQUIRE(half.levels.size() == whole.levels.size());
+  for (size_t k = 0; k < half.levels.size(); ++k) {
+    CHECK(half.levels[k].C_D == Approx(whole.levels[k].C_D).epsilon(1e-10));
+    CHECK(half.levels[k].recirculation == Approx(whole.levels[k].recirculation).epsilon(1e-8));
+    CHECK(std::fabs(half.levels[k].C_L) < 1e-12);
+  }
+  REQUIRE((half.C_D && whole.C_D));
+  CHECK(half.C_D->value == Approx(whole.C_D->value).epsilon(1e-9));
 }

@@ -210,3 +210,47 @@ TEST_CASE("[ns][newton] Re 40, alpha 0 on the default grid: C_D and the time to 
   }
   CHECK(C_D[1] == Approx(C_D[0]).epsilon(1e-9));
 }
+
+TEST_CASE("[ns][newton] the mirror half: the whole grid's steady state at half the size, Re 30, alpha 0",
+          "[ns][newton]") {
+  // Without spin the steady state is odd in θ; the half system (0 < θ_j < π) is the whole Newton system
+  // restricted to odd corrections, so both iterations take the same steps to round-off.
+  const NsParams p = newton_params(30.0, 0.0, 48, 30.0);
+  const PolarGrid g = ns_grid(p);
+  NewtonResult res[2];
+  long lu[2] = {0, 0};
+  for (const bool mirror : {false, true}) {
+    SteadyJacobian jac(p, mirror);
+    REQUIRE(jac.mirror() == mirror);
+    res[mirror] = solve_steady(jac, potential_guess(p, g));
+    INFO(res[mirror].message);
+    REQUIRE(res[mirror].converged);
+    lu[mirror] = jac.lu_nonzeros();
+  }
+  const NsState &whole = res[0].state, &half = res[1].state;
+  CHECK(res[1].factorisations == res[0].factorisations);
+  CHECK(rel_diff(half.psi, whole.psi) < 1e-10);
+  CHECK(rel_diff(half.zeta, whole.zeta) < 1e-10);
+  CHECK(half.Gamma_R == 0.0);
+  // The half's state is odd in θ to the last bit: ψ and ζ at θ_{n−j} are those at θ_j negated.
+  const int n = g.n_theta;
+  double asym = 0.0;
+  for (int i = 0; i < g.n_r; ++i)
+    for (int j = 1; j < n; ++j)
+      asym = std::max(asym, std::fabs(half.zeta[size_t(i) * n + j] + half.zeta[size_t(i) * n + (n - j)]));
+  CHECK(asym == 0.0);
+  const double C_D[2] = {*viscous_forces(g, p, 1.0, whole).C_D, *viscous_forces(g, p, 1.0, half).C_D};
+  CHECK(C_D[1] == Approx(C_D[0]).epsilon(1e-10));
+  // Half the unknowns: the LU has less than half the whole one's nonzeros.
+  INFO("LU nonzeros: whole " << lu[0] << ", half " << lu[1]);
+  CHECK(lu[1] < lu[0] / 2);
+}
+
+TEST_CASE("[ns][newton] the mirror half is refused with spin or without a stream", "[ns][newton]") {
+  NsParams p = newton_params(30.0, 0.5, 32, 20.0);
+  CHECK_THROWS_AS(SteadyJacobian(p, true), std::invalid_argument);
+  p.omega = 0.0, p.U = 0.0;
+  CHECK_THROWS_AS(SteadyJacobian(p, true), std::invalid_argument);
+  p.U = 1.0;
+  CHECK_NOTHROW(SteadyJacobian(p, true));
+}
