@@ -24,6 +24,7 @@ struct SteadyStudyOptions {
   NewtonOptions newton = [] {
     NewtonOptions o;
     o.chord_ratio = 0.3;  // one factorisation per level once the guess is close
+    o.tol = 1e-9;         // C_D on each level moves < 1e-10 against 1e-10 (Re 40): far below the grid error
     return o;
   }();
   /// Without spin (ω = 0, U > 0) solve the mirror-symmetric half of each grid (SteadyJacobian's mirror):

@@ -68,7 +68,14 @@ void SteadyJacobian::assemble(const std::vector<double>& x) {
   } else {
     std::fill(Tx_.begin(), Tx_.end(), 0.0);
   }
+  // Mirror: only the rows of the nodes 0 < θ_j < π enter the half system; the others are not assembled.
+  auto dropped = [&](long row) {
+    if (!mirror_) return false;
+    const long j = (row / 2) % n;
+    return row == size_ - 1 || j == 0 || 2 * j >= n;
+  };
   auto add = [&](long row, long col, double v) {
+    if (dropped(row)) return;
     if (first) {
       if (row != run_row) run_row = row, run_begin = Ti_.size();
       size_t slot = run_begin;

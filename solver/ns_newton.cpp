@@ -336,6 +336,7 @@ std::vector<double> SteadyJacobian::solve(const std::vector<double>& b, bool tra
 
 std::vector<double> SteadyJacobian::multiply(const std::vector<double>& x) const {
   if (Ap_.empty()) throw std::logic_error("SteadyJacobian::multiply before factor");
+  if (mirror_) throw std::logic_error("SteadyJacobian::multiply: the mirror half keeps half the rows");
   if (x.size() != size_t(size_)) throw std::invalid_argument("SteadyJacobian::multiply: wrong size");
   std::vector<double> y(x.size(), 0.0);
   for (long c = 0; c < size_; ++c)

@@ -89,11 +89,11 @@ class SteadyJacobian {
   bool mirror() const { return mirror_; }
   /// Solve J·y = b (transpose: Jᵀ·y = b) with the last factors; throws std::logic_error before factor().
   std::vector<double> solve(const std::vector<double>& b, bool transpose = false) const;
-  /// y = J·x with the last assembled matrix.
+  /// y = J·x with the last assembled matrix; throws std::logic_error with mirror (its rows are not all there).
   std::vector<double> multiply(const std::vector<double>& x) const;
 
-  /// The last assembled matrix (the whole one, also with mirror), compressed sparse columns (row indices
-  /// sorted in each column).
+  /// The last assembled matrix, compressed sparse columns (row indices sorted in each column); with mirror
+  /// only the rows of the nodes 0 < θ_j < π are filled (the half system's).
   const std::vector<long>& col_ptr() const { return Ap_; }
   const std::vector<long>& row_index() const { return Ai_; }
   const std::vector<double>& values() const { return Ax_; }
