@@ -143,15 +143,8 @@ void SteadyJacobian::assemble(const std::vector<double>& x) {
   }
   if (!first && k != Slot_.size()) throw std::logic_error("SteadyJacobian: the pattern changed");
   if (first) {
-    Ap_.assign(size_t(size_) + 1, 0);
-    Ai_.resize(Ti_.size());
-    Ax_.resize(Ti_.size());
-    Map_.resize(Ti_.size());
-    const long status = umfpack_dl_triplet_to_col(size_, size_, long(Ti_.size()), Ti_.data(), Tj_.data(),
-                                                  nullptr, Ap_.data(), Ai_.data(), nullptr, Map_.data());
-    if (status != UMFPACK_OK) throw std::runtime_error(umfpack_error("triplet_to_col", status));
-    Ai_.resize(size_t(Ap_.back()));
-    Ax_.resize(size_t(Ap_.back()));
+    triplet_pattern(size_, Ti_, Tj_, Ap_, Ai_, Map_);
+    Ax_.resize(Ai_.size());
   }
   std::fill(Ax_.begin(), Ax_.end(), 0.0);
   for (size_t t = 0; t < Tx_.size(); ++t) Ax_[size_t(Map_[t])] += Tx_[t];

@@ -122,6 +122,17 @@ std::vector<long> grid_order(int nr, int n, bool mirror) {
 
 }  // namespace
 
+void triplet_pattern(long n, const std::vector<long>& ti, const std::vector<long>& tj, std::vector<long>& Ap,
+                     std::vector<long>& Ai, std::vector<long>& map) {
+  Ap.assign(size_t(n) + 1, 0);
+  Ai.resize(ti.size());
+  map.resize(ti.size());
+  const long status = umfpack_dl_triplet_to_col(n, n, long(ti.size()), ti.data(), tj.data(), nullptr, Ap.data(),
+                                                Ai.data(), nullptr, map.data());
+  if (status != UMFPACK_OK) throw std::runtime_error(umfpack_error("triplet_to_col", status));
+  Ai.resize(size_t(Ap.back()));
+}
+
 std::string umfpack_error(const char* what, long status) {
   std::string s =
       std::string("SteadyJacobian: UMFPACK ") + what + " failed (status " + std::to_string(status);
@@ -242,14 +253,8 @@ void SteadyJacobian::build_half() {
       half_from_.push_back(t), half_entry_sign_.push_back(half_sign_[size_t(col)]);
     }
   }
-  Hp_.assign(size_t(half_size_) + 1, 0);
-  Hi_.resize(ti.size());
-  half_to_.resize(ti.size());
-  const long status = umfpack_dl_triplet_to_col(half_size_, half_size_, long(ti.size()), ti.data(), tj.data(),
-                                                nullptr, Hp_.data(), Hi_.data(), nullptr, half_to_.data());
-  if (status != UMFPACK_OK) throw std::runtime_error(umfpack_error("triplet_to_col", status));
-  Hi_.resize(size_t(Hp_.back()));
-  Hx_.assign(size_t(Hp_.back()), 0.0);
+  triplet_pattern(half_size_, ti, tj, Hp_, Hi_, half_to_);
+  Hx_.assign(Hi_.size(), 0.0);
 }
 
 void SteadyJacobian::factor(const std::vector<double>& x) {
