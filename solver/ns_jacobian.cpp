@@ -1,7 +1,7 @@
 // The analytic Jacobian of the steady viscous equations (see ns_newton.hpp): its triplet pattern, built once,
 // and its values at a state, summed into compressed columns for UMFPACK.
 #include "solver/ns_newton.hpp"
-#include "solver/umfpack_error.hpp"
+#include "solver/ns_lu.hpp"
 
 #include <umfpack.h>
 

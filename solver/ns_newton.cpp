@@ -1,7 +1,7 @@
 #include "solver/ns_newton.hpp"
 
 #include "solver/arakawa.hpp"
-#include "solver/umfpack_error.hpp"
+#include "solver/ns_lu.hpp"
 
 #include <dlfcn.h>
 #include <umfpack.h>
@@ -69,77 +69,7 @@ class SingleThreadBlas {
   int saved_ = 1;
 };
 
-/// Nested dissection of the box of nodes [i0, i1) × [j0, j1) of a grid with a 9-point stencil (George
-/// 1973): the two halves either side of the middle line of the longer side, then that line; small boxes
-/// in natural order. `put` takes a node (i, j).
-template <class Put>
-void dissect(int i0, int i1, int j0, int j1, const Put& put) {
-  if (i1 <= i0 || j1 <= j0) return;
-  if ((i1 - i0) * (j1 - j0) <= 16) {
-    for (int i = i0; i < i1; ++i)
-      for (int j = j0; j < j1; ++j) put(i, j);
-    return;
-  }
-  if (i1 - i0 >= j1 - j0) {
-    const int s = (i0 + i1) / 2;
-    dissect(i0, s, j0, j1, put), dissect(s + 1, i1, j0, j1, put);
-    for (int j = j0; j < j1; ++j) put(s, j);
-  } else {
-    const int s = (j0 + j1) / 2;
-    dissect(i0, i1, j0, s, put), dissect(i0, i1, s + 1, j1, put);
-    for (int i = i0; i < i1; ++i) put(i, s);
-  }
-}
-
-/// A fill-reducing order of the Jacobian's unknowns, given to UMFPACK: nested dissection of the grid's
-/// nodes, each node's (ψ, ζ) pair kept together. The whole grid (periodic in θ) is first cut along the
-/// rays θ = 0 and θ = π, which come last, then Γ_R; the mirror half, the nodes 0 < θ_j < π, is a plain
-/// box. On the Re 40 grid (256 × 314, the half) UMFPACK's analysis took 0.09 s with it against 0.69 s
-/// with its own METIS ordering, and the factorisation 0.43 s against 0.54 s.
-std::vector<long> grid_order(int nr, int n, bool mirror) {
-  std::vector<long> order;
-  if (mirror) {
-    const int m = n / 2 - 1;
-    order.reserve(size_t(2) * nr * m);
-    dissect(0, nr, 1, n / 2, [&](int i, int j) {
-      const long u = 2 * (long(i) * m + j - 1);
-      order.push_back(u), order.push_back(u + 1);
-    });
-    return order;
-  }
-  order.reserve(size_t(2) * nr * n + 1);
-  auto put = [&](int i, int j) {
-    const long u = 2 * (long(i) * n + j);
-    order.push_back(u), order.push_back(u + 1);
-  };
-  dissect(0, nr, 1, n / 2, put);
-  dissect(0, nr, n / 2 + 1, n, put);
-  for (int j : {0, n / 2})
-    for (int i = 0; i < nr; ++i) put(i, j);
-  order.push_back(2L * nr * n);  // Γ_R
-  return order;
-}
-
 }  // namespace
-
-void triplet_pattern(long n, const std::vector<long>& ti, const std::vector<long>& tj, std::vector<long>& Ap,
-                     std::vector<long>& Ai, std::vector<long>& map) {
-  Ap.assign(size_t(n) + 1, 0);
-  Ai.resize(ti.size());
-  map.resize(ti.size());
-  const long status = umfpack_dl_triplet_to_col(n, n, long(ti.size()), ti.data(), tj.data(), nullptr, Ap.data(),
-                                                Ai.data(), nullptr, map.data());
-  if (status != UMFPACK_OK) throw std::runtime_error(umfpack_error("triplet_to_col", status));
-  Ai.resize(size_t(Ap.back()));
-}
-
-std::string umfpack_error(const char* what, long status) {
-  std::string s =
-      std::string("SteadyJacobian: UMFPACK ") + what + " failed (status " + std::to_string(status);
-  if (status == UMFPACK_WARNING_singular_matrix) s += ": the Jacobian is singular";
-  if (status == UMFPACK_ERROR_out_of_memory) s += ": out of memory";
-  return s + ")";
-}
 
 SteadyJacobian::SteadyJacobian(const NsParams& p, bool mirror) : p_(p), mirror_(mirror) {
   NsOperator check(p, 1.0);  // the stepper's own parameter checks (and grid)

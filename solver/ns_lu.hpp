@@ -1,0 +1,25 @@
+#pragma once
+// The steady Jacobian's sparse LU plumbing: one wording for a failed UMFPACK call (assembly,
+// factorisation, solve), the one way its triplets become compressed columns, and the fill-reducing
+// order of its unknowns that UMFPACK is given.
+#include <string>
+#include <vector>
+
+namespace magnus {
+
+/// "SteadyJacobian: UMFPACK WHAT failed (status N[: the Jacobian is singular | : out of memory])".
+std::string umfpack_error(const char* what, long status);
+
+/// The n × n compressed-column pattern (Ap, Ai) of triplets (ti, tj), duplicates summed, and each
+/// triplet's slot in the values (map); throws std::runtime_error (umfpack_error) when UMFPACK refuses.
+void triplet_pattern(long n, const std::vector<long>& ti, const std::vector<long>& tj, std::vector<long>& Ap,
+                     std::vector<long>& Ai, std::vector<long>& map);
+
+/// A fill-reducing order of the Jacobian's unknowns, given to UMFPACK: nested dissection of the grid's
+/// nodes, each node's (ψ, ζ) pair kept together. The whole grid (periodic in θ) is first cut along the
+/// rays θ = 0 and θ = π, which come last, then Γ_R; the mirror half, the nodes 0 < θ_j < π, is a plain
+/// box. On the Re 40 grid (256 × 314, the half) UMFPACK's analysis took 0.09 s with it against 0.69 s
+/// with its own METIS ordering, and the factorisation 0.43 s against 0.54 s.
+std::vector<long> grid_order(int nr, int n, bool mirror);
+
+}  // namespace magnus
