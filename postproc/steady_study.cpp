@@ -156,6 +156,7 @@ SteadyStudy steady_study(const NsParams& p, const SteadyStudyOptions& o, const N
   for (size_t k = 1; k < o.scales.size(); ++k)
     if (!(o.scales[k] > o.scales[k - 1])) throw std::invalid_argument("steady study: grid scales must increase");
   SteadyStudy st;
+  st.mirror = o.mirror && p.omega == 0.0 && p.U > 0.0;  // every level has the case's ω and U
   NsState prev;
   PolarGrid prev_grid;
   bool have_prev = false;
@@ -164,7 +165,6 @@ SteadyStudy steady_study(const NsParams& p, const SteadyStudyOptions& o, const N
     const bool last = k + 1 == o.scales.size();
     const NsParams q = level_params(p, o.scales[k]);
     if (!last && (q.n_theta < kMinStudyTheta || ns_grid(q).n_r < kMinStudyRings)) continue;  // too coarse
-    st.mirror = o.mirror && q.omega == 0.0 && q.U > 0.0;
     SteadyJacobian jac(q, st.mirror);
     const PolarGrid& g = jac.grid();
     NsState start = have_prev ? interpolate_state(prev_grid, prev, g)

@@ -220,7 +220,7 @@ void SteadyJacobian::factor(const std::vector<double>& x) {
     if (status != UMFPACK_OK) {
       symbolic_ = nullptr;
       umfpack_dl_defaults(control);
-      status = umfpack_dl_symbolic(factored_size(), factored_size(), fp(), fi(), fx(), &symbolic_, control, info);
+      status = umfpack_dl_symbolic(nf, nf, fp(), fi(), fx(), &symbolic_, control, info);
     }
     symbolic_s_ = seconds_since(t0);
     if (status != UMFPACK_OK) {
