@@ -40,8 +40,7 @@ void command_run(const std::string& case_path, const std::string& output,
     check_writable(checkpoint_path(c.output.file));
     check_output_space(c, c.output.file);
     const FlowResult r = run_viscous_case(c, resume, quiet || json, threads);
-    // The JSON shows what the summary shows: the result in memory (which the file holds, and more: the
-    // steady grid study's levels are not stored).
+    // The JSON shows what the summary shows: the result in memory, as the file holds it.
     if (json) std::fputs(json_text(result_json(r, c.output.file)).c_str(), stdout);
     return;
   }

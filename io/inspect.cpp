@@ -40,9 +40,14 @@ std::string attr_units(const ResultFile& f, const std::string& obj, const std::s
   return "";
 }
 
+/// A name padded to `width` columns, and at least one space after it.
+std::string padded(const std::string& name, size_t width) {
+  return fmt::format("{:<{}} ", name, width - 1);
+}
+
 std::string line(const std::string& name, const std::string& value, const std::string& units) {
-  return units.empty() ? fmt::format("  {:<26}{}\n", name, value)
-                       : fmt::format("  {:<26}{}  [{}]\n", name, value, units);
+  return units.empty() ? fmt::format("  {}{}\n", padded(name, 26), value)
+                       : fmt::format("  {}{}  [{}]\n", padded(name, 26), value, units);
 }
 
 /// Whether the file holds a navier-stokes result (its root attribute model).
@@ -52,7 +57,13 @@ bool is_viscous(const ResultFile& f) {
 
 /// Whether a schema entry for `m` belongs in the file (the model's own entries only).
 bool belongs(Models m, const ResultFile& f) {
-  return m == Models::all || (m == Models::viscous) == is_viscous(f);
+  switch (m) {
+    case Models::all: return true;
+    case Models::potential: return !is_viscous(f);
+    case Models::viscous: return is_viscous(f);
+    case Models::steady_study: return f.has("/steady_study");
+  }
+  return false;
 }
 
 /// Every attribute of a group: the schema's first (undefined ones marked), then any others the file holds.
@@ -178,6 +189,7 @@ std::string describe_flow(const ResultFile& f) {
   s += group_text(f, "/forces", "forces", version >= 2);
   s += group_text(f, "/errors", "errors", version >= 2);
   s += group_text(f, "/timing", "timing", version >= 2);
+  s += group_text(f, "/steady_study", "steady grid study (values per grid: the /steady_study datasets)", true);
   for (const char* g : {"/fields", "/surface"})
     if (f.has_attr(g, "undefined"))
       s += fmt::format("\n{} undefined: {}\n", g, f.attr_string(g, "undefined"));
@@ -195,7 +207,7 @@ std::string describe_flow(const ResultFile& f) {
     std::string units = dataset_units(name);
     if (units.empty()) units = f.has_attr(name, "units") ? f.attr_string(name, "units") : "?";
     const DatasetSpec* d = find_dataset(name);
-    s += fmt::format("  {:<24}({})  [{}]{}\n", name, dims_text(shape), units, d ? "  " + d->description : "");
+    s += fmt::format("  {}({})  [{}]{}\n", padded(name, 24), dims_text(shape), units, d ? "  " + d->description : "");
     // Read every value back: HDF5 verifies the checksums (Fletcher-32) on the way, so a damaged file is
     // reported here rather than found later by whoever uses the numbers.
     values += f.dataset(name).size();

@@ -73,8 +73,14 @@ Json flow_groups(const ResultFile& f) {
   const Json root = group_json(f, "/");
   for (auto it = root.begin(); it != root.end(); ++it) j[it.key()] = it.value();
   if (!j.contains("model")) j["model"] = "potential";  // version 1 files hold potential flow only
-  for (const char* g : {"/parameters", "/forces", "/errors", "/timing"})
+  for (const char* g : {"/parameters", "/forces", "/errors", "/timing", "/steady_study"})
     if (f.has(g)) j[key_of(g)] = group_json(f, g);
+  if (f.has("/steady_study")) {  // its grids, coarse to fine: one array per dataset
+    Json levels = Json::object();
+    for (const auto& [name, shape] : f.datasets())
+      if (name.rfind("/steady_study/", 0) == 0) levels[name.substr(14)] = quantity(f.dataset(name), dataset_units(name));
+    j["steady_study"]["levels"] = std::move(levels);
+  }
   if (!is_viscous(f) && j.contains("forces")) {
     auto value = [&](const char* k) -> std::optional<double> {
       const Json& q = j["forces"].contains(k) ? j["forces"][k]["value"] : Json(nullptr);

@@ -90,6 +90,7 @@ void write_file(const FlowResult& r, H5Writer& w) {
     const std::vector<double> v = d.values(r);
     const std::string name = d.path.substr(d.path.rfind('/') + 1);
     const bool is_field = d.path.rfind("/fields/", 0) == 0;
+    if (v.empty() && d.shape == DataShape::levels) continue;  // a study with no grid (it failed on all)
     if (v.empty() && d.shape != DataShape::points) {
       // A field not asked for is simply absent; one asked for (or a surface value) that is empty is
       // undefined.

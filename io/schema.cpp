@@ -229,15 +229,20 @@ std::vector<AttrSpec> make_attributes() {
       if (std::string(it->group) == a.group) at = it + 1;
     table.insert(at, a);
   }
-  const std::vector<AttrSpec> viscous = viscous_attributes();
-  table.insert(table.end(), viscous.begin(), viscous.end());
+  for (const auto& part : {viscous_attributes(), study_attributes()}) table.insert(table.end(), part.begin(), part.end());
   return table;
 }
 
 }  // namespace
 
 bool applies(Models m, const FlowResult& r) {
-  return m == Models::all || (m == Models::viscous) == r.viscous.has_value();
+  switch (m) {
+    case Models::all: return true;
+    case Models::potential: return !r.viscous;
+    case Models::viscous: return r.viscous.has_value();
+    case Models::steady_study: return r.viscous && r.viscous->steady_study;
+  }
+  return false;
 }
 
 const std::vector<AttrSpec>& result_attributes() {

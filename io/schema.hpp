@@ -24,8 +24,9 @@ constexpr long kFlowFormatVersion = 2;
 enum class AttrKind { number, integer, text };
 
 /// Which results an entry belongs to: every result, potential flow's only (errors against the exact
-/// solution) or the navier-stokes model's only (means, history). An entry that does not apply is absent.
-enum class Models { all, potential, viscous };
+/// solution), the navier-stokes model's only (means, history) or a steady grid study's only (its grids and
+/// Richardson values, time.mode = "steady"). An entry that does not apply is absent.
+enum class Models { all, potential, viscous, steady_study };
 
 /// Whether an entry for `m` belongs in result r.
 bool applies(Models m, const FlowResult& r);
@@ -51,8 +52,9 @@ struct AttrSpec {
 };
 
 /// What a dataset's shape follows.
-/// (n_r), (n_θ), (n_r, n_θ), (k) stagnation points, (n_steps) history, (k) separation points.
-enum class DataShape { n_r, n_theta, grid, points, steps };
+/// (n_r), (n_θ), (n_r, n_θ), (k) stagnation points, (n_steps) history, (k) separation points, (n_grids)
+/// the grids of a steady study.
+enum class DataShape { n_r, n_theta, grid, points, steps, levels };
 
 /// One stored dataset of a magnus-flow file.
 struct DatasetSpec {

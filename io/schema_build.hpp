@@ -88,6 +88,11 @@ inline AttrSpec vlast(const char* name, const char* units, const char* descripti
 
 /// The navier-stokes model's attributes (parameters, means and parts of the forces, run facts).
 std::vector<AttrSpec> viscous_attributes();
+/// A steady grid study's attributes of /steady_study (io/schema_study.cpp): converged, mirror, seconds,
+/// message and the Richardson values of C_D, C_L and L/D with their error bars and orders.
+std::vector<AttrSpec> study_attributes();
+/// A steady grid study's datasets /steady_study/* (one value per grid, coarse to fine).
+std::vector<DatasetSpec> study_datasets();
 /// The scene's world placement and engineering forces (io/schema_scene.cpp): rpm, direction, course, span,
 /// thrust, side force and the totals over the span.
 std::vector<AttrSpec> scene_attributes();

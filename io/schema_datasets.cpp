@@ -129,7 +129,7 @@ DatasetSpec snapshot(const char* name, const char* units, const char* descriptio
 }
 
 std::vector<DatasetSpec> make_datasets() {
-  return {
+  std::vector<DatasetSpec> table = {
       {"/grid/r", "m", "radius r_i of grid row i (dimension scale of every field's first axis)",
        DataShape::n_r, [](const FlowResult& r) { return r.grid.r; },
        [](FlowResult& r, std::vector<double> v) { r.grid.r = std::move(v); }},
@@ -205,6 +205,9 @@ std::vector<DatasetSpec> make_datasets() {
       snapshot("vorticity", "1/s", "vorticity ζ of each stored state, (N, n_r, n_theta)",
                &Snapshot::vorticity),
   };
+  const std::vector<DatasetSpec> study = study_datasets();
+  table.insert(table.end(), study.begin(), study.end());
+  return table;
 }
 
 

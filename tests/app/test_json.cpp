@@ -277,8 +277,25 @@ TEST_CASE("run --json, navier-stokes steady and auto: the grid study and the eig
       CHECK(cd["error"]["value"].get<double>() > 0.0);
       CHECK(std::fabs(cd["value"].get<double>() - cd["finest"]["value"].get<double>()) <
             0.05 * cd["finest"]["value"].get<double>());
-    } else {  // Re 20: a stable steady state, and its leading eigenvalue decays
+      // The file holds the same study: each grid's C_D and the Richardson value with its error bar.
+      const auto o = test::magnus_cmd({"inspect", dir + "/r.h5", "--json"}, dir);
+      INFO(o.err);
+      REQUIRE(o.status == 0);
+      const json f = parse_checked(o.out);
+      const auto& levels = j["derived"]["steady_study"]["levels"];
+      REQUIRE(f["steady_study"]["levels"]["cd"]["value"].size() == levels.size());
+      for (size_t k = 0; k < levels.size(); ++k) {
+        CHECK(f["steady_study"]["levels"]["cd"]["value"][k].get<double>() == levels[k]["cd"]["value"].get<double>());
+        CHECK(f["steady_study"]["levels"]["n_theta"]["value"][k].get<double>() == levels[k]["n_theta"]["value"].get<double>());
+      }
+      CHECK(f["steady_study"]["cd"]["value"].get<double>() == cd["value"].get<double>());
+      CHECK(f["steady_study"]["cd_error"]["value"].get<double>() == cd["error"]["value"].get<double>());
+      CHECK(f["steady_study"]["cd"]["units"] == "1");
+    } else {  // Re 20: a stable steady state, and its leading eigenvalue decays; no grid study stored
       CHECK(j["forces"]["eigenvalue_real"]["value"].get<double>() < 0.0);
+      const auto o = test::magnus_cmd({"inspect", dir + "/r.h5", "--json"}, dir);
+      REQUIRE(o.status == 0);
+      CHECK_FALSE(parse_checked(o.out).contains("steady_study"));
     }
   }
 }

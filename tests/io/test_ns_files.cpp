@@ -127,3 +127,65 @@ TEST_CASE("inspect: a navier-stokes file's history length and stored states, wit
   CHECK(s.find("/mesh/snapshots/psi/3") == std::string::npos);
   CHECK(s.find("/mesh/snapshots/") != std::string::npos);
 }
+
+TEST_CASE("a steady grid study: its grids and Richardson values in /steady_study, read back", "[io][format][viscous]") {
+  const std::string dir = test::temp_dir("ns-study");
+  FlowResult r = test::viscous_result_by_hand(0.0, 16, 10, 0);
+  SteadyStudy st;
+  const std::vector<double> h = {0.08, 0.04, 0.02}, cd = {1.60, 1.53, 1.51}, ld = {2.0, 2.2, 2.25};
+  for (size_t k = 0; k < h.size(); ++k) {
+    SteadyLevel lv;
+    lv.n_theta = 16 << k, lv.n_r = 9 * (1 << k) + 1, lv.h = h[k], lv.C_D = cd[k], lv.C_L = 0.0;
+    lv.recirculation = ld[k];
+    lv.newton.iterations = 5 - int(k), lv.newton.factorisations = 3 - int(k), lv.newton.wall_seconds = 0.1 * (k + 1);
+    lv.newton.residuals = {1.0, 1e-4, 1e-10 / double(k + 1)};
+    st.levels.push_back(lv);
+  }
+  st.C_D = richardson(cd, h), st.recirculation = richardson(ld, h);
+  st.converged = true, st.mirror = true, st.message = "3 grids", st.wall_seconds = 0.6;
+  r.viscous->steady_study = st;
+  write_result(r, dir + "/s.h5");
+
+  const ResultFile f(dir + "/s.h5");
+  CHECK(f.dataset("/steady_study/cd") == cd);
+  CHECK(f.dataset("/steady_study/n_theta") == std::vector<double>{16, 32, 64});
+  CHECK(f.attr_string("/steady_study/seconds", "units") == "s");
+  CHECK(f.attr_double("/steady_study", "cd") == st.C_D->value);
+  CHECK(f.attr_string("/steady_study", "cd_error_units") == "1");
+  // C_L was not extrapolated: listed as undefined, not stored as a number.
+  CHECK(f.attr_string("/steady_study", "undefined").find("cl_error") != std::string::npos);
+
+  const FlowResult back = read_result(dir + "/s.h5");
+  REQUIRE(back.viscous);
+  REQUIRE(back.viscous->steady_study);
+  const SteadyStudy& b = *back.viscous->steady_study;
+  REQUIRE(b.levels.size() == 3);
+  for (size_t k = 0; k < 3; ++k) {
+    CHECK(b.levels[k].n_theta == st.levels[k].n_theta);
+    CHECK(b.levels[k].n_r == st.levels[k].n_r);
+    CHECK(b.levels[k].C_D == cd[k]);
+    CHECK(b.levels[k].recirculation == ld[k]);
+    CHECK(b.levels[k].newton.factorisations == st.levels[k].newton.factorisations);
+    CHECK(b.levels[k].newton.residuals.back() == st.levels[k].newton.residuals.back());
+  }
+  REQUIRE(b.C_D);
+  CHECK(b.C_D->value == st.C_D->value);
+  CHECK(b.C_D->error == st.C_D->error);
+  CHECK(b.C_D->order == st.C_D->order);
+  CHECK(b.C_D->observed == st.C_D->observed);
+  CHECK_FALSE(b.C_L);
+  CHECK(b.mirror);
+  CHECK(b.converged);
+  CHECK(b.message == "3 grids");
+
+  const std::string s = describe_result(dir + "/s.h5");
+  CAPTURE(s);
+  CHECK(s.find("steady grid study") != std::string::npos);
+  CHECK(s.find("/steady_study/cd ") != std::string::npos);
+  CHECK(s.find(fmt::format("{:.10g}", st.C_D->value)) != std::string::npos);
+
+  // Without a study there is no /steady_study at all.
+  r.viscous->steady_study.reset();
+  write_result(r, dir + "/u.h5");
+  CHECK_FALSE(ResultFile(dir + "/u.h5").has("/steady_study"));
+}
