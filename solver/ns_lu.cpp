@@ -1,7 +1,8 @@
 // The Jacobian's sparse LU plumbing: UMFPACK's error wording, triplets to compressed columns, and the
-// nested-dissection order of the grid's unknowns.
+// nested-dissection order of the grid's unknowns, and OpenBLAS held to one thread around a factorisation.
 #include "solver/ns_lu.hpp"
 
+#include <dlfcn.h>
 #include <umfpack.h>
 
 #include <stdexcept>
@@ -75,6 +76,19 @@ std::string umfpack_error(const char* what, long status) {
   if (status == UMFPACK_WARNING_singular_matrix) s += ": the Jacobian is singular";
   if (status == UMFPACK_ERROR_out_of_memory) s += ": out of memory";
   return s + ")";
+}
+
+SingleThreadBlas::SingleThreadBlas() {
+  get_ = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+  set_ = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  if (get_ && set_) {
+    saved_ = get_();
+    if (saved_ != 1) set_(1);
+  }
+}
+
+SingleThreadBlas::~SingleThreadBlas() {
+  if (get_ && set_ && saved_ > 1) set_(saved_);
 }
 
 }  // namespace magnus

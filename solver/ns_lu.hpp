@@ -22,4 +22,21 @@ void triplet_pattern(long n, const std::vector<long>& ti, const std::vector<long
 /// with it against 0.69 s with its own METIS ordering, the factorisation 0.43 s against 0.54 s.
 std::vector<long> grid_order(int nr, int n, bool mirror);
 
+/// OpenBLAS on one thread while it lives (restored after): UMFPACK's frontal matrices are small. On the
+/// shared 2-core machine the default grid's factorisation (90625 unknowns, 3.1 GFlop) took 1.0–1.6 s with
+/// OPENBLAS_NUM_THREADS=1 against 1.4–2.3 s with 2 (same CPU seconds: the second thread only waits).
+/// Found at run time, so any other BLAS is left alone.
+class SingleThreadBlas {
+ public:
+  SingleThreadBlas();
+  ~SingleThreadBlas();
+  SingleThreadBlas(const SingleThreadBlas&) = delete;
+  SingleThreadBlas& operator=(const SingleThreadBlas&) = delete;
+
+ private:
+  int (*get_)() = nullptr;
+  void (*set_)(int) = nullptr;
+  int saved_ = 1;
+};
+
 }  // namespace magnus

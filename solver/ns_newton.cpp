@@ -3,7 +3,6 @@
 #include "solver/arakawa.hpp"
 #include "solver/ns_lu.hpp"
 
-#include <dlfcn.h>
 #include <umfpack.h>
 
 #include <algorithm>
@@ -42,32 +41,6 @@ double max_abs(const std::vector<double>& v) {
   for (double x : v) m = std::max(m, std::fabs(x));
   return m;
 }
-
-/// OpenBLAS on one thread while it lives (restored after): UMFPACK's frontal matrices are small. On the
-/// shared 2-core machine the default grid's factorisation (90625 unknowns, 3.1 GFlop) took 1.0–1.6 s with
-/// OPENBLAS_NUM_THREADS=1 against 1.4–2.3 s with 2 (same CPU seconds: the second thread only waits).
-/// Found at run time, so any other BLAS is left alone.
-class SingleThreadBlas {
- public:
-  SingleThreadBlas() {
-    get_ = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
-    set_ = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
-    if (get_ && set_) {
-      saved_ = get_();
-      if (saved_ != 1) set_(1);
-    }
-  }
-  ~SingleThreadBlas() {
-    if (get_ && set_ && saved_ > 1) set_(saved_);
-  }
-  SingleThreadBlas(const SingleThreadBlas&) = delete;
-  SingleThreadBlas& operator=(const SingleThreadBlas&) = delete;
-
- private:
-  int (*get_)() = nullptr;
-  void (*set_)(int) = nullptr;
-  int saved_ = 1;
-};
 
 }  // namespace
 

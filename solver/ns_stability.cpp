@@ -10,6 +10,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "solver/ns_lu.hpp"
 #include "solver/ns_newton.hpp"
 
 namespace magnus {
@@ -55,15 +56,27 @@ class ShiftedLu {
     }
     double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
     umfpack_zl_defaults(control);
+    // The grid's nested-dissection order (as for the real Jacobian: J − σM has J's pattern), given with the
+    // symmetric strategy; UMFPACK's METIS, then its default, should that be refused.
     if (!*symbolic) {
-      control[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
-      long st = umfpack_zl_symbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), symbolic, control,
-                                    info);
+      const std::vector<long> q = grid_order(jac.grid().n_r, jac.grid().n_theta, false);
+      long st = UMFPACK_ERROR_invalid_permutation;
+      if (long(q.size()) == n) {
+        control[UMFPACK_ORDERING] = UMFPACK_ORDERING_GIVEN;
+        control[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_SYMMETRIC;
+        st = umfpack_zl_qsymbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), q.data(), symbolic,
+                                  control, info);
+      }
       if (st != UMFPACK_OK) {
         *symbolic = nullptr;
         umfpack_zl_defaults(control);
-        st = umfpack_zl_symbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), symbolic, control,
-                                 info);
+        control[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
+        st = umfpack_zl_symbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), symbolic, control, info);
+      }
+      if (st != UMFPACK_OK) {
+        *symbolic = nullptr;
+        umfpack_zl_defaults(control);
+        st = umfpack_zl_symbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), symbolic, control, info);
       }
       if (st != UMFPACK_OK) {
         *symbolic = nullptr;
@@ -71,6 +84,7 @@ class ShiftedLu {
                                  std::to_string(st) + ")");
       }
     }
+    const SingleThreadBlas one_thread;
     const long st = umfpack_zl_numeric(Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), *symbolic, &numeric_,
                                        control, info);
     if (st != UMFPACK_OK) {
@@ -93,6 +107,9 @@ class ShiftedLu {
     for (size_t q = 0; q < n; ++q) bx[q] = b[q].real(), bz[q] = b[q].imag();
     double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
     umfpack_zl_defaults(control);
+    // No iterative refinement: Arnoldi needs (J − σM)⁻¹ only to the accuracy its residual test checks, and
+    // refinement cost two more solves (and a residual) for each of the few hundred solves per state.
+    control[UMFPACK_IRSTEP] = 0;
     const long st = umfpack_zl_solve(UMFPACK_A, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), yx.data(),
                                      yz.data(), bx.data(), bz.data(), numeric_, control, info);
     if (st != UMFPACK_OK)
@@ -140,31 +157,33 @@ std::vector<Eigenpair> arnoldi_at(const SteadyJacobian& jac, const std::vector<d
   start = op(start);  // in the range of the operator: no component along the infinite eigenvalues
   const int k_max = std::max(o.krylov, count + 10);
   std::vector<Eigenpair> found;
+  // The basis as the columns of one matrix: the Gram–Schmidt projections and the Ritz vectors are then
+  // matrix–vector products (vectorised), not loops over complex scalars.
+  Eigen::MatrixXcd V(Eigen::Index(n), k_max + 1);
   for (int pass = 0; pass <= o.restarts; ++pass) {
-    std::vector<cvec> V;
     Eigen::MatrixXcd H = Eigen::MatrixXcd::Zero(k_max + 1, k_max);
     const double s0 = norm(start);
     if (!(s0 > 0.0)) break;
-    V.push_back(start);
-    for (auto& z : V[0]) z /= s0;
+    for (size_t q = 0; q < n; ++q) V(Eigen::Index(q), 0) = start[q] / s0;
     int k = 0;
+    cvec v(n);
     for (; k < k_max; ++k) {
-      cvec w = op(V[size_t(k)]);
-      for (int sweep = 0; sweep < 2; ++sweep)
-        for (int i = 0; i <= k; ++i) {
-          cplx hij = 0.0;
-          for (size_t q = 0; q < n; ++q) hij += std::conj(V[size_t(i)][q]) * w[q];
-          H(i, k) += hij;
-          for (size_t q = 0; q < n; ++q) w[q] -= hij * V[size_t(i)][q];
-        }
-      const double beta = norm(w);
+      for (size_t q = 0; q < n; ++q) v[q] = V(Eigen::Index(q), k);
+      const cvec wv = op(v);
+      Eigen::VectorXcd w = Eigen::Map<const Eigen::VectorXcd>(wv.data(), Eigen::Index(n));
+      // Classical Gram–Schmidt, twice (as stable as modified Gram–Schmidt twice).
+      for (int sweep = 0; sweep < 2; ++sweep) {
+        const Eigen::VectorXcd h = V.leftCols(k + 1).adjoint() * w;
+        w.noalias() -= V.leftCols(k + 1) * h;
+        H.col(k).head(k + 1) += h;
+      }
+      const double beta = w.norm();
       H(k + 1, k) = beta;
       if (beta <= 1e-14 * H.col(k).norm()) {
         ++k;
         break;
       }
-      for (auto& z : w) z /= beta;
-      V.push_back(std::move(w));
+      V.col(k + 1) = w / beta;
     }
     Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(H.topLeftCorner(k, k));
     std::vector<int> order(static_cast<size_t>(k));
@@ -177,10 +196,8 @@ std::vector<Eigenpair> arnoldi_at(const SteadyJacobian& jac, const std::vector<d
     for (int r = 0; r < std::min(k, 2 * count + 4); ++r) {
       const cplx mu = es.eigenvalues()(order[size_t(r)]);
       if (std::abs(mu) == 0.0) continue;
-      const Eigen::VectorXcd y = es.eigenvectors().col(order[size_t(r)]);
-      cvec x(n, 0.0);
-      for (int i = 0; i < k; ++i)
-        for (size_t q = 0; q < n; ++q) x[q] += y(i) * V[size_t(i)][q];
+      const Eigen::VectorXcd xv = V.leftCols(k) * es.eigenvectors().col(order[size_t(r)]);
+      cvec x(xv.data(), xv.data() + xv.size());
       const cplx lambda = sigma + 1.0 / mu;
       cvec jx = apply_j(jac, x), res(n);
       double mx = 0.0;
