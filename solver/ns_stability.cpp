@@ -212,9 +212,10 @@ std::vector<Eigenpair> arnoldi_at(const SteadyJacobian& jac, const std::vector<d
         for (size_t q = 0; q < n; ++q) next[q] += x[q];
       }
     }
-    // All wanted converged; or some after a restart (a cluster of damped far-field modes can keep the rest
-    // from converging: more restarts buy little).
-    if (int(found.size()) >= std::min(k, 2 * count + 4) || (!found.empty() && pass >= 1) || pass == o.restarts) break;
+    // Done once a pass accepted any pair: a restart then mostly finds the same pairs again (at 11 points of
+    // the map's grid and 2 of the default grid the first four eigenvalues came out the same with and
+    // without it, in two thirds of the time). A pass that accepted none restarts (o.restarts times).
+    if (!found.empty() || pass == o.restarts) break;
     if (norm(next) == 0.0) break;
     start = std::move(next);
   }

@@ -34,7 +34,7 @@ struct StabilityOptions {
   /// Shifts σ in units of U/D (U → a|ω| when U = 0); the conjugates of their eigenvalues come free.
   std::vector<std::complex<double>> shifts{{0.1, 0.0}, {0.1, 0.55}, {0.1, 0.95}, {0.1, 1.4}};
   int krylov = 40;        ///< Arnoldi vectors per restart (≥ count + 10)
-  int restarts = 2;       ///< explicit restarts per shift when fewer than `count` Ritz values converged
+  int restarts = 1;       ///< explicit restarts per shift while no Ritz value has converged
   /// Relative residual ‖Jx − λMx‖/(‖Jx‖ + |λ|‖Mx‖) of an accepted eigenpair (the complex LU's solves
   /// reach 1e-8…1e-6 on the leading pairs; λ is then good to about that relative accuracy).
   double tol = 1e-6;
