@@ -15,8 +15,10 @@
 // ‖J x − λ M x‖ is small relative to ‖J x‖ + |λ|·‖M x‖.
 //
 // Finding the rightmost pair: shift-invert converges first to the eigenvalues nearest σ. The default
-// shifts sit just right of the imaginary axis, σ·D/U = 0.1 + i·{0, 0.55, 0.95, 1.4}: a steady (Im λ = 0) mode and
-// the wake's Hopf pair (Im λ·D/U = 2π·St ≈ 0.75–1.1 for St 0.12–0.17) lie near them. The eigenvalues of
+// shifts sit just right of the imaginary axis, σ·D/U = 0.1 + i·{0, 0.3, 0.6, 0.95, 1.4}: a steady (Im λ = 0)
+// mode, the wake's Hopf pair (Im λ·D/U = 2π·St ≈ 0.75–1.1 for St 0.12–0.17) and the slow one-sided shedding
+// at high spin (Im λ·D/U ≈ 0.25–0.3, St ≈ 0.04, near α = 5) lie near them. Without the shift at 0.3i that
+// last pair was missed at Re 150, α 4.8 and 5.1 on the map's grid (growth +0.023 and +0.10 U/D). The eigenvalues of
 // all shifts are merged (conjugates added: the problem is real) and sorted by real part. An eigenvalue with
 // a larger real part that none of the shifts found would have to lie farther from every shift than the
 // eigenvalues they did find (reported in `reach`, U/D); the wake's modes of higher frequency are damped.
@@ -32,8 +34,10 @@ namespace magnus {
 /// How leading_eigenvalues searches.
 struct StabilityOptions {
   /// Shifts σ in units of U/D (U → a|ω| when U = 0); the conjugates of their eigenvalues come free.
-  std::vector<std::complex<double>> shifts{{0.1, 0.0}, {0.1, 0.55}, {0.1, 0.95}, {0.1, 1.4}};
-  int krylov = 40;        ///< Arnoldi vectors per restart (≥ count + 10)
+  std::vector<std::complex<double>> shifts{{0.1, 0.0}, {0.1, 0.3}, {0.1, 0.6}, {0.1, 0.95}, {0.1, 1.4}};
+  /// Arnoldi vectors per restart (≥ count + 10). 32 were enough on the map's grid but left the default
+  /// grid at Re 100, α 2.2 with no converged eigenvalue.
+  int krylov = 40;
   int restarts = 1;       ///< explicit restarts per shift while no Ritz value has converged
   /// Relative residual ‖Jx − λMx‖/(‖Jx‖ + |λ|‖Mx‖) of an accepted eigenpair (the complex LU's solves
   /// reach 1e-8…1e-6 on the leading pairs; λ is then good to about that relative accuracy).
