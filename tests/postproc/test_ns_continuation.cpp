@@ -11,6 +11,7 @@
 #include "postproc/viscous_forces.hpp"
 #include "postproc/viscous_run.hpp"
 #include "solver/ns_newton.hpp"
+#include "solver/ns_stability.hpp"
 
 using namespace magnus;
 
@@ -136,4 +137,38 @@ TEST_CASE("the marching stability test: stable at Re 20, unstable at Re 100 with
     REQUIRE(s.has_value());
     CHECK(*s == expect);
   }
+}
+
+TEST_CASE("the eigenvalue test finds the slow one-sided shedding near α = 5 (Re 150, map grid)",
+          "[continuation][stability]") {
+  // At Re 150, α 4.8 the steady branch (reached by continuation: Newton from potential flow fails there) is
+  // unstable to a slow pair, Im λ·D/U ≈ 0.28 (St ≈ 0.044): marching from rest sheds with C_L amplitude 0.5.
+  // The shifts σ·D/U = 0.1 + i{0, 0.55, 0.95, 1.4} used before missed that pair and called the state stable.
+  const Case c = load_case(std::string(MAGNUS_SOURCE_DIR) + "/cases/s_map.toml");
+  NsMapOptions o;
+  o.alphas = {3.9, 4.2, 4.5, 4.8};
+  o.reynolds = {150.0};
+  o.average_unstable = false;
+  StabilityResult now, before;
+  std::optional<bool> marched;
+  o.stability = [&](const NsParams& p, const NsState& s) -> std::optional<bool> {
+    if (std::fabs(p.a * p.omega / p.U - 4.8) > 1e-9) return std::nullopt;
+    now = leading_eigenvalues(p, s);
+    StabilityOptions old;
+    old.shifts = {{0.1, 0.0}, {0.1, 0.55}, {0.1, 0.95}, {0.1, 1.4}};
+    before = leading_eigenvalues(p, s, 6, old);
+    marched = stability_by_marching(p, s);
+    return marched;
+  };
+  const NsMap m = ns_map(c, o);
+  REQUIRE(m.points.size() == 4);
+  REQUIRE(m.points.back().converged);
+  REQUIRE(marched.has_value());
+  CHECK_FALSE(*marched);  // the time stepper: the disturbance grows
+  REQUIRE(now.leading_pair().has_value());
+  INFO("leading pair " << *now.leading_pair() << "; before: " << (before.eigenvalues.empty() ? 0.0 : before.eigenvalues[0].real()));
+  CHECK_FALSE(now.stable);
+  CHECK(now.eigenvalues.front().real() == Approx(0.0233).margin(0.002));
+  CHECK(std::fabs(now.eigenvalues.front().imag()) == Approx(0.278).margin(0.005));
+  CHECK(before.stable);  // why the shift at 0.3i is there
 }
