@@ -78,6 +78,28 @@ std::string umfpack_error(const char* what, long status) {
   return s + ")";
 }
 
+long symbolic_in_grid_order(long n, const std::vector<long>& q,
+                            const std::function<long(const double*, const long*)>& analyse) {
+  double control[UMFPACK_CONTROL];  // the real and complex defaults are the same
+  umfpack_dl_defaults(control);
+  long status = UMFPACK_ERROR_invalid_permutation;
+  if (long(q.size()) == n) {
+    control[UMFPACK_ORDERING] = UMFPACK_ORDERING_GIVEN;
+    control[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_SYMMETRIC;
+    status = analyse(control, q.data());
+  }
+  if (status != UMFPACK_OK) {
+    umfpack_dl_defaults(control);
+    control[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
+    status = analyse(control, nullptr);
+  }
+  if (status != UMFPACK_OK) {
+    umfpack_dl_defaults(control);
+    status = analyse(control, nullptr);
+  }
+  return status;
+}
+
 SingleThreadBlas::SingleThreadBlas() {
   get_ = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
   set_ = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));

@@ -2,6 +2,7 @@
 // The steady Jacobian's sparse LU plumbing: one wording for a failed UMFPACK call (assembly,
 // factorisation, solve), the one way its triplets become compressed columns, and the fill-reducing
 // order of its unknowns that UMFPACK is given.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,13 @@ void triplet_pattern(long n, const std::vector<long>& ti, const std::vector<long
 /// box. Timed once around the calls on the Re 40 grid (256 × 314, the half): UMFPACK's analysis 0.09 s
 /// with it against 0.69 s with its own METIS ordering, the factorisation 0.43 s against 0.54 s.
 std::vector<long> grid_order(int nr, int n, bool mirror);
+
+/// UMFPACK's symbolic analysis the one way the steady Jacobian and its shifted complex copy want it: the
+/// order q (grid_order) given, with the symmetric strategy (the order for rows and columns alike); should
+/// that be refused, UMFPACK's METIS, then its default. `analyse(control, q)` calls umfpack_{dl,zl}_qsymbolic
+/// with q, or umfpack_{dl,zl}_symbolic when q is null, and returns its status. The status of the last try.
+long symbolic_in_grid_order(long n, const std::vector<long>& q,
+                            const std::function<long(const double* control, const long* q)>& analyse);
 
 /// OpenBLAS on one thread while it lives (restored after): UMFPACK's frontal matrices are small. On the
 /// shared 2-core machine the default grid's factorisation (90625 unknowns, 3.1 GFlop) took 1.0–1.6 s with

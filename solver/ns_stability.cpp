@@ -56,28 +56,14 @@ class ShiftedLu {
     }
     double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
     umfpack_zl_defaults(control);
-    // The grid's nested-dissection order (as for the real Jacobian: J − σM has J's pattern), given with the
-    // symmetric strategy; UMFPACK's METIS, then its default, should that be refused.
+    // The grid's nested-dissection order, as for the real Jacobian (J − σM has J's pattern).
     if (!*symbolic) {
-      const std::vector<long> q = grid_order(jac.grid().n_r, jac.grid().n_theta, false);
-      long st = UMFPACK_ERROR_invalid_permutation;
-      if (long(q.size()) == n) {
-        control[UMFPACK_ORDERING] = UMFPACK_ORDERING_GIVEN;
-        control[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_SYMMETRIC;
-        st = umfpack_zl_qsymbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), q.data(), symbolic,
-                                  control, info);
-      }
-      if (st != UMFPACK_OK) {
-        *symbolic = nullptr;
-        umfpack_zl_defaults(control);
-        control[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
-        st = umfpack_zl_symbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), symbolic, control, info);
-      }
-      if (st != UMFPACK_OK) {
-        *symbolic = nullptr;
-        umfpack_zl_defaults(control);
-        st = umfpack_zl_symbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), symbolic, control, info);
-      }
+      const long st = symbolic_in_grid_order(
+          n, grid_order(jac.grid().n_r, jac.grid().n_theta, false), [&](const double* ctl, const long* q) {
+            double inf[UMFPACK_INFO];
+            return q ? umfpack_zl_qsymbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), q, symbolic, ctl, inf)
+                     : umfpack_zl_symbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), symbolic, ctl, inf);
+          });
       if (st != UMFPACK_OK) {
         *symbolic = nullptr;
         throw std::runtime_error("leading_eigenvalues: UMFPACK symbolic analysis failed (status " +
@@ -166,10 +152,10 @@ std::vector<Eigenpair> arnoldi_at(const SteadyJacobian& jac, const std::vector<d
     if (!(s0 > 0.0)) break;
     for (size_t q = 0; q < n; ++q) V(Eigen::Index(q), 0) = start[q] / s0;
     int k = 0;
-    cvec v(n);
+    cvec col(n);
     for (; k < k_max; ++k) {
-      for (size_t q = 0; q < n; ++q) v[q] = V(Eigen::Index(q), k);
-      const cvec wv = op(v);
+      for (size_t q = 0; q < n; ++q) col[q] = V(Eigen::Index(q), k);
+      const cvec wv = op(col);
       Eigen::VectorXcd w = Eigen::Map<const Eigen::VectorXcd>(wv.data(), Eigen::Index(n));
       // Classical Gram–Schmidt, twice (as stable as modified Gram–Schmidt twice).
       for (int sweep = 0; sweep < 2; ++sweep) {
