@@ -70,21 +70,20 @@ std::vector<AttrSpec> extrapolated(const char* name, const char* what,
   // moves its elements).
   static std::deque<std::string> kept;
   auto keep = [](std::string s) { return kept.emplace_back(std::move(s)).c_str(); };
-  auto say = keep;
   return {
       only(Models::steady_study,
-           num(S, keep(n), "1", say(std::string("Richardson value of ") + what + " from the last three grids"),
+           num(S, keep(n), "1", keep(std::string("Richardson value of ") + what + " from the last three grids"),
                get(&Richardson::value), set(&Richardson::value))),
       only(Models::steady_study,
-           num(S, keep(n + "_error"), "1", say(std::string("error bar of the Richardson value of ") + what),
+           num(S, keep(n + "_error"), "1", keep(std::string("error bar of the Richardson value of ") + what),
                get(&Richardson::error), set(&Richardson::error))),
       only(Models::steady_study,
            num(S, keep(n + "_order"), "1",
-               say(std::string("order p used for ") + what + " (observed on three grids when in [1, 4], else 2)"),
+               keep(std::string("order p used for ") + what + " (observed on three grids when in [1, 4], else 2)"),
                get(&Richardson::order), set(&Richardson::order))),
       only(Models::steady_study,
            integer(
-               S, keep(n + "_order_observed"), say(std::string("1: the order of ") + what + " was observed"),
+               S, keep(n + "_order_observed"), keep(std::string("1: the order of ") + what + " was observed"),
                [m](const FlowResult& r) -> std::optional<double> {
                  const SteadyStudy* st = study(r);
                  if (!st || !(st->*m)) return std::nullopt;
