@@ -7,7 +7,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <random>
 #include <stdexcept>
 
@@ -128,12 +127,11 @@ struct Eigenpair {
   double shift_distance;  ///< |λ − σ|, 1/s
 };
 
-/// Shift-invert Arnoldi at σ (1/s): up to `count` accepted eigenpairs nearest σ. A pass that accepted none
-/// restarts only when an unconverged Ritz value has Re λ > restart_above (1/s; see StabilityOptions).
-/// `solves` counts the solves with J − σM.
+/// Shift-invert Arnoldi at σ (1/s): up to `count` accepted eigenpairs nearest σ. `solves` counts the solves
+/// with J − σM.
 std::vector<Eigenpair> arnoldi_at(const SteadyJacobian& jac, const std::vector<double>& m, cplx sigma,
-                                  double restart_above, int count, const StabilityOptions& o, void** symbolic,
-                                  std::mt19937& rng, int& solves) {
+                                  int count, const StabilityOptions& o, void** symbolic, std::mt19937& rng,
+                                  int& solves) {
   const ShiftedLu lu(jac, m, sigma, symbolic);
   const size_t n = size_t(jac.size());
   auto op = [&](const cvec& v) {
@@ -182,7 +180,6 @@ std::vector<Eigenpair> arnoldi_at(const SteadyJacobian& jac, const std::vector<d
     std::sort(order.begin(), order.end(),
               [&](int u, int v) { return std::abs(es.eigenvalues()(u)) > std::abs(es.eigenvalues()(v)); });
     cvec next(n, 0.0);  // kept pairs stay in `found`; a restart may find them again (merged later)
-    bool worth_restart = false;  // an unconverged Ritz value right of restart_above: worth a restart
     // Check twice as many Ritz values as wanted: on a fine grid a cluster of damped far-field modes can sit
     // nearer the shift than the wake's pair.
     for (int r = 0; r < std::min(k, 2 * count + 4); ++r) {
@@ -202,15 +199,12 @@ std::vector<Eigenpair> arnoldi_at(const SteadyJacobian& jac, const std::vector<d
         found.push_back({lambda, std::move(x), std::abs(lambda - sigma)});
       } else {
         for (size_t q = 0; q < n; ++q) next[q] += x[q];
-        worth_restart = worth_restart || lambda.real() > restart_above;
       }
     }
     // Done once a pass accepted any pair: a restart then mostly finds the same pairs again (at 11 points of
     // the map's grid and 2 of the default grid the first four eigenvalues came out the same with and
-    // without it, in two thirds of the time). A pass that accepted none restarts (o.restarts times), but
-    // only when one of its unconverged Ritz values lies right of restart_above: a restart that can only
-    // sharpen modes well left of the leader found so far cannot change the leading eigenvalue.
-    if (!found.empty() || pass == o.restarts || !worth_restart) break;
+    // without it, in two thirds of the time). A pass that accepted none restarts (o.restarts times).
+    if (!found.empty() || pass == o.restarts) break;
     if (norm(next) == 0.0) break;
     start = std::move(next);
   }
@@ -273,10 +267,7 @@ StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, in
   double reach = -1.0;
   try {
     for (const cplx& s : o.shifts) {
-      double leader = -std::numeric_limits<double>::infinity();  // rightmost Re λ accepted so far, 1/s
-      for (const auto& e : all) leader = std::max(leader, e.lambda.real());
-      const double restart_above = leader - o.restart_margin * unit;
-      std::vector<Eigenpair> f = arnoldi_at(jac, m, s * unit, restart_above, count, o, &symbolic, rng, res.solves);
+      std::vector<Eigenpair> f = arnoldi_at(jac, m, s * unit, count, o, &symbolic, rng, res.solves);
       double far = 0.0;
       for (const auto& e : f) far = std::max(far, e.shift_distance / unit);
       if (!f.empty()) reach = reach < 0.0 ? far : std::min(reach, far);

@@ -38,16 +38,12 @@ struct StabilityOptions {
   /// Arnoldi vectors per restart (≥ count + 10). 32 were enough on the map's grid but left the default
   /// grid at Re 100, α 2.2 with no converged eigenvalue.
   int krylov = 40;
-  int restarts = 1;
-  /// A pass that accepted nothing restarts only when one of its unconverged Ritz values has Re λ within
-  /// this margin (U/D) of the rightmost eigenvalue accepted so far, or right of it; before any is accepted
-  /// it always restarts. A restart that can only sharpen modes well left of the leader cannot change the
-  /// leading eigenvalue: at 84 points of the map's grid every leading eigenvalue and verdict stayed the
-  /// same, with about a fifth fewer solves. +∞: always restart (up to `restarts`).
-  double restart_margin = 0.05;       ///< explicit restarts per shift while no Ritz value has converged
-  /// Relative residual ‖Jx − λMx‖/(‖Jx‖ + |λ|‖Mx‖) of an accepted eigenpair (the complex LU's solves
-  /// reach 1e-8…1e-6 on the leading pairs; λ is then good to about that relative accuracy).
-  double tol = 1e-6;
+  int restarts = 1;       ///< explicit restarts per shift while no Ritz value has converged
+  /// Relative residual ‖Jx − λMx‖/(‖Jx‖ + |λ|‖Mx‖) of an accepted eigenpair. On the default grid the
+  /// leading pairs stall at 1e-6…4e-6 with 40 vectors (the complex LU's solves without refinement), already
+  /// the same to five digits pass after pass; with 1e-6 the wake's pair at Re 100, α 2.2 (−0.0444 + 0.925i)
+  /// and the slow real modes were never accepted, and a damped pair farther left was reported as leading.
+  double tol = 1e-5;
   unsigned seed = 12345;  ///< of the random start vector (results do not depend on it beyond tol)
 };
 
