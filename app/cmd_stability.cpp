@@ -51,8 +51,8 @@ void command_stability(const StabilityCliOptions& o) {
                                            o.case_path, p.reynolds(), alpha));
     const StabilityResult& st = s.stability;
     if (st.eigenvalues.empty()) throw std::runtime_error(o.case_path + ": " + st.message);
-    text += fmt::format("steady state   Re {:.4g}, α {:g}: Newton {:.2f} s, eigenvalues {:.2f} s\n", p.reynolds(),
-                        alpha, s.newton_seconds, st.seconds);
+    text += fmt::format("steady state   Re {:.4g}, α {:g}: Newton {:.2f} s, eigenvalues {:.2f} s ({} shifted solves)\n",
+                        p.reynolds(), alpha, s.newton_seconds, st.seconds, st.solves);
     text += "eigenvalues    λ·D/U (growth rate, frequency), rightmost first\n";
     for (const auto& l : st.eigenvalues) text += "               " + eig_text(l) + "\n";
     text += fmt::format("verdict        {} (leading growth rate {:+.5f} U/D{})\n",
@@ -60,7 +60,7 @@ void command_stability(const StabilityCliOptions& o) {
                         st.growth_rate(),
                         st.eigenvalues.front().imag() != 0.0 ? fmt::format(", St {:.4f}", st.strouhal()) : "");
     j = {{"reynolds", p.reynolds()}, {"spin_ratio", alpha}, {"stable", st.stable}, {"eigenvalues", eig_json(st)},
-         {"seconds", s.newton_seconds + st.seconds}};
+         {"seconds", s.newton_seconds + st.seconds}, {"solves", st.solves}};
   } else {
     const size_t colon = o.critical.find(':');
     double A = 0.0, B = 0.0;
