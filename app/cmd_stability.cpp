@@ -51,7 +51,8 @@ void command_stability(const StabilityCliOptions& o) {
                                            o.case_path, p.reynolds(), alpha));
     const StabilityResult& st = s.stability;
     if (st.eigenvalues.empty()) throw std::runtime_error(o.case_path + ": " + st.message);
-    text += fmt::format("steady state   Re {:.4g}, α {:g}: Newton {:.2f} s, eigenvalues {:.2f} s ({} shifted solves)\n",
+    text += fmt::format("steady state   Re {:.4g}, α {:g}: Newton {:.2f} s, eigenvalues {:.2f} s ({} shifted "
+                        "solves)\n",
                         p.reynolds(), alpha, s.newton_seconds, st.seconds, st.solves);
     text += "eigenvalues    λ·D/U (growth rate, frequency), rightmost first\n";
     for (const auto& l : st.eigenvalues) text += "               " + eig_text(l) + "\n";
