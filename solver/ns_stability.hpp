@@ -36,13 +36,14 @@ struct StabilityOptions {
   /// Shifts σ in units of U/D (U → a|ω| when U = 0); the conjugates of their eigenvalues come free.
   std::vector<std::complex<double>> shifts{{0.1, 0.0}, {0.1, 0.3}, {0.1, 0.6}, {0.1, 0.95}, {0.1, 1.4}};
   /// Arnoldi vectors per restart (≥ count + 10). 32 were enough on the map's grid but left the default
-  /// grid at Re 100, α 2.2 with no converged eigenvalue.
+  /// grid at Re 100, α 2.2 with no converged eigenvalue (with tol = 1e-6 then).
   int krylov = 40;
   int restarts = 1;       ///< explicit restarts per shift while no Ritz value has converged
   /// Relative residual ‖Jx − λMx‖/(‖Jx‖ + |λ|‖Mx‖) of an accepted eigenpair. On the default grid the
-  /// leading pairs stall at 1e-6…4e-6 with 40 vectors (the complex LU's solves without refinement), already
-  /// the same to five digits pass after pass; with 1e-6 the wake's pair at Re 100, α 2.2 (−0.0444 + 0.925i)
-  /// and the slow real modes were never accepted, and a damped pair farther left was reported as leading.
+  /// leading pairs stall at 1e-6…4e-6 with 40 vectors (UMFPACK's iterative refinement does not lower it: a
+  /// cluster of non-normal modes), already the same to five digits pass after pass; with 1e-6 the wake's
+  /// pair at Re 100, α 2.2 (−0.0444 + 0.925i) and the slow real modes were never accepted, and a damped
+  /// pair farther left was reported as leading.
   double tol = 1e-5;
   unsigned seed = 12345;  ///< of the random start vector (results do not depend on it beyond tol)
 };
