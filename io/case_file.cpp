@@ -16,12 +16,11 @@
 
 namespace magnus {
 
+using case_reader::apply_override;
+using case_reader::Reader;
+using case_reader::reject_unknown_keys;
 using toml_safe::parse_toml;
 using toml_safe::unshield;
-using case_reader::Reader;
-using case_reader::apply_override;
-using case_reader::reject_unknown_keys;
-
 
 Case parse_case(const std::string& toml_text, const std::string& origin,
                 const std::vector<std::string>& overrides) {
@@ -74,7 +73,7 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
   } else {
     std::vector<std::string> ns_only;
     for (const auto& k : case_key_table().at("time")) ns_only.push_back("time." + k);
-    ns_only.insert(ns_only.end(), {"output.snapshots", "output.snapshot_interval"});
+    ns_only.insert(ns_only.end(), {"output.snapshots", "output.snapshot_interval", "solver.advection_order"});
     for (const auto& k : ns_only)
       if (r.has(k.substr(0, k.find('.')), k.substr(k.find('.') + 1)))
         r.fail(k, "is only used with model.flow = \"navier-stokes\"");
@@ -194,6 +193,9 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
       "output", "compression", c.output.compression, [](long v) { return v >= 0 && v <= 9; },
       "an integer from 0 (none) to 9"));
   if (ns) {
+    c.solver.advection_order = int(r.integer(
+        "solver", "advection_order", c.solver.advection_order, [](long v) { return v == 2 || v == 4; },
+        "2 (Arakawa's Jacobian) or 4 (fourth order in θ)"));
     const std::string mode = r.word("time", "mode", "auto", {"auto", "steady", "unsteady"});
     c.time.mode = mode == "auto"     ? TimeMode::automatic
                   : mode == "steady" ? TimeMode::steady
@@ -220,11 +222,10 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
       std::string list;
       for (const auto& n : names)
         if (field_of_model(n, c.model)) list += (list.empty() ? "" : ", ") + n;
-      r.fail("output.fields", fmt::format("{} field \"{}\" (fields of {} flow: {})",
-                                          std::find(names.begin(), names.end(), f) == names.end()
-                                              ? "unknown"
-                                              : "no such",
-                                          f, to_string(c.model), list));
+      r.fail("output.fields",
+             fmt::format("{} field \"{}\" (fields of {} flow: {})",
+                         std::find(names.begin(), names.end(), f) == names.end() ? "unknown" : "no such", f,
+                         to_string(c.model), list));
     }
   }
   // In a turned world each of u_x, u_y mixes both wind-frame components: they are stored together.
@@ -326,6 +327,7 @@ std::string to_toml(const Case& c) {
     t += fmt::format("\n[solver]\nmethod = {}\n", str(to_string(c.solver.method)));
     if (c.grid.tolerance == 0.0) t += fmt::format("stencil = {}\n", str(to_string(c.solver.stencil)));
   } else {
+    t += fmt::format("\n[solver]\nadvection_order = {}\n", c.solver.advection_order);
     t += fmt::format(
         "\n[time]\nmode = {}\nend = {}\ndt = {}\ncfl = {}\nmean_tolerance = {}\ncheckpoint_interval = {}\n",
         str(to_string(c.time.mode)), num(c.time.end), num(c.time.dt), num(c.time.cfl),

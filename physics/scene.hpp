@@ -34,9 +34,10 @@ struct Scene {
   bool reynolds_given = false;  ///< flow.reynolds was given: ν = U·2a/Re (else flow.viscosity or neither)
   double reynolds_value = 0.0;  ///< Re as given in flow.reynolds (echoed as given), else 0
   double direction_deg = 0.0;   ///< β, deg CCW from +x: the world direction the freestream flows towards
-  std::optional<double> course_deg;  ///< c, deg CCW from +x: the way the ship moves (rotor sail); absent: none
-  double span = 0.0;                 ///< b, m: the cylinder's length for total forces; 0: not given
-  std::optional<double> rpm_given;   ///< cylinder.rpm as given, rev/min (echoed as given); absent: not rpm
+  std::optional<double>
+      course_deg;                   ///< c, deg CCW from +x: the way the ship moves (rotor sail); absent: none
+  double span = 0.0;                ///< b, m: the cylinder's length for total forces; 0: not given
+  std::optional<double> rpm_given;  ///< cylinder.rpm as given, rev/min (echoed as given); absent: not rpm
 
   /// Γ = 2πa²ω (spin model) or the given value, m^2/s.
   double Gamma() const;
@@ -80,10 +81,11 @@ struct GridRequest {
   double tolerance = 0.0;      ///< target relative lift error; 0: the grid as given
 };
 
-/// The linear solver and the stencil.
+/// The linear solver and the stencil (potential flow); the advection's order in θ (navier-stokes).
 struct SolverChoice {
   Method method = Method::automatic;
   StencilKind stencil = StencilKind::five_point;
+  int advection_order = 2;  ///< 2 (Arakawa's Jacobian) or 4 (fourth order in θ), navier-stokes only
 };
 
 /// The navier-stokes model's defaults where they differ from potential flow's: the wake needs a far
@@ -143,8 +145,8 @@ struct SceneKeys {
 /// 2πρa², the surface speed 2U + |Γ|/(2πa) and pressure p∞ ± ½ρ(2U + |Γ|/(2πa))², and ψ(R) ≈ U·R +
 /// |Γ|/(2π)·ln(R/a) (R = outer_radius·a), C_L = −Γ/(Ua), the free stagnation radius |Γ|/(2πU) and, when a
 /// viscosity is given, ν = U·2a/Re (from flow.reynolds) or the Reynolds number U_ref·2a/ν (from
-/// flow.viscosity, U_ref = reference_speed()), and with a span b the total lift ρUΓ·b, that is not finite, or that a product of non-zero inputs
-/// underflows below the smallest normal double; empty if none.
+/// flow.viscosity, U_ref = reference_speed()), and with a span b the total lift ρUΓ·b, that is not finite, or
+/// that a product of non-zero inputs underflows below the smallest normal double; empty if none.
 std::optional<Overflow> find_overflow(const Scene& s, double outer_radius, const SceneKeys& keys = {});
 
 const char* to_string(Spacing);

@@ -6,10 +6,10 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
-#include <optional>
-#include <string>
 #include <deque>
+#include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "physics/exact.hpp"
 #include "postproc/ns_pressure.hpp"
@@ -43,6 +43,7 @@ NsParams ns_params(const Case& c) {
   p.n_theta = c.grid.n_theta;
   p.n_r = c.grid.n_r;
   p.cfl = c.time.cfl;
+  p.advection_order = c.solver.advection_order;
   p.dt = c.time.dt > 0.0 && s.reference_speed() > 0.0 ? c.time.dt * time_unit(s) : 0.0;
   return p;
 }
@@ -110,7 +111,8 @@ FlowResult viscous_result(const Case& c, const NsParams& p, const UnsteadyResult
   const ExactFlow ideal = exact_flow(sc);
   f.lift_kutta_joukowski = ideal.lift(rho);
   f.circulation_measured = 2.0 * M_PI * a * a * w;  // ∮ u_θ a dθ with u_θ = aω: no slip
-  f.delta_p_top_bottom = periodic_interpolate(s.pressure, M_PI / 2) - periodic_interpolate(s.pressure, 1.5 * M_PI);
+  f.delta_p_top_bottom =
+      periodic_interpolate(s.pressure, M_PI / 2) - periodic_interpolate(s.pressure, 1.5 * M_PI);
   f.delta_p_top_bottom_exact = ideal.delta_p_top_bottom(rho);
   f.delta_p_seed_estimate = seed_delta_p(sc);
   f.magnus_S_exact = 2.0 * M_PI * rho * a * a;
@@ -244,13 +246,14 @@ AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g) {
   }
   const std::complex<double> l = st.eigenvalues.front();
   a.eigenvalue = l;
-  const std::string lam = fmt::format("leading eigenvalue {:.4g} {:+.4g}i U/D, St {:.4g}", l.real(), l.imag(),
-                                      st.strouhal());
+  const std::string lam =
+      fmt::format("leading eigenvalue {:.4g} {:+.4g}i U/D, St {:.4g}", l.real(), l.imag(), st.strouhal());
   if (st.stable)
-    a.steady = steady_result(c, p, g, nr.state,
-                             fmt::format("auto: stable ({}); steady, by Newton's method: {} steps, residual {:.1e}",
-                                         lam, nr.iterations, nr.residuals.empty() ? 0.0 : nr.residuals.back()),
-                             nr.wall_seconds + st.seconds, &st);
+    a.steady =
+        steady_result(c, p, g, nr.state,
+                      fmt::format("auto: stable ({}); steady, by Newton's method: {} steps, residual {:.1e}",
+                                  lam, nr.iterations, nr.residuals.empty() ? 0.0 : nr.residuals.back()),
+                      nr.wall_seconds + st.seconds, &st);
   else
     a.why = fmt::format("auto: marched in time (the steady state is unstable: {}); ", lam);
   return a;
@@ -312,8 +315,7 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
   // The hooks' copy of the history (a checkpoint needs it; run_unsteady keeps its own for the analysis).
   std::vector<ForceSample> seen = history;
   o.on_step = [&](const NsState& s, const ViscousForces& f) {
-    if (seen.empty() || s.t > seen.back().t)
-      seen.push_back(force_sample(s.t, f));
+    if (seen.empty() || s.t > seen.back().t) seen.push_back(force_sample(s.t, f));
     if (c.output.snapshots > 0 && s.t >= next_snap - 1e-9 * snap_every) {
       snaps.push_back({s.t, s.psi, s.zeta});
       if (snaps.size() > size_t(c.output.snapshots)) snaps.pop_front();
@@ -328,7 +330,8 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
   UnsteadyResult run = run_unsteady(p, o, std::move(start), std::move(history));
   run.message = choice.why + run.message;
   if (!run.ok) throw std::runtime_error(run.message);  // the last checkpoint stays as it was
-  if (run.interrupted && hooks.on_checkpoint) hooks.on_checkpoint({run.state, run.history, {snaps.begin(), snaps.end()}});
+  if (run.interrupted && hooks.on_checkpoint)
+    hooks.on_checkpoint({run.state, run.history, {snaps.begin(), snaps.end()}});
   FlowResult r = viscous_result(c, p, run, {snaps.begin(), snaps.end()});
   if (choice.eigenvalue) {
     r.viscous->eigenvalue_real = choice.eigenvalue->real();

@@ -1,7 +1,8 @@
 // The analytic Jacobian of the steady viscous equations (see ns_newton.hpp): its triplet pattern, built once,
 // and its values at a state, summed into compressed columns for UMFPACK.
-#include "solver/ns_newton.hpp"
+#include "solver/arakawa.hpp"
 #include "solver/ns_lu.hpp"
+#include "solver/ns_newton.hpp"
 
 #include <umfpack.h>
 
@@ -57,13 +58,14 @@ void SteadyJacobian::assemble(const std::vector<double>& x) {
   const double a2 = p_.a * p_.a;
   const bool first = Ti_.empty();
   size_t k = 0;
-  // Arakawa's 48 terms of a ζ row fall on 18 columns: the first assembly merges the entries of each run
-  // of one row into distinct triplets (k-th call → Slot_[k]), so the compressed columns are built from
-  // 2.5 times fewer triplets; the later ones only add into Tx_.
+  // Arakawa's 48 terms of a ζ row fall on 18 columns (order 4 in θ: 96 terms on 30 columns): the first
+  // assembly merges the entries of each run of one row into distinct triplets (k-th call → Slot_[k]), so
+  // the compressed columns are built from 2.5–3 times fewer triplets; the later ones only add into Tx_.
+  const int order = p_.advection_order, strides = advection_strides(order);
   long run_row = -1;
   size_t run_begin = 0;
   if (first) {
-    const size_t calls = size_t(n) * (16 + size_t(nr - 2) * (p_.stokes ? 11 : 11 + 48));
+    const size_t calls = size_t(n) * (16 + size_t(nr - 2) * (p_.stokes ? 11 : 11 + 48 * strides));
     Slot_.reserve(calls), Ti_.reserve(calls / 2), Tj_.reserve(calls / 2), Tx_.reserve(calls / 2);
   } else {
     std::fill(Tx_.begin(), Tx_.end(), 0.0);
@@ -114,10 +116,13 @@ void SteadyJacobian::assemble(const std::vector<double>& x) {
       add(rz, cz(i, j), (-2.0 - 2.0 * q2) * s_zeta_);
       add(rz, cz(i, e), q2 * s_zeta_), add(rz, cz(i, w), q2 * s_zeta_);
       if (p_.stokes) continue;
-      for (const ArakawaTerm& t : kArakawa) {
-        const int pi = i + t.pi, pj = wrap(j + t.pj), zi = i + t.zi, zj = wrap(j + t.zj);
-        add(rz, cp(pi, pj), cN * t.c * Z(zi, zj));
-        add(rz, cz(zi, zj), cN * t.c * P(pi, pj));
+      for (int s = 1; s <= strides; ++s) {  // θ-stride s, weight c_s (solver/arakawa.hpp)
+        const double cs = cN * advection_weight(order, s);
+        for (const ArakawaTerm& t : kArakawa) {
+          const int pi = i + t.pi, pj = wrap(j + s * t.pj), zi = i + t.zi, zj = wrap(j + s * t.zj);
+          add(rz, cp(pi, pj), cs * t.c * Z(zi, zj));
+          add(rz, cz(zi, zj), cs * t.c * P(pi, pj));
+        }
       }
     }
   }

@@ -5,6 +5,7 @@
 #include <dlfcn.h>
 #include <umfpack.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace magnus {
@@ -12,10 +13,11 @@ namespace magnus {
 namespace {
 
 /// Nested dissection of the box of nodes [i0, i1) × [j0, j1) of a grid with a 9-point stencil (George
-/// 1973): the two halves either side of the middle line of the longer side, then that line; small boxes
-/// in natural order. `put` takes a node (i, j).
+/// 1973), or one that reaches wj columns either side in θ: the two halves either side of the middle line
+/// of the longer side (wj columns wide across θ), then that line; small boxes in natural order. `put`
+/// takes a node (i, j).
 template <class Put>
-void dissect(int i0, int i1, int j0, int j1, const Put& put) {
+void dissect(int i0, int i1, int j0, int j1, int wj, const Put& put) {
   if (i1 <= i0 || j1 <= j0) return;
   if ((i1 - i0) * (j1 - j0) <= 16) {
     for (int i = i0; i < i1; ++i)
@@ -24,23 +26,25 @@ void dissect(int i0, int i1, int j0, int j1, const Put& put) {
   }
   if (i1 - i0 >= j1 - j0) {
     const int s = (i0 + i1) / 2;
-    dissect(i0, s, j0, j1, put), dissect(s + 1, i1, j0, j1, put);
+    dissect(i0, s, j0, j1, wj, put), dissect(s + 1, i1, j0, j1, wj, put);
     for (int j = j0; j < j1; ++j) put(s, j);
   } else {
-    const int s = (j0 + j1) / 2;
-    dissect(i0, i1, j0, s, put), dissect(i0, i1, s + 1, j1, put);
-    for (int i = i0; i < i1; ++i) put(i, s);
+    const int s = std::min((j0 + j1) / 2, j1 - wj);
+    dissect(i0, i1, j0, s, wj, put), dissect(i0, i1, s + wj, j1, wj, put);
+    for (int i = i0; i < i1; ++i)
+      for (int j = s; j < s + wj; ++j) put(i, j);
   }
 }
 
 }  // namespace
 
-std::vector<long> grid_order(int nr, int n, bool mirror) {
+std::vector<long> grid_order(int nr, int n, bool mirror, int theta_reach) {
+  const int wj = std::max(1, theta_reach);
   std::vector<long> order;
   if (mirror) {
     const int m = n / 2 - 1;
     order.reserve(size_t(2) * nr * m);
-    dissect(0, nr, 1, n / 2, [&](int i, int j) {
+    dissect(0, nr, 1, n / 2, wj, [&](int i, int j) {
       const long u = 2 * (long(i) * m + j - 1);
       order.push_back(u), order.push_back(u + 1);
     });
@@ -51,10 +55,11 @@ std::vector<long> grid_order(int nr, int n, bool mirror) {
     const long u = 2 * (long(i) * n + j);
     order.push_back(u), order.push_back(u + 1);
   };
-  dissect(0, nr, 1, n / 2, put);
-  dissect(0, nr, n / 2 + 1, n, put);
-  for (int j : {0, n / 2})
-    for (int i = 0; i < nr; ++i) put(i, j);
+  dissect(0, nr, wj, n / 2, wj, put);
+  dissect(0, nr, n / 2 + wj, n, wj, put);
+  for (int j0 : {0, n / 2})
+    for (int i = 0; i < nr; ++i)
+      for (int j = j0; j < j0 + wj; ++j) put(i, j);
   order.push_back(2L * nr * n);  // Γ_R
   return order;
 }
@@ -64,8 +69,8 @@ void triplet_pattern(long n, const std::vector<long>& ti, const std::vector<long
   Ap.assign(size_t(n) + 1, 0);
   Ai.resize(ti.size());
   map.resize(ti.size());
-  const long status = umfpack_dl_triplet_to_col(n, n, long(ti.size()), ti.data(), tj.data(), nullptr, Ap.data(),
-                                                Ai.data(), nullptr, map.data());
+  const long status = umfpack_dl_triplet_to_col(n, n, long(ti.size()), ti.data(), tj.data(), nullptr,
+                                                Ap.data(), Ai.data(), nullptr, map.data());
   if (status != UMFPACK_OK) throw std::runtime_error(umfpack_error("triplet_to_col", status));
   Ai.resize(size_t(Ap.back()));
 }

@@ -89,7 +89,8 @@ class SteadyJacobian {
   bool mirror() const { return mirror_; }
   /// Solve J·y = b (transpose: Jᵀ·y = b) with the last factors; throws std::logic_error before factor().
   std::vector<double> solve(const std::vector<double>& b, bool transpose = false) const;
-  /// y = J·x with the last assembled matrix; throws std::logic_error with mirror (its rows are not all there).
+  /// y = J·x with the last assembled matrix; throws std::logic_error with mirror (its rows are not all
+  /// there).
   std::vector<double> multiply(const std::vector<double>& x) const;
 
   /// The last assembled matrix, compressed sparse columns (row indices sorted in each column); with mirror

@@ -10,6 +10,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "solver/arakawa.hpp"
 #include "solver/ns_lu.hpp"
 #include "solver/ns_newton.hpp"
 
@@ -58,12 +59,17 @@ class ShiftedLu {
     umfpack_zl_defaults(control);
     // The grid's nested-dissection order, as for the real Jacobian (J − σM has J's pattern).
     if (!*symbolic) {
-      const long st = symbolic_in_grid_order(
-          n, grid_order(jac.grid().n_r, jac.grid().n_theta, false), [&](const double* ctl, const long* q) {
-            double inf[UMFPACK_INFO];
-            return q ? umfpack_zl_qsymbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), q, symbolic, ctl, inf)
-                     : umfpack_zl_symbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), symbolic, ctl, inf);
-          });
+      const long st =
+          symbolic_in_grid_order(n,
+                                 grid_order(jac.grid().n_r, jac.grid().n_theta, false,
+                                            advection_strides(jac.params().advection_order)),
+                                 [&](const double* ctl, const long* q) {
+                                   double inf[UMFPACK_INFO];
+                                   return q ? umfpack_zl_qsymbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(),
+                                                                   Az_.data(), q, symbolic, ctl, inf)
+                                            : umfpack_zl_symbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(),
+                                                                  Az_.data(), symbolic, ctl, inf);
+                                 });
       if (st != UMFPACK_OK) {
         *symbolic = nullptr;
         throw std::runtime_error("leading_eigenvalues: UMFPACK symbolic analysis failed (status " +
@@ -76,8 +82,8 @@ class ShiftedLu {
     if (st != UMFPACK_OK) {
       if (numeric_) umfpack_zl_free_numeric(&numeric_);
       throw std::runtime_error("leading_eigenvalues: UMFPACK factorisation of J − σM failed (status " +
-                               std::to_string(st) + (st == UMFPACK_WARNING_singular_matrix ? ": singular" : "") +
-                               ")");
+                               std::to_string(st) +
+                               (st == UMFPACK_WARNING_singular_matrix ? ": singular" : "") + ")");
     }
   }
   ~ShiftedLu() {
@@ -99,7 +105,8 @@ class ShiftedLu {
     const long st = umfpack_zl_solve(UMFPACK_A, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), yx.data(),
                                      yz.data(), bx.data(), bz.data(), numeric_, control, info);
     if (st != UMFPACK_OK)
-      throw std::runtime_error("leading_eigenvalues: UMFPACK solve failed (status " + std::to_string(st) + ")");
+      throw std::runtime_error("leading_eigenvalues: UMFPACK solve failed (status " + std::to_string(st) +
+                               ")");
     cvec y(n);
     for (size_t q = 0; q < n; ++q) y[q] = {yx[q], yz[q]};
     return y;
@@ -246,15 +253,16 @@ StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, in
   for (int i = 1; i < nr - 1; ++i)
     for (int j = 0; j < n; ++j)
       m[2 * (size_t(i) * n + j) + 1] = jac.zeta_row_scale() * h * h * g.r[i] * g.r[i] / p.nu;
-  // The stepper's outer ring: ζ_t = −(ψ_θ/R²)(ζ_N − ζ_{N−1})/h where the wake leaves (row s_ζ(ζ_N − ζ_{N−1})),
-  // and dΓ_R/dt = the flux (row s_ζ·h/(2πν)·flux): dynamic rows, slow ones. Treated as algebraic they
-  // would tie Γ_R to the tiny far-field vorticity at once, which the stepper does not.
+  // The stepper's outer ring: ζ_t = −(ψ_θ/R²)(ζ_N − ζ_{N−1})/h where the wake leaves (row s_ζ(ζ_N −
+  // ζ_{N−1})), and dΓ_R/dt = the flux (row s_ζ·h/(2πν)·flux): dynamic rows, slow ones. Treated as algebraic
+  // they would tie Γ_R to the tiny far-field vorticity at once, which the stepper does not.
   const double R = g.outer_radius();
   if (p.outer_vorticity == NsOuterVorticity::inflow_outflow)
     for (int j = 0; j < n; ++j) {
       const size_t base = size_t(nr - 1) * n;
       const double p_theta =
-          (steady.psi[base + size_t((j + 1) % n)] - steady.psi[base + size_t((j + n - 1) % n)]) / (2.0 * g.d_theta);
+          (steady.psi[base + size_t((j + 1) % n)] - steady.psi[base + size_t((j + n - 1) % n)]) /
+          (2.0 * g.d_theta);
       if (p_theta > 0.0) m[2 * (base + j) + 1] = -jac.zeta_row_scale() * h * R * R / p_theta;
     }
   m.back() = jac.zeta_row_scale() * h / (2.0 * M_PI * p.nu);
@@ -287,7 +295,8 @@ StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, in
       for (auto& z : e.x) z = std::conj(z);
     }
     bool seen = false;
-    for (const auto& u : uniq) seen = seen || std::abs(u.lambda - e.lambda) <= 1e-6 * (unit + std::abs(e.lambda));
+    for (const auto& u : uniq)
+      seen = seen || std::abs(u.lambda - e.lambda) <= 1e-6 * (unit + std::abs(e.lambda));
     if (!seen) uniq.push_back(std::move(e));
   }
   std::stable_sort(uniq.begin(), uniq.end(),
@@ -309,7 +318,8 @@ StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, in
     for (size_t q = 0; q < nodes; ++q)
       if (std::abs(x[2 * q + 1]) > zmax) zmax = std::abs(x[2 * q + 1]), qmax = q;
     const cplx scale = zmax > 0.0 ? std::abs(x[2 * qmax + 1]) / x[2 * qmax + 1] / zmax : 1.0;
-    for (size_t q = 0; q < nodes; ++q) res.mode_psi[q] = x[2 * q] * scale, res.mode_zeta[q] = x[2 * q + 1] * scale;
+    for (size_t q = 0; q < nodes; ++q)
+      res.mode_psi[q] = x[2 * q] * scale, res.mode_zeta[q] = x[2 * q + 1] * scale;
     res.mode_Gamma_R = x.back() * scale;
   }
   res.stable = !res.eigenvalues.empty() && res.eigenvalues.front().real() < 0.0;
@@ -318,8 +328,8 @@ StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, in
     res.message = "no eigenvalue converged (shift-invert Arnoldi)";
   } else {
     std::snprintf(buf, sizeof buf, "%s: leading eigenvalue %.4g %+.4gi (U/D), growth rate %.4g, St %.4g",
-                  res.stable ? "stable" : "unstable", res.eigenvalues.front().real(), res.eigenvalues.front().imag(),
-                  res.growth_rate(), res.strouhal());
+                  res.stable ? "stable" : "unstable", res.eigenvalues.front().real(),
+                  res.eigenvalues.front().imag(), res.growth_rate(), res.strouhal());
     res.message = buf;
   }
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

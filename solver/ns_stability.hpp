@@ -18,10 +18,11 @@
 // shifts sit just right of the imaginary axis, σ·D/U = 0.1 + i·{0, 0.3, 0.6, 0.95, 1.4}: a steady (Im λ = 0)
 // mode, the wake's Hopf pair (Im λ·D/U = 2π·St ≈ 0.75–1.1 for St 0.12–0.17) and the slow one-sided shedding
 // at high spin (Im λ·D/U ≈ 0.25–0.3, St ≈ 0.04, near α = 5) lie near them. Without the shift at 0.3i that
-// last pair was missed at Re 150, α 4.8 and 5.1 on the map's grid (growth +0.023 and +0.10 U/D). The eigenvalues of
-// all shifts are merged (conjugates added: the problem is real) and sorted by real part. An eigenvalue with
-// a larger real part that none of the shifts found would have to lie farther from every shift than the
-// eigenvalues they did find (reported in `reach`, U/D); the wake's modes of higher frequency are damped.
+// last pair was missed at Re 150, α 4.8 and 5.1 on the map's grid (growth +0.023 and +0.10 U/D). The
+// eigenvalues of all shifts are merged (conjugates added: the problem is real) and sorted by real part. An
+// eigenvalue with a larger real part that none of the shifts found would have to lie farther from every shift
+// than the eigenvalues they did find (reported in `reach`, U/D); the wake's modes of higher frequency are
+// damped.
 #include <complex>
 #include <optional>
 #include <string>
@@ -38,7 +39,7 @@ struct StabilityOptions {
   /// Arnoldi vectors per restart (≥ count + 10). 32 were enough on the map's grid but left the default
   /// grid at Re 100, α 2.2 with no converged eigenvalue (with tol = 1e-6 then).
   int krylov = 40;
-  int restarts = 1;       ///< explicit restarts per shift while no Ritz value has converged
+  int restarts = 1;  ///< explicit restarts per shift while no Ritz value has converged
   /// Relative residual ‖Jx − λMx‖/(‖Jx‖ + |λ|‖Mx‖) of an accepted eigenpair. On the default grid the
   /// leading pairs stall at 1e-6…4e-6 with 40 vectors (UMFPACK's iterative refinement does not lower it: a
   /// cluster of non-normal modes), already the same to five digits pass after pass; with 1e-6 the wake's
@@ -51,7 +52,7 @@ struct StabilityOptions {
 /// The leading eigenvalues and the state they belong to.
 struct StabilityResult {
   std::vector<std::complex<double>> eigenvalues;  ///< rightmost first (Im ≥ 0 first in a pair), U/D
-  bool stable = false;  ///< every eigenvalue found has Re λ < 0 (false when none was found)
+  bool stable = false;   ///< every eigenvalue found has Re λ < 0 (false when none was found)
   double seconds = 0.0;  ///< wall time, s
   int solves = 0;        ///< solves with the shifted LUs (J − σM)⁻¹, all shifts together
   std::string message;   ///< what was found (or why nothing was)

@@ -11,9 +11,9 @@
 #include "io/case_parse.hpp"
 
 using namespace magnus;
+using Catch::Contains;
 using test::error_of;
 using test::parse;
-using Catch::Contains;
 
 namespace {
 
@@ -104,6 +104,9 @@ TEST_CASE("time keys and the snapshots: every value, and every range named", "[i
   CHECK(parse(ns_scene + "[time]\nmode = \"steady\"\n").time.mode == TimeMode::steady);
   CHECK(parse(ns_scene + "[time]\nmode = \"auto\"\n").time.mode == TimeMode::automatic);
   CHECK(parse(ns_scene + "[output]\nsnapshots = 10000\n").output.snapshots == 10000);
+  CHECK(parse(ns_scene).solver.advection_order == 2);
+  CHECK(parse(ns_scene + "[solver]\nadvection_order = 4\n").solver.advection_order == 4);
+  CHECK(parse(ns_scene, {"solver.advection_order=4"}).solver.advection_order == 4);
 
   const std::vector<std::pair<std::string, std::string>> bad = {
       {"[time]\nmode = \"fast\"\n",
@@ -129,6 +132,11 @@ TEST_CASE("time keys and the snapshots: every value, and every range named", "[i
       {"[output]\nsnapshot_interval = 0\n",
        "test.toml: output.snapshot_interval: 0 is out of range: must be > 0 (D/U)"},
       {"[time]\nend = \"long\"\n", "test.toml: time.end: expected a number, got a string"},
+      {"[solver]\nadvection_order = 3\n",
+       "test.toml: solver.advection_order: 3 is out of range: must be 2 (Arakawa's Jacobian) or 4 (fourth "
+       "order in θ)"},
+      {"[solver]\nadvection_order = 4.0\n",
+       "test.toml: solver.advection_order: expected an integer, got a float"},
   };
   for (const auto& [text, message] : bad) {
     CAPTURE(text);
@@ -145,6 +153,8 @@ TEST_CASE("potential flow: the keys of [time] and the snapshots are refused by n
           "test.toml: time." + k.substr(0, k.find(' ')) +
               ": is only used with model.flow = \"navier-stokes\"");
   }
+  CHECK(error_of(scene + "[solver]\nadvection_order = 4\n") ==
+        "test.toml: solver.advection_order: is only used with model.flow = \"navier-stokes\"");
   CHECK(error_of(scene + "[output]\nsnapshots = 10\n") ==
         "test.toml: output.snapshots: is only used with model.flow = \"navier-stokes\"");
   CHECK(error_of(scene + "[output]\nsnapshot_interval = 1.0\n") ==
@@ -313,7 +323,8 @@ TEST_CASE("the resolved case: potential text unchanged, navier-stokes text reads
   CHECK(n.source_text ==
         "title = \"Spinning cylinder\"\n\n[model]\nflow = \"navier-stokes\"\n\n[cylinder]\nradius = 0.005\n"
         "spin = 2.0\n\n[flow]\nspeed = 0.01\ndensity = 1.225\npressure = 0.0\nviscosity = 1e-06\n\n[domain]\n"
-        "outer_radius = 100.0\n\n[grid]\nspacing = \"geometric\"\nn_theta = 192\nn_r = 0\n\n[time]\n"
+        "outer_radius = 100.0\n\n[grid]\nspacing = \"geometric\"\nn_theta = 192\nn_r = 0\n\n[solver]\n"
+        "advection_order = 2\n\n[time]\n"
         "mode = \"auto\"\nend = 300.0\ndt = 0.0\ncfl = 0.7\nmean_tolerance = 0.001\ncheckpoint_interval = "
         "10.0\n"
         "\n[output]\nfile = \"magnus.h5\"\nsnapshots = 0\nsnapshot_interval = 0.25\n");
@@ -342,15 +353,15 @@ TEST_CASE("the resolved case: potential text unchanged, navier-stokes text reads
   CHECK(d.output.snapshot_interval == 0.125);
   CHECK(d.scene.spin == r.scene.spin);
   // No key of potential flow's circulation, far field or solver in the navier-stokes text.
-  for (const char* absent : {"[circulation]", "far_field", "[solver]", "\ntolerance ="})
+  for (const char* absent : {"[circulation]", "far_field", "method =", "stencil =", "\ntolerance ="})
     CHECK_THAT(n.source_text, !Contains(absent));
 }
 
 TEST_CASE("the navier-stokes keys are valid keys, with suggestions for near spellings", "[io][case]") {
   const auto& keys = case_keys();
-  for (const char* k :
-       {"model.flow", "flow.viscosity", "flow.reynolds", "time.mode", "time.end", "time.dt", "time.cfl",
-        "time.mean_tolerance", "time.checkpoint_interval", "output.snapshots", "output.snapshot_interval"})
+  for (const char* k : {"model.flow", "flow.viscosity", "flow.reynolds", "time.mode", "time.end", "time.dt",
+                        "time.cfl", "time.mean_tolerance", "time.checkpoint_interval", "output.snapshots",
+                        "output.snapshot_interval", "solver.advection_order"})
     CHECK(std::find(keys.begin(), keys.end(), std::string(k)) != keys.end());
   CHECK(nearest_key("flow.viscosty") == "flow.viscosity");
   CHECK(nearest_key("flow.reynolds_number") == "");
@@ -361,6 +372,7 @@ TEST_CASE("the navier-stokes keys are valid keys, with suggestions for near spel
   CHECK(nearest_key("flow.model") == "model.flow");
   CHECK(nearest_key("output.snapshot") == "output.snapshots");
   CHECK(nearest_key("time.cfl_number") == "");
+  CHECK(nearest_key("solver.advection_ordr") == "solver.advection_order");
   CHECK(nearest_key("time.checkpoint_intervall") == "time.checkpoint_interval");
   CHECK(error_of(ns_scene + "[time]\nends = 20\n") ==
         "test.toml: unknown key time.ends (did you mean time.end?)");

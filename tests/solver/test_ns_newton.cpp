@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "postproc/viscous_forces.hpp"
-#include "solver/ns_newton.hpp"
 #include "solver/ns_lu.hpp"
+#include "solver/ns_newton.hpp"
 #include "support.hpp"
 
 using namespace magnus;
@@ -79,9 +79,10 @@ std::string residual_list(const std::vector<double>& r) {
 }  // namespace
 
 TEST_CASE("[ns][newton] the analytic Jacobian is the derivative of the residual", "[ns][newton]") {
-  for (const bool stokes : {false, true}) {
+  for (const auto& [stokes, order] : {std::pair{false, 2}, std::pair{true, 2}, std::pair{false, 4}}) {
     NsParams p = newton_params(30.0, 0.7, 16, 6.0);
     p.stokes = stokes;
+    p.advection_order = order;
     SteadyJacobian jac(p);
     const PolarGrid& g = jac.grid();
     NsState s = potential_guess(p, g);
@@ -101,7 +102,8 @@ TEST_CASE("[ns][newton] the analytic Jacobian is the derivative of the residual"
     double err = 0.0;
     for (size_t q = 0; q < x.size(); ++q)
       err = std::max(err, std::fabs((Fp[q] - Fm[q]) / (2.0 * eps) - Jv[q]));
-    INFO("stokes " << stokes << ": |J v − FD| = " << err << ", |J v| = " << max_abs(Jv));
+    INFO("stokes " << stokes << ", advection order " << order << ": |J v − FD| = " << err
+                   << ", |J v| = " << max_abs(Jv));
     CHECK(err < 1e-7 * max_abs(Jv));
     // The factors solve the system they were made from (and its transpose).
     const std::vector<double> y = jac.solve(Jv);
@@ -112,8 +114,9 @@ TEST_CASE("[ns][newton] the analytic Jacobian is the derivative of the residual"
 namespace {
 
 /// Newton from the potential flow, then the time stepper from rest until it is steady: the same state.
-void check_newton_is_the_steppers_steady_state(double Re, double alpha, int n_theta) {
-  const NsParams p = newton_params(Re, alpha, n_theta, 20.0);
+void check_newton_is_the_steppers_steady_state(double Re, double alpha, int n_theta, int order = 2) {
+  NsParams p = newton_params(Re, alpha, n_theta, 20.0);
+  p.advection_order = order;
   const PolarGrid g = ns_grid(p);
   NewtonOptions o;
   o.tol = 1e-11;
@@ -122,8 +125,8 @@ void check_newton_is_the_steppers_steady_state(double Re, double alpha, int n_th
   const auto t0 = std::chrono::steady_clock::now();
   const NewtonResult nr = solve_steady(p, potential_guess(p, g), o);
   const double t_newton = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  INFO("Re " << Re << ", alpha " << alpha << ": " << nr.message << "; residuals"
-             << residual_list(nr.residuals));
+  INFO("Re " << Re << ", alpha " << alpha << ", advection order " << order << ": " << nr.message
+             << "; residuals" << residual_list(nr.residuals));
   REQUIRE(nr.converged);
   REQUIRE(log.size() == nr.residuals.size());
   CHECK(log.back().first == nr.iterations);
@@ -186,6 +189,11 @@ TEST_CASE("[ns][newton] Newton's steady state is the time stepper's: Re 10, alph
   check_newton_is_the_steppers_steady_state(10.0, 0.5, 32);
 }
 
+TEST_CASE("[ns][newton] Newton's steady state is the time stepper's: advection of order 4, Re 10, alpha 0.5",
+          "[ns][newton]") {
+  check_newton_is_the_steppers_steady_state(10.0, 0.5, 32, 4);
+}
+
 TEST_CASE("[ns][newton] Re 40, alpha 0 on the default grid: C_D and the time to converge",
           "[ns][newton][validation]") {
   const NsParams p = newton_params(40.0, 0.0, 192, 100.0);
@@ -216,35 +224,39 @@ TEST_CASE("[ns][newton] the mirror half: the whole grid's steady state at half t
           "[ns][newton]") {
   // Without spin the steady state is odd in θ; the half system (0 < θ_j < π) is the whole Newton system
   // restricted to odd corrections, so both iterations take the same steps to round-off.
-  const NsParams p = newton_params(30.0, 0.0, 48, 30.0);
-  const PolarGrid g = ns_grid(p);
-  NewtonResult res[2];
-  long lu[2] = {0, 0};
-  for (const bool mirror : {false, true}) {
-    SteadyJacobian jac(p, mirror);
-    REQUIRE(jac.mirror() == mirror);
-    res[mirror] = solve_steady(jac, potential_guess(p, g));
-    INFO(res[mirror].message);
-    REQUIRE(res[mirror].converged);
-    lu[mirror] = jac.lu_nonzeros();
+  for (const int order : {2, 4}) {
+    NsParams p = newton_params(30.0, 0.0, 48, 30.0);
+    p.advection_order = order;
+    INFO("advection order " << order);
+    const PolarGrid g = ns_grid(p);
+    NewtonResult res[2];
+    long lu[2] = {0, 0};
+    for (const bool mirror : {false, true}) {
+      SteadyJacobian jac(p, mirror);
+      REQUIRE(jac.mirror() == mirror);
+      res[mirror] = solve_steady(jac, potential_guess(p, g));
+      INFO(res[mirror].message);
+      REQUIRE(res[mirror].converged);
+      lu[mirror] = jac.lu_nonzeros();
+    }
+    const NsState &whole = res[0].state, &half = res[1].state;
+    CHECK(res[1].factorisations == res[0].factorisations);
+    CHECK(rel_diff(half.psi, whole.psi) < 1e-10);
+    CHECK(rel_diff(half.zeta, whole.zeta) < 1e-10);
+    CHECK(half.Gamma_R == 0.0);
+    // The half's state is odd in θ to the last bit: ψ and ζ at θ_{n−j} are those at θ_j negated.
+    const int n = g.n_theta;
+    double asym = 0.0;
+    for (int i = 0; i < g.n_r; ++i)
+      for (int j = 1; j < n; ++j)
+        asym = std::max(asym, std::fabs(half.zeta[size_t(i) * n + j] + half.zeta[size_t(i) * n + (n - j)]));
+    CHECK(asym == 0.0);
+    const double C_D[2] = {*viscous_forces(g, p, 1.0, whole).C_D, *viscous_forces(g, p, 1.0, half).C_D};
+    CHECK(C_D[1] == Approx(C_D[0]).epsilon(1e-10));
+    // Half the unknowns: the LU has less than half the whole one's nonzeros.
+    INFO("LU nonzeros: whole " << lu[0] << ", half " << lu[1]);
+    CHECK(lu[1] < lu[0] / 2);
   }
-  const NsState &whole = res[0].state, &half = res[1].state;
-  CHECK(res[1].factorisations == res[0].factorisations);
-  CHECK(rel_diff(half.psi, whole.psi) < 1e-10);
-  CHECK(rel_diff(half.zeta, whole.zeta) < 1e-10);
-  CHECK(half.Gamma_R == 0.0);
-  // The half's state is odd in θ to the last bit: ψ and ζ at θ_{n−j} are those at θ_j negated.
-  const int n = g.n_theta;
-  double asym = 0.0;
-  for (int i = 0; i < g.n_r; ++i)
-    for (int j = 1; j < n; ++j)
-      asym = std::max(asym, std::fabs(half.zeta[size_t(i) * n + j] + half.zeta[size_t(i) * n + (n - j)]));
-  CHECK(asym == 0.0);
-  const double C_D[2] = {*viscous_forces(g, p, 1.0, whole).C_D, *viscous_forces(g, p, 1.0, half).C_D};
-  CHECK(C_D[1] == Approx(C_D[0]).epsilon(1e-10));
-  // Half the unknowns: the LU has less than half the whole one's nonzeros.
-  INFO("LU nonzeros: whole " << lu[0] << ", half " << lu[1]);
-  CHECK(lu[1] < lu[0] / 2);
 }
 
 TEST_CASE("[ns][newton] the mirror half is refused with spin or without a stream", "[ns][newton]") {
@@ -256,19 +268,21 @@ TEST_CASE("[ns][newton] the mirror half is refused with spin or without a stream
   CHECK_NOTHROW(SteadyJacobian(p, true));
 }
 
-TEST_CASE("[ns][newton] the grid's nested-dissection order is a permutation of the unknowns", "[ns][newton]") {
+TEST_CASE("[ns][newton] the grid's nested-dissection order is a permutation of the unknowns",
+          "[ns][newton]") {
   // UMFPACK falls back to its own ordering when the given one is not a permutation: a broken order would
   // only show as a slower factorisation, so it is checked here.
-  for (const bool mirror : {false, true})
-    for (const auto& [nr, n] : {std::pair{5, 8}, std::pair{79, 64}, std::pair{37, 170}}) {
-      const std::vector<long> q = grid_order(nr, n, mirror);
-      const long size = mirror ? 2L * nr * (n / 2 - 1) : 2L * nr * n + 1;
-      INFO("n_r " << nr << ", n_theta " << n << (mirror ? ", mirror" : ", whole"));
-      REQUIRE(long(q.size()) == size);
-      std::vector<long> sorted = q, identity(q.size());
-      std::sort(sorted.begin(), sorted.end());
-      for (size_t u = 0; u < identity.size(); ++u) identity[u] = long(u);
-      CHECK(sorted == identity);  // each unknown exactly once
-      if (!mirror) CHECK(q.back() == size - 1);  // Γ_R last
-    }
+  for (const int reach : {1, 2})
+    for (const bool mirror : {false, true})
+      for (const auto& [nr, n] : {std::pair{5, 8}, std::pair{79, 64}, std::pair{37, 170}}) {
+        const std::vector<long> q = grid_order(nr, n, mirror, reach);
+        const long size = mirror ? 2L * nr * (n / 2 - 1) : 2L * nr * n + 1;
+        INFO("n_r " << nr << ", n_theta " << n << (mirror ? ", mirror" : ", whole") << ", reach " << reach);
+        REQUIRE(long(q.size()) == size);
+        std::vector<long> sorted = q, identity(q.size());
+        std::sort(sorted.begin(), sorted.end());
+        for (size_t u = 0; u < identity.size(); ++u) identity[u] = long(u);
+        CHECK(sorted == identity);                 // each unknown exactly once
+        if (!mirror) CHECK(q.back() == size - 1);  // Γ_R last
+      }
 }
