@@ -40,9 +40,12 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
                            num(sc.density)));
   line("", fmt::format("ν = {} m²/s, Re = U·2a/ν = {}", num(sc.viscosity),
                        v.reynolds ? num(*v.reynolds, "{:.6g}") : "undefined (U = 0)"));
-  line("model", "navier-stokes: 2D incompressible laminar, vorticity–streamfunction, no slip held exactly");
-  line("grid", fmt::format("n_θ × n_r = {} × {} ({} nodes), geometric spacing, R/a = {:.6g}", g.n_theta, g.n_r,
-                           g.nodes(), g.outer_radius() / g.a));
+  line("model",
+       fmt::format("navier-stokes: 2D incompressible laminar, vorticity–streamfunction, no slip held "
+                   "exactly; advection order {} in θ (solver.advection_order)",
+                   c.solver.advection_order));
+  line("grid", fmt::format("n_θ × n_r = {} × {} ({} nodes), geometric spacing, R/a = {:.6g}", g.n_theta,
+                           g.n_r, g.nodes(), g.outer_radius() / g.a));
   // The boundary layer's thickness scales as D/√Re: the cells across it say how well the wall is resolved.
   if (v.reynolds && *v.reynolds > 0.0) {
     // Spin thins the layer where the wall moves against the stream: D/√(Re(1 + α²)) is the measure.
@@ -61,9 +64,9 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
     line("run", fmt::format("steady state by Newton's method, {} ({:.0f} ms)", wall(r.timing.total_s),
                             1e3 * r.timing.total_s));
   else
-    line("run", fmt::format("t = {} s = {} D/U, {} steps of Δt = {} s ({} D/U), {} ({:.0f} steps/s)", num(v.t),
-                          num(v.t / unit, "{:.5g}"), v.steps, num(v.dt, "{:.4g}"), num(v.dt / unit, "{:.4g}"),
-                          wall(r.timing.total_s), steps_per_s));
+    line("run", fmt::format("t = {} s = {} D/U, {} steps of Δt = {} s ({} D/U), {} ({:.0f} steps/s)",
+                            num(v.t), num(v.t / unit, "{:.5g}"), v.steps, num(v.dt, "{:.4g}"),
+                            num(v.dt / unit, "{:.4g}"), wall(r.timing.total_s), steps_per_s));
   line("", fmt::format("stopped: {}{}", v.status, v.partial ? " — a PARTIAL result (the file says so)" : ""));
   if (!v.converged && !v.partial)
     line("", "not converged: the means below are the last period's (or the last step's); raise time.end");
@@ -73,15 +76,18 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
     s += fmt::format("{:<15}{:<40}{}\n", label, a, b);
   };
   if (moving) {
-    const std::string amp = v.cl_amplitude ? fmt::format(" ± {} (amplitude)", fmt_opt(v.cl_amplitude, "{:.4f}")) : "";
+    const std::string amp =
+        v.cl_amplitude ? fmt::format(" ± {} (amplitude)", fmt_opt(v.cl_amplitude, "{:.4f}")) : "";
     row("C_L", fmt::format("{} (mean){}", fmt_opt(v.cl_mean, "{:.5f}"), amp),
         fmt::format("{} (−2πα)   seed −4α = {}", fmt_opt(v.cl_ideal, "{:.5f}"),
                     fmt_opt(r.forces.cl_seed_estimate, "{:.5f}")));
     row("C_D", fmt::format("{} (mean)", fmt_opt(v.cd_mean, "{:.5f}")), "0 (d'Alembert)");
-    row("", fmt::format("last step: pressure {} + friction {}", fmt_opt(v.last.C_D_pressure, "{:.4f}"),
-                        fmt_opt(v.last.C_D_friction, "{:.4f}")),
+    row("",
+        fmt::format("last step: pressure {} + friction {}", fmt_opt(v.last.C_D_pressure, "{:.4f}"),
+                    fmt_opt(v.last.C_D_friction, "{:.4f}")),
         "");
-    row("St = fD/U", v.strouhal ? fmt_opt(v.strouhal, "{:.5f}") : (v.steady ? "steady (no shedding)" : "no period found"),
+    row("St = fD/U",
+        v.strouhal ? fmt_opt(v.strouhal, "{:.5f}") : (v.steady ? "steady (no shedding)" : "no period found"),
         "— (no wake)");
     row("lift F_y", fmt::format("{} N/m (mean)", num(v.lift_mean, "{:.6g}")),
         fmt::format("{} N/m (−ρUΓ)", num(r.forces.lift_kutta_joukowski, "{:.6g}")));
@@ -103,24 +109,27 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
                              num(v.spin_power_mean, "{:.6g}")));
   if (!moving) {  // still fluid: the potential vortex u_θ = a²ω/r is an exact viscous solution too
     const double exact = -4.0 * M_PI * sc.density * sc.viscosity * sc.radius * sc.radius * sc.spin;
-    line("", fmt::format("steady potential vortex: −4πμa²ω = {} N·m/m (this run: {:+.2f}%)", num(exact, "{:.6g}"),
-                         exact != 0.0 ? 100.0 * (v.torque_mean / exact - 1.0) : 0.0));
+    line("", fmt::format("steady potential vortex: −4πμa²ω = {} N·m/m (this run: {:+.2f}%)",
+                         num(exact, "{:.6g}"), exact != 0.0 ? 100.0 * (v.torque_mean / exact - 1.0) : 0.0));
   }
   s += scene_lines(r);  // direction, a rotor sail's course, the span's totals
   std::string sep;
   for (double th : v.separation) sep += (sep.empty() ? "" : ", ") + fmt::format("{:.2f}°", th * 180.0 / M_PI);
   line("separation", sep.empty() ? "none (τ_w keeps its sign)" : "τ_w = 0 at θ = " + sep + " (last step)");
-  if (v.recirculation_length) line("recirculation", fmt::format("L/D = {:.4f} (steady)", *v.recirculation_length));
+  if (v.recirculation_length)
+    line("recirculation", fmt::format("L/D = {:.4f} (steady)", *v.recirculation_length));
   s += steady_study_text(v);
   if (v.eigenvalue_real && v.eigenvalue_imag)
-    line("stability", fmt::format("steady state's leading eigenvalue λ·D/U = {:+.5f} {:+.5f}i ({}; St {:.4f})",
-                                  *v.eigenvalue_real, *v.eigenvalue_imag,
-                                  *v.eigenvalue_real < 0.0 ? "stable" : "unstable: it sheds",
-                                  std::fabs(*v.eigenvalue_imag) / (2.0 * M_PI)));
+    line("stability",
+         fmt::format("steady state's leading eigenvalue λ·D/U = {:+.5f} {:+.5f}i ({}; St {:.4f})",
+                     *v.eigenvalue_real, *v.eigenvalue_imag,
+                     *v.eigenvalue_real < 0.0 ? "stable" : "unstable: it sheds",
+                     std::fabs(*v.eigenvalue_imag) / (2.0 * M_PI)));
   if (v.reynolds && *v.reynolds > kReynolds3D)
-    line("note", fmt::format("Re = {:.4g} > {:.0f}: real flow past a cylinder is three-dimensional there; this is "
-                             "the 2D laminar answer, not the real one",
-                             *v.reynolds, kReynolds3D));
+    line("note",
+         fmt::format("Re = {:.4g} > {:.0f}: real flow past a cylinder is three-dimensional there; this is "
+                     "the 2D laminar answer, not the real one",
+                     *v.reynolds, kReynolds3D));
   if (!output_path.empty())
     line("output", fmt::format("{} (+ {} for ParaView)", output_path, xdmf_path(output_path)));
   return s;

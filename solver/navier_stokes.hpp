@@ -149,8 +149,8 @@ inline void advance(const NsOperator& op, const NsState& old, NsState& next) {
 /// κ = advection_theta_factor(advection_order): 1 for order 2, 1.3722 for order 4.
 double cfl_number(const PolarGrid& g, const std::vector<double>& psi, double dt, int advection_order = 2);
 
-/// Δt (s) that gives the CFL number `cfl` for the state, using at least the speed |U| + |aω| + U (the
-/// impulsive start's 2U at the shoulders plus the wall speed).
+/// Δt (s) that gives the CFL number `cfl` (of p.advection_order) for the state, using at least the speed
+/// |U| + |aω| + U (the impulsive start's 2U at the shoulders plus the wall speed) across θ.
 double cfl_time_step(const NsParams& p, const PolarGrid& g, const std::vector<double>& psi, double cfl);
 
 /// Impulsive start ("from rest" in the body frame): the irrotational flow without circulation,

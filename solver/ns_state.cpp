@@ -57,7 +57,8 @@ double cfl_number(const PolarGrid& g, const std::vector<double>& psi, double dt,
 }
 
 double cfl_time_step(const NsParams& p, const PolarGrid& g, const std::vector<double>& psi, double cfl) {
-  const double floor_rate = (2.0 * p.U + std::fabs(p.a * p.omega)) / (p.a * g.d_theta);
+  const double floor_rate =
+      advection_theta_factor(p.advection_order) * (2.0 * p.U + std::fabs(p.a * p.omega)) / (p.a * g.d_theta);
   const double rate = std::max(cfl_number(g, psi, 1.0, p.advection_order), floor_rate);
   if (!(rate > 0.0)) return 0.1 * p.a * p.a / p.nu;  // nothing moves: the diffusion time of a cell
   return cfl / rate;
