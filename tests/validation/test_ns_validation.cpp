@@ -22,14 +22,16 @@ struct Run {
 
 /// One run (cached: the convergence study reuses the finest grid of the Re 100 check).
 /// n_r = 0: the NsParams default (Δξ = Δθ/radial_refinement).
-const Run& run(double Re, double alpha, int n_theta, double R_over_a, double t_end, int n_r = 0) {
-  static std::map<std::tuple<double, double, int, double, double, int>, Run> cache;
-  const auto key = std::make_tuple(Re, alpha, n_theta, R_over_a, t_end, n_r);
+/// order: the advection's order in θ (2 or 4).
+const Run& run(double Re, double alpha, int n_theta, double R_over_a, double t_end, int n_r = 0,
+               int order = 2) {
+  static std::map<std::tuple<double, double, int, double, double, int, int>, Run> cache;
+  const auto key = std::make_tuple(Re, alpha, n_theta, R_over_a, t_end, n_r, order);
   auto it = cache.find(key);
   if (it != cache.end()) return it->second;
   NsParams p;
   p.a = 0.5, p.U = 1.0, p.nu = 1.0 / Re, p.omega = alpha * p.U / p.a;
-  p.n_theta = n_theta, p.outer_over_a = R_over_a, p.n_r = n_r;
+  p.n_theta = n_theta, p.outer_over_a = R_over_a, p.n_r = n_r, p.advection_order = order;
   UnsteadyOptions o;
   o.t_end = t_end;
   Run r;
@@ -40,11 +42,11 @@ const Run& run(double Re, double alpha, int n_theta, double R_over_a, double t_e
   r.res = run_unsteady(p, o, std::move(start));
   if (r.res.steady) r.L_r = recirculation_length(r.grid, r.res.state);
   std::printf(
-      "Re %g alpha %g, %d x %d, R/a %.1f: %s at t = %.1f; C_L %.4f (amp %.4f) C_D %.4f St %.4f; "
-      "L_r %.3f D; %ld steps of %.4g s, wall %.1f s\n",
-      Re, alpha, r.grid.n_r, n_theta, r.grid.outer_radius() / p.a, r.res.message.c_str(), r.res.state.t,
-      r.res.C_L_mean, r.res.C_L_amplitude, r.res.C_D_mean, r.res.St, r.L_r, r.res.steps, r.res.dt,
-      r.res.wall_seconds);
+      "Re %g alpha %g, %d x %d, R/a %.1f, advection order %d: %s at t = %.1f; C_L %.4f (amp %.4f) C_D %.4f "
+      "St %.5f; L_r %.3f D; %ld steps of %.4g s, wall %.1f s\n",
+      Re, alpha, r.grid.n_r, n_theta, order, r.grid.outer_radius() / p.a, r.res.message.c_str(),
+      r.res.state.t, r.res.C_L_mean, r.res.C_L_amplitude, r.res.C_D_mean, r.res.St, r.L_r, r.res.steps,
+      r.res.dt, r.res.wall_seconds);
   std::fflush(stdout);
   return cache.emplace(key, std::move(r)).first->second;
 }
@@ -100,6 +102,28 @@ TEST_CASE("[validation] Re 100, alpha 1: mean lift, drag, Strouhal (Stojkovic, B
   CHECK(std::fabs(r.res.C_L_mean) == Approx(2.4881).epsilon(0.01));
   CHECK(r.res.C_D_mean == Approx(1.1040).epsilon(0.01));
   CHECK(r.res.St == Approx(0.1655).epsilon(0.01));
+}
+
+TEST_CASE("[validation] Re 100, alpha 1, advection order 4: St converged in theta on the default grid",
+          "[validation]") {
+  // Order 2's St rises ~1e-4 per refinement in θ (0.16419 at n_θ 192 … 0.16450 at 512); order 4 removes
+  // that error. Measured: order 4, 236 x 192: St 0.16445, C_L −2.4913, C_D 1.1028; 236 x 256: 0.16444.
+  const Run& r2 = run(100, 1.0, kN, kR, 250);
+  const Run& r4 = run(100, 1.0, kN, kR, 250, 0, 4);
+  const Run& r4t = run(100, 1.0, 256, kR, 250, r4.grid.n_r, 4);  // θ refined, the same rings
+  REQUIRE((r2.res.periodic && r4.res.periodic && r4t.res.periodic));
+  compare("St order 2", r2.res.St, 0.1658, "SBD 2002");
+  compare("St order 4", r4.res.St, 0.1658, "SBD 2002");
+  compare("St o4 n_t 256", r4t.res.St, 0.1658, "SBD 2002");
+  compare("|C_L| order 4", std::fabs(r4.res.C_L_mean), 2.504, "SBD 2002");
+  compare("C_D order 4", r4.res.C_D_mean, 1.108, "SBD 2002");
+  CHECK(r4.res.St - r2.res.St > 1.5e-4);              // the θ-advection error of order 2 (2.6e-4)
+  CHECK(std::fabs(r4t.res.St - r4.res.St) < 5e-5);    // converged in θ (measured 1e-5)
+  CHECK(r4.res.St == Approx(0.1658).epsilon(0.009));  // −0.82%
+  CHECK(std::fabs(r4.res.C_L_mean) == Approx(2.504).epsilon(0.006));
+  CHECK(r4.res.C_D_mean == Approx(1.108).epsilon(0.006));
+  CHECK(std::fabs(r4.res.C_L_mean - r2.res.C_L_mean) < 5e-4 * std::fabs(r2.res.C_L_mean));  // forces: < 0.05%
+  CHECK(std::fabs(r4.res.C_D_mean - r2.res.C_D_mean) < 5e-4 * r2.res.C_D_mean);
 }
 
 TEST_CASE("[validation] Re 100, alpha 1: grid convergence on three grids, observed order, Richardson",
@@ -189,7 +213,9 @@ TEST_CASE("[validation] Re 100, alpha 0 to 2: lift, drag, Strouhal (Stojkovic, B
     const Run& c = run(100, ref.alpha, kN / 2, kR, 300);  // Δξ and Δθ twice the default's
     const Run& f = run(100, ref.alpha, kN, kR, 300);
     REQUIRE((c.res.ok && f.res.ok));
-    auto richardson = [](double coarse, double fine) { return fine + (fine - coarse) / 3.0; };  // p = 2, ratio 2
+    auto richardson = [](double coarse, double fine) {
+      return fine + (fine - coarse) / 3.0;
+    };  // p = 2, ratio 2
     const double C_L = std::fabs(richardson(c.res.C_L_mean, f.res.C_L_mean));
     const double C_D = richardson(c.res.C_D_mean, f.res.C_D_mean);
     std::printf("  alpha %.1f (n_theta %d; Richardson %d/%d):\n", ref.alpha, kN, kN / 2, kN);
