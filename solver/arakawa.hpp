@@ -33,12 +33,14 @@ inline double advection_weight(int order, int s) {
 /// θ-strides the advection of this order uses (1 or 2).
 inline int advection_strides(int order) { return order == 4 ? 2 : 1; }
 
-/// 12·Δθ·Δξ·J of advection order 2 (Arakawa) or 4 (fourth order in θ), same arguments as arakawa_12.
+/// 12·Δθ·Δξ·J of advection order 2 (Arakawa) or 4 (fourth order in θ): Σ_s advection_weight(order, s)·A_s
+/// over the strides s = 1 … advection_strides(order); same arguments as arakawa_12.
 inline double advection_12(int order, const double* pm, const double* p0, const double* pp, const double* zm,
                            const double* z0, const double* zp, int j, int n) {
-  const double a1 = arakawa_12(pm, p0, pp, zm, z0, zp, j, n);
-  if (order != 4) return a1;
-  return 4.0 / 3.0 * a1 - 1.0 / 6.0 * arakawa_12(pm, p0, pp, zm, z0, zp, j, n, 2);
+  double J = advection_weight(order, 1) * arakawa_12(pm, p0, pp, zm, z0, zp, j, n);
+  for (int s = 2; s <= advection_strides(order); ++s)
+    J += advection_weight(order, s) * arakawa_12(pm, p0, pp, zm, z0, zp, j, n, s);
+  return J;
 }
 
 /// The largest modified wavenumber of the θ-difference of advection order 2 or 4, times Δθ: 1, and
