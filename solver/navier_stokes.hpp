@@ -54,7 +54,7 @@ struct NsParams {
   bool stokes = false;  ///< drop the advection (unsteady Stokes flow, the creeping limit)
   /// Order of the advection term in θ: 2 (Arakawa's Jacobian) or 4 (its fourth-order-in-θ combination,
   /// solver/arakawa.hpp); ξ is second order either way. At Re 100, α = 1 order 4 takes St from −0.97% to
-  /// −0.83% of Stojković et al. on the default grid, the value order 2 reaches at n_θ = 384 or more.
+  /// −0.82% of Stojković et al. on the default grid, the value order 2 reaches only at n_θ = 512.
   int advection_order = 2;
   NsOuterVorticity outer_vorticity = NsOuterVorticity::inflow_outflow;
 
