@@ -2,10 +2,12 @@
 // Shared helpers for the tests: a case on a chosen grid, solved and post-processed.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
 #include "postproc/pipeline.hpp"
+#include "solver/navier_stokes.hpp"
 
 namespace magnus::test {
 
@@ -71,5 +73,19 @@ int run_script(const std::string& interpreter, const std::string& dir, const std
 
 /// Number of lines (newlines) in s.
 size_t lines(const std::string& s);
+
+/// The state at time t (s) with ψ = psi(r, θ) (m²/s) and ζ = zeta(r, θ) (1/s) at every node of g.
+inline NsState sample_state(const PolarGrid& g, double t, const std::function<double(double, double)>& psi,
+                            const std::function<double(double, double)>& zeta) {
+  NsState s;
+  s.psi.resize(g.nodes()), s.zeta.resize(g.nodes());
+  for (int i = 0; i < g.n_r; ++i)
+    for (int j = 0; j < g.n_theta; ++j) {
+      s.psi[size_t(i) * g.n_theta + j] = psi(g.r[i], g.theta[j]);
+      s.zeta[size_t(i) * g.n_theta + j] = zeta(g.r[i], g.theta[j]);
+    }
+  s.t = t;
+  return s;
+}
 
 }  // namespace magnus::test

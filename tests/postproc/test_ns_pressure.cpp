@@ -11,6 +11,7 @@
 
 using namespace magnus;
 using magnus::test::observed_order;
+using magnus::test::sample_state;
 
 namespace {
 
@@ -21,19 +22,6 @@ NsParams exact_params(int n_theta, double U, double omega) {
   p.a = 0.5, p.U = U, p.omega = omega, p.nu = 0.01;
   p.outer_over_a = std::exp(M_PI / 2), p.n_theta = n_theta, p.n_r = n_theta / 4 + 1;
   return p;
-}
-
-/// A state with ψ(r, θ) and ζ(ξ, θ) sampled on the grid (m²/s, 1/s).
-NsState sampled_state(const PolarGrid& g, const std::function<double(double, double)>& psi,
-                      const std::function<double(double, double)>& zeta) {
-  NsState s;
-  s.psi.resize(g.nodes()), s.zeta.resize(g.nodes());
-  for (int i = 0; i < g.n_r; ++i)
-    for (int j = 0; j < g.n_theta; ++j) {
-      s.psi[size_t(i) * g.n_theta + j] = psi(g.r[i], g.theta[j]);
-      s.zeta[size_t(i) * g.n_theta + j] = zeta(g.xi[i], g.theta[j]);
-    }
-  return s;
 }
 
 /// max_ij |p_ij − exact(r_i, θ_j, ξ_i)|, Pa.
@@ -65,8 +53,8 @@ TEST_CASE("[ns] pressure field: pure rotation, potential vortex p = p_inf - rho 
     const NsParams p = exact_params(n, 0.0, 3.0);
     const PolarGrid g = ns_grid(p);
     const double a = p.a, w = p.omega, scale = kRho * a * a * w * w;
-    NsState s = sampled_state(
-        g, [&](double r, double) { return -a * a * w * std::log(r / a); },
+    NsState s = sample_state(
+        g, 0.0, [&](double r, double) { return -a * a * w * std::log(r / a); },
         [](double, double) { return 0.0; });
     s.Gamma_R = 2.0 * M_PI * a * a * w;
     const std::vector<double> pr = ns_pressure_field(g, p, kRho, kPinf, s);
@@ -88,8 +76,8 @@ TEST_CASE("[ns] pressure field: potential flow with circulation is Bernoulli's p
     const NsParams p = exact_params(n, 2.0, 3.0);
     const PolarGrid g = ns_grid(p);
     const double a = p.a, U = p.U, Gamma = 2.0 * M_PI * a * a * p.omega;
-    const NsState s = sampled_state(
-        g,
+    const NsState s = sample_state(
+        g, 0.0,
         [&](double r, double th) {
           return U * (r - a * a / r) * std::sin(th) - Gamma / (2.0 * M_PI) * std::log(r / a);
         },
@@ -124,14 +112,13 @@ TEST_CASE("[ns] pressure field: Kovasznay's exact Navier-Stokes flow, order 2", 
     const PolarGrid g = ns_grid(p);
     const double R = g.outer_radius();
     const auto ex = [&](double r, double th) { return std::exp(lam * r * std::cos(th) / L); };
-    const NsState s = sampled_state(
-        g,
+    const NsState s = sample_state(
+        g, 0.0,
         [&](double r, double th) {
           return U * L *
                  (r * std::sin(th) / L - ex(r, th) * std::sin(2 * M_PI * r * std::sin(th) / L) / (2 * M_PI));
         },
-        [&](double xi, double th) {
-          const double r = p.a * std::exp(xi);
+        [&](double r, double th) {
           return U / L * (lam * lam - 4 * M_PI * M_PI) / (2 * M_PI) * ex(r, th) *
                  std::sin(2 * M_PI * r * std::sin(th) / L);
         });

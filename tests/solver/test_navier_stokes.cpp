@@ -14,6 +14,7 @@
 using namespace magnus;
 using magnus::test::max_abs;
 using magnus::test::observed_order;
+using magnus::test::sample_state;
 
 namespace {
 
@@ -36,20 +37,6 @@ double first_root(const std::function<double(double)>& f, double lo, double hi, 
     x0 = x1, f0 = f1;
   }
   throw std::runtime_error("no root");
-}
-
-/// The state at time t (s) with ψ = psi(r, θ) (m²/s) and ζ = zeta(r, θ) (1/s) at every node of g.
-NsState sample_state(const PolarGrid& g, double t, const std::function<double(double, double)>& psi,
-                     const std::function<double(double, double)>& zeta) {
-  NsState s;
-  s.psi.resize(g.nodes()), s.zeta.resize(g.nodes());
-  for (int i = 0; i < g.n_r; ++i)
-    for (int j = 0; j < g.n_theta; ++j) {
-      s.psi[size_t(i) * g.n_theta + j] = psi(g.r[i], g.theta[j]);
-      s.zeta[size_t(i) * g.n_theta + j] = zeta(g.r[i], g.theta[j]);
-    }
-  s.t = t;
-  return s;
 }
 
 /// Steps of op.dt() from s to t_end (t_end a whole number of steps).
