@@ -73,7 +73,8 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
   } else {
     std::vector<std::string> ns_only;
     for (const auto& k : case_key_table().at("time")) ns_only.push_back("time." + k);
-    ns_only.insert(ns_only.end(), {"output.snapshots", "output.snapshot_interval", "solver.advection_order"});
+    ns_only.insert(ns_only.end(), {"output.snapshots", "output.snapshot_interval", "solver.advection_order",
+                                   "solver.advection_order_xi"});
     for (const auto& k : ns_only)
       if (r.has(k.substr(0, k.find('.')), k.substr(k.find('.') + 1)))
         r.fail(k, "is only used with model.flow = \"navier-stokes\"");
@@ -196,6 +197,9 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
     c.solver.advection_order = int(r.integer(
         "solver", "advection_order", c.solver.advection_order, [](long v) { return v == 2 || v == 4; },
         "2 (Arakawa's Jacobian) or 4 (fourth order in θ)"));
+    c.solver.advection_order_xi = int(r.integer(
+        "solver", "advection_order_xi", c.solver.advection_order_xi, [](long v) { return v == 2 || v == 4; },
+        "2 (Arakawa's Jacobian) or 4 (fourth order in ξ)"));
     const std::string mode = r.word("time", "mode", "auto", {"auto", "steady", "unsteady"});
     c.time.mode = mode == "auto"     ? TimeMode::automatic
                   : mode == "steady" ? TimeMode::steady
@@ -327,7 +331,8 @@ std::string to_toml(const Case& c) {
     t += fmt::format("\n[solver]\nmethod = {}\n", str(to_string(c.solver.method)));
     if (c.grid.tolerance == 0.0) t += fmt::format("stencil = {}\n", str(to_string(c.solver.stencil)));
   } else {
-    t += fmt::format("\n[solver]\nadvection_order = {}\n", c.solver.advection_order);
+    t += fmt::format("\n[solver]\nadvection_order = {}\nadvection_order_xi = {}\n", c.solver.advection_order,
+                     c.solver.advection_order_xi);
     t += fmt::format(
         "\n[time]\nmode = {}\nend = {}\ndt = {}\ncfl = {}\nmean_tolerance = {}\ncheckpoint_interval = {}\n",
         str(to_string(c.time.mode)), num(c.time.end), num(c.time.dt), num(c.time.cfl),

@@ -42,8 +42,8 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
                        v.reynolds ? num(*v.reynolds, "{:.6g}") : "undefined (U = 0)"));
   line("model",
        fmt::format("navier-stokes: 2D incompressible laminar, vorticity–streamfunction, no slip held "
-                   "exactly; advection order {} in θ (solver.advection_order)",
-                   c.solver.advection_order));
+                   "exactly; advection order {} in θ, {} in ξ (solver.advection_order, advection_order_xi)",
+                   c.solver.advection_order, c.solver.advection_order_xi));
   line("grid", fmt::format("n_θ × n_r = {} × {} ({} nodes), geometric spacing, R/a = {:.6g}", g.n_theta,
                            g.n_r, g.nodes(), g.outer_radius() / g.a));
   // The boundary layer's thickness scales as D/√Re: the cells across it say how well the wall is resolved.

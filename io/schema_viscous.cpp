@@ -20,6 +20,11 @@ std::vector<AttrSpec> viscous_attributes() {
                P, "advection_order", "order of the advection term in θ: 2 (Arakawa's Jacobian) or 4",
                [](const FlowResult& r) { return opt(double(r.c.solver.advection_order)); },
                [](FlowResult& r, double v) { r.c.solver.advection_order = int(v); })),
+      only(Models::viscous,
+           integer(
+               P, "advection_order_xi", "order of the advection term in ξ: 2 (Arakawa's Jacobian) or 4",
+               [](const FlowResult& r) { return opt(double(r.c.solver.advection_order_xi)); },
+               [](FlowResult& r, double v) { r.c.solver.advection_order_xi = int(v); })),
       row(vnum(F, "cl_mean", "1", "mean lift coefficient (over the last shedding period, or the last step)",
                &ViscousPart::cl_mean),
           "C_L mean (viscous)", "cl_mean", "{:.6g}"),

@@ -217,7 +217,7 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
   try {
     while (go_on && cur.t < o.t_end - 1e-12 * o.t_end) {
       if (res.steps % 10 == 0) {
-        const double cfl = cfl_number(g, cur.psi, dt, p.advection_order);
+        const double cfl = cfl_number(g, cur.psi, dt, p.advection_order, p.advection_order_xi);
         bool rebuild = cfl > 0.95 * kNsCflLimit;
         double dt_new = cfl_time_step(p, g, cur.psi, p.cfl);
         if (p.dt <= 0.0) {

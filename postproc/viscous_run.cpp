@@ -44,6 +44,7 @@ NsParams ns_params(const Case& c) {
   p.n_r = c.grid.n_r;
   p.cfl = c.time.cfl;
   p.advection_order = c.solver.advection_order;
+  p.advection_order_xi = c.solver.advection_order_xi;
   p.dt = c.time.dt > 0.0 && s.reference_speed() > 0.0 ? c.time.dt * time_unit(s) : 0.0;
   return p;
 }

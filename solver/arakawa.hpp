@@ -1,8 +1,10 @@
 #pragma once
 // Arakawa's (1966) energy- and enstrophy-conserving Jacobian J = (J++ + J+× + J×+)/3 of ∂(ψ,ζ)/∂(θ,ξ) =
 // ψ_θ ζ_ξ − ψ_ξ ζ_θ at one node, x = θ (column j, periodic), y = ξ (ring i), second order; and its
-// fourth-order-in-θ form. One definition for the time stepper and the steady (Newton) equations, so both
-// sum in the same order to the last bit.
+// fourth-order forms in θ, in ξ, or in both. One definition for the time stepper and the steady (Newton)
+// equations, so both sum in the same order to the last bit.
+
+#include <cstddef>
 
 namespace magnus {
 
@@ -21,31 +23,50 @@ inline double arakawa_12(const double* pm, const double* p0, const double* pp, c
   return j1 + j2 + j3;
 }
 
-/// Weights of the θ-strides s = 1, 2 in 12·Δθ·Δξ·J of advection order 2 or 4 (in θ; ξ stays second
-/// order): order 4 is (4/3)·A_1 − (1/6)·A_2, A_s = arakawa_12(…, s). Every term of Arakawa's three forms
-/// holds one θ-difference, so this replaces each by the fourth-order (4/3)D_1 − (1/3)D_2 (A_2's differences
-/// span twice the distance: −(1/3)/2); a sum of conserving Jacobians, it conserves what each conserves.
-inline double advection_weight(int order, int s) {
-  if (order != 4) return s == 1 ? 1.0 : 0.0;
-  return s == 1 ? 4.0 / 3.0 : -1.0 / 6.0;
+/// One Arakawa Jacobian of an advection scheme: θ-stride s_theta, ξ-stride s_xi (1 or 2; stride 2 is the
+/// scheme on the sub-lattice of every other column or ring, its differences spanning twice the distance)
+/// and its weight in 12·Δθ·Δξ·J.
+struct AdvectionStride {
+  int s_theta = 1, s_xi = 1;
+  double weight = 1.0;
+};
+
+/// The Jacobians of advection order p_theta in θ and p_xi in ξ (2 or 4 each) at ring i of n_r; returns how
+/// many (1 or 2) it wrote to `out`. A_{s,t} ≈ s·t·(12ΔθΔξ J) + s·t·(s²E_θ + t²E_ξ) with E the second-order
+/// errors, so a fourth-order direction cancels its E by a stride-2 term: θ only (4/3)A_11 − (1/6)A_21, ξ only
+/// (4/3)A_11 − (1/6)A_12, both (4/3)A_11 − (1/12)A_22. Every term of Arakawa's three forms holds one
+/// θ- and one ξ-difference, so each is replaced by the fourth-order (4/3)D_1 − (1/3)D_2; a sum of conserving
+/// Jacobians, it conserves what each conserves. ξ-order 4 needs the rings i ± 2: on rings 1 and n_r − 2
+/// (next to the wall and the outer ring) ξ falls back to second order.
+inline int advection_terms(int p_theta, int p_xi, int i, int n_r, AdvectionStride out[2]) {
+  const bool t4 = p_theta == 4, x4 = p_xi == 4 && i >= 2 && i <= n_r - 3;
+  out[0] = {1, 1, t4 || x4 ? 4.0 / 3.0 : 1.0};
+  if (!t4 && !x4) return 1;
+  out[1] = {t4 ? 2 : 1, x4 ? 2 : 1, t4 && x4 ? -1.0 / 12.0 : -1.0 / 6.0};
+  return 2;
 }
 
-/// θ-strides the advection of this order uses (1 or 2).
-inline int advection_strides(int order) { return order == 4 ? 2 : 1; }
+/// Columns (θ) the advection of order p reaches either side of a node: 1 or 2; rings (ξ) likewise.
+inline int advection_reach(int p) { return p == 4 ? 2 : 1; }
 
-/// 12·Δθ·Δξ·J of advection order 2 (Arakawa) or 4 (fourth order in θ): Σ_s advection_weight(order, s)·A_s
-/// over the strides s = 1 … advection_strides(order); same arguments as arakawa_12.
-inline double advection_12(int order, const double* pm, const double* p0, const double* pp, const double* zm,
-                           const double* z0, const double* zp, int j, int n) {
-  double J = advection_weight(order, 1) * arakawa_12(pm, p0, pp, zm, z0, zp, j, n);
-  for (int s = 2; s <= advection_strides(order); ++s)
-    J += advection_weight(order, s) * arakawa_12(pm, p0, pp, zm, z0, zp, j, n, s);
+/// 12·Δθ·Δξ·J at node (i, j) of the fields psi, zeta (row-major (n_r, n), ring 0 the wall, 1 ≤ i ≤ n_r − 2)
+/// with advection order p_theta in θ and p_xi in ξ: Σ weight·A_{s_theta, s_xi} over advection_terms.
+inline double advection_12(int p_theta, int p_xi, const double* psi, const double* zeta, int i, int j, int n,
+                           int n_r) {
+  AdvectionStride t[2];
+  const int terms = advection_terms(p_theta, p_xi, i, n_r, t);
+  double J = 0.0;
+  for (int q = 0; q < terms; ++q) {
+    const size_t m = size_t(i - t[q].s_xi) * n, c = size_t(i) * n, p = size_t(i + t[q].s_xi) * n;
+    J +=
+        t[q].weight * arakawa_12(psi + m, psi + c, psi + p, zeta + m, zeta + c, zeta + p, j, n, t[q].s_theta);
+  }
   return J;
 }
 
-/// The largest modified wavenumber of the θ-difference of advection order 2 or 4, times Δθ: 1, and
-/// max_x[(4/3)sin x − (1/6)sin 2x] = 1.3722 (x = 1.797). The CFL number's θ part is scaled by it, so that one
-/// limit holds for both orders.
-inline double advection_theta_factor(int order) { return order == 4 ? 1.3722 : 1.0; }
+/// The largest modified wavenumber of the difference of advection order 2 or 4, times the spacing: 1, and
+/// max_x[(4/3)sin x − (1/6)sin 2x] = 1.3722 (x = 1.797). The CFL number's θ and ξ parts are scaled by the
+/// factor of their direction's order, so that one limit holds for every order.
+inline double advection_factor(int order) { return order == 4 ? 1.3722 : 1.0; }
 
 }  // namespace magnus

@@ -136,15 +136,18 @@ std::vector<double> NsOperator::advection(const std::vector<double>& psi, const 
   // Arakawa (1966) J = (J++ + J+× + J×+)/3 for ∂(ψ,ζ)/∂(θ,ξ) = ψ_θ ζ_ξ − ψ_ξ ζ_θ; x = θ (j), y = ξ (i).
   parallel_over_rings(1, nr - 1, p_.threads, grid_.nodes(), [&](int ib, int ie) {
     const double cx = 1.0 / (2.0 * grid_.d_theta * h_), cy = 1.0 / (2.0 * h_ * grid_.d_theta);
-    const double kappa = advection_theta_factor(p_.advection_order);
+    const double kappa = advection_factor(p_.advection_order),
+                 kappa_xi = advection_factor(p_.advection_order_xi);
     for (int i = ib; i < ie; ++i) {
       double rmax = 0.0;
       const double *pm = &psi[size_t(i - 1) * n], *p0 = &psi[size_t(i) * n], *pp = &psi[size_t(i + 1) * n];
-      const double *zm = &zeta[size_t(i - 1) * n], *z0 = &zeta[size_t(i) * n], *zp = &zeta[size_t(i + 1) * n];
       for (int j = 0; j < n; ++j) {
         const int e = j + 1 == n ? 0 : j + 1, w = j == 0 ? n - 1 : j - 1;
-        N[size_t(i) * n + j] = advection_12(p_.advection_order, pm, p0, pp, zm, z0, zp, j, n) * scale;
-        rmax = std::max(rmax, std::fabs(p0[e] - p0[w]) * cx + kappa * std::fabs(pp[j] - pm[j]) * cy);
+        N[size_t(i) * n + j] =
+            advection_12(p_.advection_order, p_.advection_order_xi, psi.data(), zeta.data(), i, j, n, nr) *
+            scale;
+        rmax =
+            std::max(rmax, kappa_xi * std::fabs(p0[e] - p0[w]) * cx + kappa * std::fabs(pp[j] - pm[j]) * cy);
       }
       rate_half[ib >= i_mid ? 1 : 0] =
           std::max(rate_half[ib >= i_mid ? 1 : 0], rmax / (grid_.r[i] * grid_.r[i]));

@@ -53,9 +53,13 @@ struct NsParams {
   int threads = 1;
   bool stokes = false;  ///< drop the advection (unsteady Stokes flow, the creeping limit)
   /// Order of the advection term in θ: 2 (Arakawa's Jacobian) or 4 (its fourth-order-in-θ combination,
-  /// solver/arakawa.hpp); ξ is second order either way. At Re 100, α = 1 order 4 takes St from −0.97% to
+  /// solver/arakawa.hpp). At Re 100, α = 1 order 4 takes St from −0.97% to
   /// −0.82% of Stojković et al. on the default grid, the value order 2 reaches only at n_θ = 512.
   int advection_order = 2;
+  /// Order of the advection term in ξ: 2 or 4 (the fourth-order combination in ξ, solver/arakawa.hpp; second
+  /// order on the rings next to the wall and the outer ring). Behind the body ξ is the wake's streamwise
+  /// direction, and the wake beyond r = 10a sets the last 0.3% of St at Re 100, α = 1.
+  int advection_order_xi = 2;
   NsOuterVorticity outer_vorticity = NsOuterVorticity::inflow_outflow;
 
   /// Re = U·2a/ν (0 when U = 0).
@@ -109,9 +113,10 @@ class NsOperator {
   double dt() const { return dt_; }
   double d_xi() const { return h_; }
 
-  /// Advection N = ψ_θ ζ_ξ − ψ_ξ ζ_θ by Arakawa's Jacobian (of params().advection_order in θ) on rings
-  /// 1…n_r−2 (0 on rings 0, n_r−1), m²/s². rate (optional): max over those rings of |ψ_θ|/(JΔξ) +
-  /// κ|ψ_ξ|/(JΔθ) (central, κ = advection_theta_factor), 1/s: CFL = rate·Δt.
+  /// Advection N = ψ_θ ζ_ξ − ψ_ξ ζ_θ by Arakawa's Jacobian (of params().advection_order in θ and
+  /// advection_order_xi in ξ) on rings 1…n_r−2 (0 on rings 0, n_r−1), m²/s². rate (optional): max over those
+  /// rings of κ_ξ|ψ_θ|/(JΔξ) + κ_θ|ψ_ξ|/(JΔθ) (central, κ = advection_factor of each direction's order),
+  /// 1/s: CFL = rate·Δt.
   std::vector<double> advection(const std::vector<double>& psi, const std::vector<double>& zeta,
                                 double* rate = nullptr) const;
   /// ψ from ζ with the far-field data (Neumann ψ_ξ = U R sinθ − Γ_R/2π) and ψ = 0 on the wall, m²/s.
@@ -145,11 +150,13 @@ inline void advance(const NsOperator& op, const NsState& old, NsState& next) {
   advance(op, old, next, nullptr);
 }
 
-/// CFL number Δt·max_ij(|ψ_θ|/(J Δξ) + κ|ψ_ξ|/(J Δθ)) of a state (central differences), dimensionless;
-/// κ = advection_theta_factor(advection_order): 1 for order 2, 1.3722 for order 4.
-double cfl_number(const PolarGrid& g, const std::vector<double>& psi, double dt, int advection_order = 2);
+/// CFL number Δt·max_ij(κ_ξ|ψ_θ|/(J Δξ) + κ_θ|ψ_ξ|/(J Δθ)) of a state (central differences),
+/// dimensionless; κ_θ = advection_factor(order_theta), κ_ξ = advection_factor(order_xi): 1 for order 2,
+/// 1.3722 for order 4.
+double cfl_number(const PolarGrid& g, const std::vector<double>& psi, double dt, int order_theta = 2,
+                  int order_xi = 2);
 
-/// Δt (s) that gives the CFL number `cfl` (of p.advection_order) for the state, using at least the speed
+/// Δt (s) that gives the CFL number `cfl` (of p's advection orders) for the state, using at least the speed
 /// |U| + |aω| + U (the impulsive start's 2U at the shoulders plus the wall speed) across θ.
 double cfl_time_step(const NsParams& p, const PolarGrid& g, const std::vector<double>& psi, double cfl);
 

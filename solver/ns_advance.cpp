@@ -82,8 +82,8 @@ void advance(const NsOperator& op, const NsState& old, NsState& next, NsStepTime
     double rmax = 0.0, acc = 0.0;
     const double scale = 1.0 / (12.0 * g.d_theta * h), cx = 1.0 / (2.0 * g.d_theta * h);
     const double inv_h2 = 1.0 / (h * h), inv_t2 = 1.0 / (g.d_theta * g.d_theta), two_nu = 2.0 / p.nu;
-    const int order = p.advection_order;
-    const double kappa = advection_theta_factor(order);
+    const int order = p.advection_order, order_xi = p.advection_order_xi;
+    const double kappa = advection_factor(order), kappa_xi = advection_factor(order_xi);
     for (int i = rb; i < re; ++i) {
       double* N = &next.N_prev[size_t(i) * n];
       double* f = b.f.p + size_t(i) * n;
@@ -103,10 +103,11 @@ void advance(const NsOperator& op, const NsState& old, NsState& next, NsStepTime
         const int e = j + 1 == n ? 0 : j + 1, w = j == 0 ? n - 1 : j - 1;
         double Nij = 0.0;
         if (!p.stokes) {
-          // Arakawa (1966) J = (J++ + J+× + J×+)/3 for ∂(ψ,ζ)/∂(θ,ξ); x = θ (j), y = ξ (i); order 4 in θ:
-          // the combination of θ-strides 1 and 2 (solver/arakawa.hpp).
-          Nij = advection_12(order, pm, p0, pp, zm, z0, zp, j, n) * scale;
-          ring_rate = std::max(ring_rate, std::fabs(p0[e] - p0[w]) + kappa * std::fabs(pp[j] - pm[j]));
+          // Arakawa (1966) J = (J++ + J+× + J×+)/3 for ∂(ψ,ζ)/∂(θ,ξ); x = θ (j), y = ξ (i); order 4 in θ
+          // or ξ: the combination of strides 1 and 2 (solver/arakawa.hpp).
+          Nij = advection_12(order, order_xi, old.psi.data(), old.zeta.data(), i, j, n, nr) * scale;
+          ring_rate =
+              std::max(ring_rate, kappa_xi * std::fabs(p0[e] - p0[w]) + kappa * std::fabs(pp[j] - pm[j]));
         }
         N[j] = Nij;
         const double lap = (zp[j] - 2.0 * z0[j] + zm[j]) * inv_h2 + (z0[e] - 2.0 * z0[j] + z0[w]) * inv_t2;
@@ -127,7 +128,8 @@ void advance(const NsOperator& op, const NsState& old, NsState& next, NsStepTime
   double rate = std::fabs(p.omega) / g.d_theta;  // the wall ring: ψ_θ = 0, ψ_ξ = −a²ω
   double acc = 0.0;
   for (int t = 0; t < parts; ++t) rate = std::max(rate, rate_part[t]), acc += sum_part[t];
-  const double cfl = p.stokes ? cfl_number(g, old.psi, dt, p.advection_order) : rate * dt;
+  const double cfl =
+      p.stokes ? cfl_number(g, old.psi, dt, p.advection_order, p.advection_order_xi) : rate * dt;
   if (!(cfl <= kNsCflLimit))
     throw std::runtime_error("advance: at t = " + fmt_time(old.t) + " the CFL number is " +
                              std::to_string(cfl) + " > " + std::to_string(kNsCflLimit) + ": the time step " +

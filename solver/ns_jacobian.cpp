@@ -61,7 +61,8 @@ void SteadyJacobian::assemble(const std::vector<double>& x) {
   // Arakawa's 48 terms of a ζ row fall on 18 columns (order 4 in θ: 96 terms on 30 columns): the first
   // assembly merges the entries of each run of one row into distinct triplets (k-th call → Slot_[k]), so
   // the compressed columns are built from 2.5–3 times fewer triplets; the later ones only add into Tx_.
-  const int order = p_.advection_order, strides = advection_strides(order);
+  const int order = p_.advection_order, order_xi = p_.advection_order_xi;
+  const int strides = order == 4 || order_xi == 4 ? 2 : 1;
   long run_row = -1;
   size_t run_begin = 0;
   if (first) {
@@ -116,10 +117,13 @@ void SteadyJacobian::assemble(const std::vector<double>& x) {
       add(rz, cz(i, j), (-2.0 - 2.0 * q2) * s_zeta_);
       add(rz, cz(i, e), q2 * s_zeta_), add(rz, cz(i, w), q2 * s_zeta_);
       if (p_.stokes) continue;
-      for (int s = 1; s <= strides; ++s) {  // θ-stride s, weight c_s (solver/arakawa.hpp)
-        const double cs = cN * advection_weight(order, s);
+      AdvectionStride st[2];
+      const int terms = advection_terms(order, order_xi, i, nr, st);
+      for (int q = 0; q < terms; ++q) {  // strides (s, sx) in θ and ξ, weight c (solver/arakawa.hpp)
+        const int s = st[q].s_theta, sx = st[q].s_xi;
+        const double cs = cN * st[q].weight;
         for (const ArakawaTerm& t : kArakawa) {
-          const int pi = i + t.pi, pj = wrap(j + s * t.pj), zi = i + t.zi, zj = wrap(j + s * t.zj);
+          const int pi = i + sx * t.pi, pj = wrap(j + s * t.pj), zi = i + sx * t.zi, zj = wrap(j + s * t.zj);
           add(rz, cp(pi, pj), cs * t.c * Z(zi, zj));
           add(rz, cz(zi, zj), cs * t.c * P(pi, pj));
         }

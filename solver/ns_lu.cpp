@@ -13,11 +13,11 @@ namespace magnus {
 namespace {
 
 /// Nested dissection of the box of nodes [i0, i1) × [j0, j1) of a grid with a 9-point stencil (George
-/// 1973), or one that reaches wj columns either side in θ: the two halves either side of the middle line
-/// of the longer side (wj columns wide across θ), then that line; small boxes in natural order. `put`
-/// takes a node (i, j).
+/// 1973), or one that reaches wj columns either side in θ and wi rings either side in ξ: the two halves
+/// either side of the middle line of the longer side (wj columns wide across θ, wi rings across ξ), then
+/// that line; small boxes in natural order. `put` takes a node (i, j).
 template <class Put>
-void dissect(int i0, int i1, int j0, int j1, int wj, const Put& put) {
+void dissect(int i0, int i1, int j0, int j1, int wi, int wj, const Put& put) {
   if (i1 <= i0 || j1 <= j0) return;
   if ((i1 - i0) * (j1 - j0) <= 16) {
     for (int i = i0; i < i1; ++i)
@@ -25,12 +25,13 @@ void dissect(int i0, int i1, int j0, int j1, int wj, const Put& put) {
     return;
   }
   if (i1 - i0 >= j1 - j0) {
-    const int s = (i0 + i1) / 2;
-    dissect(i0, s, j0, j1, wj, put), dissect(s + 1, i1, j0, j1, wj, put);
-    for (int j = j0; j < j1; ++j) put(s, j);
+    const int s = std::min((i0 + i1) / 2, i1 - wi);
+    dissect(i0, s, j0, j1, wi, wj, put), dissect(s + wi, i1, j0, j1, wi, wj, put);
+    for (int i = s; i < s + wi; ++i)
+      for (int j = j0; j < j1; ++j) put(i, j);
   } else {
     const int s = std::min((j0 + j1) / 2, j1 - wj);
-    dissect(i0, i1, j0, s, wj, put), dissect(i0, i1, s + wj, j1, wj, put);
+    dissect(i0, i1, j0, s, wi, wj, put), dissect(i0, i1, s + wj, j1, wi, wj, put);
     for (int i = i0; i < i1; ++i)
       for (int j = s; j < s + wj; ++j) put(i, j);
   }
@@ -38,13 +39,13 @@ void dissect(int i0, int i1, int j0, int j1, int wj, const Put& put) {
 
 }  // namespace
 
-std::vector<long> grid_order(int nr, int n, bool mirror, int theta_reach) {
-  const int wj = std::max(1, theta_reach);
+std::vector<long> grid_order(int nr, int n, bool mirror, int theta_reach, int xi_reach) {
+  const int wj = std::max(1, theta_reach), wi = std::max(1, xi_reach);
   std::vector<long> order;
   if (mirror) {
     const int m = n / 2 - 1;
     order.reserve(size_t(2) * nr * m);
-    dissect(0, nr, 1, n / 2, wj, [&](int i, int j) {
+    dissect(0, nr, 1, n / 2, wi, wj, [&](int i, int j) {
       const long u = 2 * (long(i) * m + j - 1);
       order.push_back(u), order.push_back(u + 1);
     });
@@ -55,8 +56,8 @@ std::vector<long> grid_order(int nr, int n, bool mirror, int theta_reach) {
     const long u = 2 * (long(i) * n + j);
     order.push_back(u), order.push_back(u + 1);
   };
-  dissect(0, nr, wj, n / 2, wj, put);
-  dissect(0, nr, n / 2 + wj, n, wj, put);
+  dissect(0, nr, wj, n / 2, wi, wj, put);
+  dissect(0, nr, n / 2 + wj, n, wi, wj, put);
   for (int j0 : {0, n / 2})
     for (int i = 0; i < nr; ++i)
       for (int j = j0; j < j0 + wj; ++j) put(i, j);

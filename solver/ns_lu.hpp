@@ -21,9 +21,10 @@ void triplet_pattern(long n, const std::vector<long>& ti, const std::vector<long
 /// rays θ = 0 and θ = π, which come last, then Γ_R; the mirror half, the nodes 0 < θ_j < π, is a plain
 /// box. Timed once around the calls on the Re 40 grid (256 × 314, the half): UMFPACK's analysis 0.09 s
 /// with it against 0.69 s with its own METIS ordering, the factorisation 0.43 s against 0.54 s.
-/// theta_reach: how many columns the stencil reaches either side in θ (1; 2 for advection order 4), the
-/// width of the cuts across θ (the cuts along the rays θ = 0 and π are then that many columns wide).
-std::vector<long> grid_order(int nr, int n, bool mirror, int theta_reach = 1);
+/// theta_reach: how many columns the stencil reaches either side in θ (1; 2 for advection order 4 in θ),
+/// the width of the cuts across θ (the cuts along the rays θ = 0 and π are then that many columns wide);
+/// xi_reach likewise in rings (2 for advection order 4 in ξ), the width of the cuts across ξ.
+std::vector<long> grid_order(int nr, int n, bool mirror, int theta_reach = 1, int xi_reach = 1);
 
 /// UMFPACK's symbolic analysis the one way the steady Jacobian and its shifted complex copy want it: the
 /// order q (grid_order) given, with the symmetric strategy (the order for rows and columns alike); should

@@ -22,18 +22,16 @@ double seconds_since(clock_type::time_point t0) {
   return std::chrono::duration<double>(clock_type::now() - t0).count();
 }
 
-/// Arakawa's N (of the given order in θ) on rings 1…n_r−2 (0 on the wall and outer rings), m²/s²: the
-/// stepper's advection_12, so the residual is the stepper's sum to the last bit; fields row-major (n_r, n).
+/// Arakawa's N (of the given orders in θ and ξ) on rings 1…n_r−2 (0 on the wall and outer rings), m²/s²:
+/// the stepper's advection_12, so the residual is the stepper's sum to the last bit; fields row-major (n_r,
+/// n).
 std::vector<double> arakawa(const std::vector<double>& psi, const std::vector<double>& zeta, int nr, int n,
-                            double d_theta, double h, int order) {
+                            double d_theta, double h, int order, int order_xi) {
   std::vector<double> N(size_t(nr) * n, 0.0);
   const double scale = 1.0 / (12.0 * d_theta * h);
-  for (int i = 1; i < nr - 1; ++i) {
-    const double *pm = &psi[size_t(i - 1) * n], *p0 = &psi[size_t(i) * n], *pp = &psi[size_t(i + 1) * n];
-    const double *zm = &zeta[size_t(i - 1) * n], *z0 = &zeta[size_t(i) * n], *zp = &zeta[size_t(i + 1) * n];
+  for (int i = 1; i < nr - 1; ++i)
     for (int j = 0; j < n; ++j)
-      N[size_t(i) * n + j] = advection_12(order, pm, p0, pp, zm, z0, zp, j, n) * scale;
-  }
+      N[size_t(i) * n + j] = advection_12(order, order_xi, psi.data(), zeta.data(), i, j, n, nr) * scale;
   return N;
 }
 
@@ -90,8 +88,9 @@ std::vector<double> SteadyJacobian::residual(const std::vector<double>& x) const
   const double h = h_, dth = grid_.d_theta, q2 = (h / dth) * (h / dth), R = grid_.outer_radius();
   const double a2 = p_.a * p_.a, h2_nu = h * h / p_.nu;
   const NsState s = unpack(x);
-  const std::vector<double> N = p_.stokes ? std::vector<double>(size_t(nr) * n, 0.0)
-                                          : arakawa(s.psi, s.zeta, nr, n, dth, h, p_.advection_order);
+  const std::vector<double> N =
+      p_.stokes ? std::vector<double>(size_t(nr) * n, 0.0)
+                : arakawa(s.psi, s.zeta, nr, n, dth, h, p_.advection_order, p_.advection_order_xi);
   auto P = [&](int i, int j) { return s.psi[size_t(i) * n + j]; };
   auto Z = [&](int i, int j) { return s.zeta[size_t(i) * n + j]; };
   std::vector<double> F(static_cast<size_t>(size_));
@@ -179,7 +178,9 @@ void SteadyJacobian::factor(const std::vector<double>& x) {
     const auto t0 = clock_type::now();
     const long nf = factored_size();
     const long status = symbolic_in_grid_order(
-        nf, grid_order(grid_.n_r, grid_.n_theta, mirror_, advection_strides(p_.advection_order)),
+        nf,
+        grid_order(grid_.n_r, grid_.n_theta, mirror_, advection_reach(p_.advection_order),
+                   advection_reach(p_.advection_order_xi)),
         [&](const double* ctl, const long* q) {
           double inf[UMFPACK_INFO];
           return q ? umfpack_dl_qsymbolic(nf, nf, fp(), fi(), fx(), q, &symbolic_, ctl, inf)

@@ -59,17 +59,17 @@ class ShiftedLu {
     umfpack_zl_defaults(control);
     // The grid's nested-dissection order, as for the real Jacobian (J − σM has J's pattern).
     if (!*symbolic) {
-      const long st =
-          symbolic_in_grid_order(n,
-                                 grid_order(jac.grid().n_r, jac.grid().n_theta, false,
-                                            advection_strides(jac.params().advection_order)),
-                                 [&](const double* ctl, const long* q) {
-                                   double inf[UMFPACK_INFO];
-                                   return q ? umfpack_zl_qsymbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(),
-                                                                   Az_.data(), q, symbolic, ctl, inf)
-                                            : umfpack_zl_symbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(),
-                                                                  Az_.data(), symbolic, ctl, inf);
-                                 });
+      const long st = symbolic_in_grid_order(
+          n,
+          grid_order(jac.grid().n_r, jac.grid().n_theta, false, advection_reach(jac.params().advection_order),
+                     advection_reach(jac.params().advection_order_xi)),
+          [&](const double* ctl, const long* q) {
+            double inf[UMFPACK_INFO];
+            return q ? umfpack_zl_qsymbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), q, symbolic,
+                                            ctl, inf)
+                     : umfpack_zl_symbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), symbolic,
+                                           ctl, inf);
+          });
       if (st != UMFPACK_OK) {
         *symbolic = nullptr;
         throw std::runtime_error("leading_eigenvalues: UMFPACK symbolic analysis failed (status " +

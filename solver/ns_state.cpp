@@ -41,16 +41,18 @@ PolarGrid ns_grid(const NsParams& p) {
   return make_grid(req, p.a);
 }
 
-double cfl_number(const PolarGrid& g, const std::vector<double>& psi, double dt, int advection_order) {
+double cfl_number(const PolarGrid& g, const std::vector<double>& psi, double dt, int order_theta,
+                  int order_xi) {
   const int nr = g.n_r, n = g.n_theta;
-  const double h = g.d_xi(0), kappa = advection_theta_factor(advection_order);
+  const double h = g.d_xi(0), kappa = advection_factor(order_theta), kappa_xi = advection_factor(order_xi);
   double rate = 0.0;
   for (int i = 0; i < nr; ++i) {
     const double J = g.r[i] * g.r[i];
     for (int j = 0; j < n; ++j) {
       const double p_theta = psi_theta_at(psi, i, j, n, g.d_theta);
       const double p_xi = psi_xi_at(psi, i, j, n, nr, h);
-      rate = std::max(rate, std::fabs(p_theta) / (J * h) + kappa * std::fabs(p_xi) / (J * g.d_theta));
+      rate =
+          std::max(rate, kappa_xi * std::fabs(p_theta) / (J * h) + kappa * std::fabs(p_xi) / (J * g.d_theta));
     }
   }
   return rate * dt;
@@ -58,8 +60,8 @@ double cfl_number(const PolarGrid& g, const std::vector<double>& psi, double dt,
 
 double cfl_time_step(const NsParams& p, const PolarGrid& g, const std::vector<double>& psi, double cfl) {
   const double floor_rate =
-      advection_theta_factor(p.advection_order) * (2.0 * p.U + std::fabs(p.a * p.omega)) / (p.a * g.d_theta);
-  const double rate = std::max(cfl_number(g, psi, 1.0, p.advection_order), floor_rate);
+      advection_factor(p.advection_order) * (2.0 * p.U + std::fabs(p.a * p.omega)) / (p.a * g.d_theta);
+  const double rate = std::max(cfl_number(g, psi, 1.0, p.advection_order, p.advection_order_xi), floor_rate);
   if (!(rate > 0.0)) return 0.1 * p.a * p.a / p.nu;  // nothing moves: the diffusion time of a cell
   return cfl / rate;
 }

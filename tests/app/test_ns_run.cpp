@@ -69,20 +69,32 @@ TEST_CASE("navier-stokes run: the result holds the viscous figures, the summary 
 
 TEST_CASE("navier-stokes run: solver.advection_order = 4 is used, stated and stored", "[app][ns]") {
   const std::string dir = test::temp_dir("ns-run-order4");
-  const auto o = test::magnus_cmd(
-      {"run", write_case(dir, ns_case(100, 1, 2)), "-o", dir + "/r.h5", "--set", "solver.advection_order=4"},
-      dir);
+  // One run of the Re 100, α = 1 case to `out` with the given --set overrides.
+  auto run = [&](const std::string& out, const std::vector<std::string>& sets) {
+    std::vector<std::string> args = {"run", write_case(dir, ns_case(100, 1, 2)), "-o", dir + "/" + out};
+    for (const std::string& s : sets) args.push_back("--set"), args.push_back(s);
+    return test::magnus_cmd(args, dir);
+  };
+  const auto o = run("r.h5", {"solver.advection_order=4"});
   INFO(o.err);
   REQUIRE(o.status == 0);
-  CHECK(o.out.find("advection order 4 in θ") != std::string::npos);
+  CHECK(o.out.find("advection order 4 in θ, 2 in ξ") != std::string::npos);
   const FlowResult r = read_result(dir + "/r.h5");
   CHECK(r.c.solver.advection_order == 4);
+  CHECK(r.c.solver.advection_order_xi == 2);
   // The time step follows the CFL number with the fourth-order difference's wavenumber (1.3722 in θ):
   // shorter than order 2's on the same case.
-  const auto o2 = test::magnus_cmd({"run", write_case(dir, ns_case(100, 1, 2)), "-o", dir + "/r2.h5"}, dir);
-  REQUIRE(o2.status == 0);
+  REQUIRE(run("r2.h5", {}).status == 0);
   const FlowResult r2 = read_result(dir + "/r2.h5");
   CHECK(r.viscous->steps > r2.viscous->steps);
+  // Order 4 in ξ as well: stated, stored, and run (the CFL number's ξ part scaled likewise).
+  const auto o4 = run("r4.h5", {"solver.advection_order=4", "solver.advection_order_xi=4"});
+  INFO(o4.err);
+  REQUIRE(o4.status == 0);
+  CHECK(o4.out.find("advection order 4 in θ, 4 in ξ") != std::string::npos);
+  const FlowResult r4 = read_result(dir + "/r4.h5");
+  CHECK(r4.c.solver.advection_order_xi == 4);
+  CHECK(r4.viscous->steps >= r.viscous->steps);
 }
 
 TEST_CASE("navier-stokes run: above Re 200 the summary says real flow is three-dimensional", "[app][ns]") {

@@ -107,6 +107,9 @@ TEST_CASE("time keys and the snapshots: every value, and every range named", "[i
   CHECK(parse(ns_scene).solver.advection_order == 2);
   CHECK(parse(ns_scene + "[solver]\nadvection_order = 4\n").solver.advection_order == 4);
   CHECK(parse(ns_scene, {"solver.advection_order=4"}).solver.advection_order == 4);
+  CHECK(parse(ns_scene).solver.advection_order_xi == 2);
+  CHECK(parse(ns_scene + "[solver]\nadvection_order_xi = 4\n").solver.advection_order_xi == 4);
+  CHECK(parse(ns_scene, {"solver.advection_order_xi=4"}).solver.advection_order_xi == 4);
 
   const std::vector<std::pair<std::string, std::string>> bad = {
       {"[time]\nmode = \"fast\"\n",
@@ -137,6 +140,9 @@ TEST_CASE("time keys and the snapshots: every value, and every range named", "[i
        "order in θ)"},
       {"[solver]\nadvection_order = 4.0\n",
        "test.toml: solver.advection_order: expected an integer, got a float"},
+      {"[solver]\nadvection_order_xi = 6\n",
+       "test.toml: solver.advection_order_xi: 6 is out of range: must be 2 (Arakawa's Jacobian) or 4 (fourth "
+       "order in ξ)"},
   };
   for (const auto& [text, message] : bad) {
     CAPTURE(text);
@@ -155,6 +161,8 @@ TEST_CASE("potential flow: the keys of [time] and the snapshots are refused by n
   }
   CHECK(error_of(scene + "[solver]\nadvection_order = 4\n") ==
         "test.toml: solver.advection_order: is only used with model.flow = \"navier-stokes\"");
+  CHECK(error_of(scene + "[solver]\nadvection_order_xi = 4\n") ==
+        "test.toml: solver.advection_order_xi: is only used with model.flow = \"navier-stokes\"");
   CHECK(error_of(scene + "[output]\nsnapshots = 10\n") ==
         "test.toml: output.snapshots: is only used with model.flow = \"navier-stokes\"");
   CHECK(error_of(scene + "[output]\nsnapshot_interval = 1.0\n") ==
@@ -324,7 +332,7 @@ TEST_CASE("the resolved case: potential text unchanged, navier-stokes text reads
         "title = \"Spinning cylinder\"\n\n[model]\nflow = \"navier-stokes\"\n\n[cylinder]\nradius = 0.005\n"
         "spin = 2.0\n\n[flow]\nspeed = 0.01\ndensity = 1.225\npressure = 0.0\nviscosity = 1e-06\n\n[domain]\n"
         "outer_radius = 100.0\n\n[grid]\nspacing = \"geometric\"\nn_theta = 192\nn_r = 0\n\n[solver]\n"
-        "advection_order = 2\n\n[time]\n"
+        "advection_order = 2\nadvection_order_xi = 2\n\n[time]\n"
         "mode = \"auto\"\nend = 300.0\ndt = 0.0\ncfl = 0.7\nmean_tolerance = 0.001\ncheckpoint_interval = "
         "10.0\n"
         "\n[output]\nfile = \"magnus.h5\"\nsnapshots = 0\nsnapshot_interval = 0.25\n");

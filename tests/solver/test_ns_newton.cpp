@@ -79,10 +79,16 @@ std::string residual_list(const std::vector<double>& r) {
 }  // namespace
 
 TEST_CASE("[ns][newton] the analytic Jacobian is the derivative of the residual", "[ns][newton]") {
-  for (const auto& [stokes, order] : {std::pair{false, 2}, std::pair{true, 2}, std::pair{false, 4}}) {
+  struct Variant {
+    bool stokes;
+    int order, order_xi;
+  };
+  for (const auto& [stokes, order, order_xi] :
+       {Variant{false, 2, 2}, Variant{true, 2, 2}, Variant{false, 4, 2}, Variant{false, 2, 4},
+        Variant{false, 4, 4}}) {
     NsParams p = newton_params(30.0, 0.7, 16, 6.0);
     p.stokes = stokes;
-    p.advection_order = order;
+    p.advection_order = order, p.advection_order_xi = order_xi;
     SteadyJacobian jac(p);
     const PolarGrid& g = jac.grid();
     NsState s = potential_guess(p, g);
@@ -102,8 +108,8 @@ TEST_CASE("[ns][newton] the analytic Jacobian is the derivative of the residual"
     double err = 0.0;
     for (size_t q = 0; q < x.size(); ++q)
       err = std::max(err, std::fabs((Fp[q] - Fm[q]) / (2.0 * eps) - Jv[q]));
-    INFO("stokes " << stokes << ", advection order " << order << ": |J v − FD| = " << err
-                   << ", |J v| = " << max_abs(Jv));
+    INFO("stokes " << stokes << ", advection order " << order << ", in xi " << order_xi
+                   << ": |J v − FD| = " << err << ", |J v| = " << max_abs(Jv));
     CHECK(err < 1e-7 * max_abs(Jv));
     // The factors solve the system they were made from (and its transpose).
     const std::vector<double> y = jac.solve(Jv);
@@ -114,9 +120,10 @@ TEST_CASE("[ns][newton] the analytic Jacobian is the derivative of the residual"
 namespace {
 
 /// Newton from the potential flow, then the time stepper from rest until it is steady: the same state.
-void check_newton_is_the_steppers_steady_state(double Re, double alpha, int n_theta, int order = 2) {
+void check_newton_is_the_steppers_steady_state(double Re, double alpha, int n_theta, int order = 2,
+                                               int order_xi = 2) {
   NsParams p = newton_params(Re, alpha, n_theta, 20.0);
-  p.advection_order = order;
+  p.advection_order = order, p.advection_order_xi = order_xi;
   const PolarGrid g = ns_grid(p);
   NewtonOptions o;
   o.tol = 1e-11;
@@ -125,8 +132,8 @@ void check_newton_is_the_steppers_steady_state(double Re, double alpha, int n_th
   const auto t0 = std::chrono::steady_clock::now();
   const NewtonResult nr = solve_steady(p, potential_guess(p, g), o);
   const double t_newton = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  INFO("Re " << Re << ", alpha " << alpha << ", advection order " << order << ": " << nr.message
-             << "; residuals" << residual_list(nr.residuals));
+  INFO("Re " << Re << ", alpha " << alpha << ", advection order " << order << ", in xi " << order_xi << ": "
+             << nr.message << "; residuals" << residual_list(nr.residuals));
   REQUIRE(nr.converged);
   REQUIRE(log.size() == nr.residuals.size());
   CHECK(log.back().first == nr.iterations);
@@ -192,6 +199,12 @@ TEST_CASE("[ns][newton] Newton's steady state is the time stepper's: Re 10, alph
 TEST_CASE("[ns][newton] Newton's steady state is the time stepper's: advection of order 4, Re 10, alpha 0.5",
           "[ns][newton]") {
   check_newton_is_the_steppers_steady_state(10.0, 0.5, 32, 4);
+}
+
+TEST_CASE(
+    "[ns][newton] Newton's steady state is the time stepper's: order 4 in theta and xi, Re 10, alpha 0.5",
+    "[ns][newton]") {
+  check_newton_is_the_steppers_steady_state(10.0, 0.5, 32, 4, 4);
 }
 
 TEST_CASE("[ns][newton] Re 40, alpha 0 on the default grid: C_D and the time to converge",
@@ -272,12 +285,13 @@ TEST_CASE("[ns][newton] the grid's nested-dissection order is a permutation of t
           "[ns][newton]") {
   // UMFPACK falls back to its own ordering when the given one is not a permutation: a broken order would
   // only show as a slower factorisation, so it is checked here.
-  for (const int reach : {1, 2})
+  for (const auto& [reach, reach_xi] : {std::pair{1, 1}, std::pair{2, 1}, std::pair{1, 2}, std::pair{2, 2}})
     for (const bool mirror : {false, true})
       for (const auto& [nr, n] : {std::pair{5, 8}, std::pair{79, 64}, std::pair{37, 170}}) {
-        const std::vector<long> q = grid_order(nr, n, mirror, reach);
+        const std::vector<long> q = grid_order(nr, n, mirror, reach, reach_xi);
         const long size = mirror ? 2L * nr * (n / 2 - 1) : 2L * nr * n + 1;
-        INFO("n_r " << nr << ", n_theta " << n << (mirror ? ", mirror" : ", whole") << ", reach " << reach);
+        INFO("n_r " << nr << ", n_theta " << n << (mirror ? ", mirror" : ", whole") << ", reach " << reach
+                    << ", " << reach_xi);
         REQUIRE(long(q.size()) == size);
         std::vector<long> sorted = q, identity(q.size());
         std::sort(sorted.begin(), sorted.end());
