@@ -1,8 +1,10 @@
 // magnus sweep CASE (--spin-ratio A:B:STEP | --circulation A:B:STEP) [--set k=v]… [--csv FILE]
 //              [-o FILE.h5] [--plot FILE.png] [--size WxH] [--threads N] [-q]
 // navier-stokes: magnus sweep CASE --spin-ratio A:B:STEP [--reynolds A:B:STEP] [--shard K/N] [--steady-only]
+//               magnus sweep CASE --reynolds A:B:STEP …  (the case's spin ratio, continued in Re)
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -63,24 +65,36 @@ void command_ns_sweep(const SweepOptions& o, const Case& c, const SweepRange& al
   if (!o.quiet && !o.json && is_stdout(o.csv))
     throw std::runtime_error("--csv -: add -q (the table also goes to standard output)");
   check_distinct_paths({o.case_path}, {o.csv, o.output, o.plot});
-  for (const std::string* p : {&o.csv, &o.output, &o.plot})
-    if (!p->empty()) check_writable(*p);
+  check_writable(o.csv);
+  check_file_writable(o.output, "the HDF5 sweep file");
+  check_file_writable(o.plot, "the PNG plot");
   const PlotSize size = o.size.empty() ? PlotSize{} : parse_plot_size(o.size);
+  if (!o.plot.empty() && std::all_of(mo.alphas.begin(), mo.alphas.end(), [](double a) { return a == 0.0; }))
+    throw std::runtime_error(fmt::format(
+        "--plot {}: the plot shows S/(2πρa²) = C_L/C_L,ideal, undefined at α = 0 (the ideal lift is 0): "
+        "give spin ratios above 0, or leave out --plot",
+        o.plot));
   mo.threads = o.threads;
-  if (!o.steady_only)
+  if (!o.steady_only) {
     mo.stability = make_stability_hook(o.stability == "march" ? StabilityMethod::march : StabilityMethod::eigenvalues);
+    mo.stability_method = o.stability;
+  }
   mo.average_unstable = !o.steady_only;
   if (!o.quiet)
     mo.on_point = [](const NsMapPoint& p) {
       std::fprintf(stderr, "magnus: Re %g, α %.4g: %s%s (%.2f s)\n", p.reynolds, p.alpha,
                    p.converged ? "steady" : (p.fold ? "fold" : "no steady state"),
-                   p.source == MapSource::steady || p.source == MapSource::none ? "" : ", time-averaged",
+                   p.source == MapSource::marched_steady
+                       ? ", unstable: marched from rest to another steady state"
+                   : p.source == MapSource::steady || p.source == MapSource::none ? ""
+                                                                                 : ", time-averaged",
                    p.seconds);
     };
   const NsMap m = ns_map(c, mo);
+  // The plot first: it is the one output that can still find nothing to draw (no point with a lift).
+  if (!o.plot.empty()) plot_ns_map(m, o.plot, size);
   if (!o.csv.empty()) write_text_output(o.csv, ns_map_csv(m));
   if (!o.output.empty()) write_ns_map_hdf5(m, o.output);
-  if (!o.plot.empty()) plot_ns_map(m, o.plot, size);
   std::vector<std::string> written;
   for (const std::string* p : {&o.csv, &o.output, &o.plot})
     if (!p->empty() && !is_stdout(*p)) written.push_back(*p);
@@ -98,11 +112,28 @@ void command_ns_sweep(const SweepOptions& o, const Case& c, const SweepRange& al
   std::fputs(text.c_str(), stdout);
 }
 
+/// `--reynolds` alone: a navier-stokes case's own spin ratio, continued in Re.
+void command_ns_reynolds_sweep(const SweepOptions& o) {
+  const Case c = load_case(o.case_path, o.sets);
+  if (c.model != FlowModel::navier_stokes)
+    throw std::runtime_error(fmt::format(
+        "{}: --reynolds alone sweeps a navier-stokes case; a potential case needs --spin-ratio or --circulation",
+        o.case_path));
+  if (!(c.scene.speed > 0.0))
+    throw std::runtime_error("flow.speed: a sweep in Re needs U > 0 (Re = U·2a/ν)");
+  SweepRange alpha;
+  alpha.values = {c.scene.spin_ratio()};
+  alpha.first = alpha.last = alpha.values.front();
+  command_ns_sweep(o, c, alpha);
+}
+
 void command_sweep(const SweepOptions& o) {
   const bool by_spin = !o.spin_ratio.empty();
+  if (!by_spin && o.circulation.empty() && !o.reynolds.empty()) return command_ns_reynolds_sweep(o);
   if (by_spin == !o.circulation.empty())
     throw std::invalid_argument(
-        "sweep: give exactly one of --spin-ratio A:B:STEP and --circulation A:B:STEP");
+        "sweep: give exactly one of --spin-ratio A:B:STEP and --circulation A:B:STEP (or, for a "
+        "navier-stokes case, --reynolds A:B:STEP alone)");
   const SweepRange range =
       parse_sweep_range(by_spin ? o.spin_ratio : o.circulation, by_spin ? "--spin-ratio" : "--circulation");
   const PlotSize size = o.size.empty() ? PlotSize{} : parse_plot_size(o.size);
@@ -124,8 +155,9 @@ void command_sweep(const SweepOptions& o) {
     throw std::runtime_error("--json and --csv -: both would go to standard output; name a file for one");
   // Fail before solving, not after.
   check_distinct_paths({o.case_path}, {o.csv, o.output, o.plot});
-  for (const std::string* p : {&o.csv, &o.output, &o.plot})
-    if (!p->empty()) check_writable(*p);
+  check_writable(o.csv);
+  check_file_writable(o.output, "the HDF5 sweep file");
+  check_file_writable(o.plot, "the PNG plot");
   const SweepResult s =
       by_spin ? sweep_spin_ratio(c, range.values, o.threads) : sweep_circulation(c, range.values, o.threads);
 
@@ -190,7 +222,8 @@ void add_sweep_command(CLI::App& app) {
                                  "circulations Γ (m²/s) for circulation.model = \"given\": A:B:STEP");
   spin->excludes(circ);
   sweep->add_option("--reynolds", o->reynolds,
-                    "navier-stokes: Reynolds numbers A:B:STEP, one continuation row each (the S(Re, α) map)");
+                    "navier-stokes: Reynolds numbers A:B:STEP, one continuation row each (the S(Re, α) map); "
+                    "alone: the case's spin ratio continued in Re");
   sweep->add_option("--shard", o->shard,
                     "navier-stokes: compute only the K-th of N interleaved slices of the Re rows (K/N)");
   sweep->add_flag("--steady-only", o->steady_only,

@@ -106,6 +106,12 @@ void check_writable(const std::string& path) {
     fail(path, "the existing file is not writable");
 }
 
+void check_file_writable(const std::string& path, const char* what) {
+  if (!path.empty() && is_stdout(path))
+    fail(path, fmt::format("{} cannot go to standard output (only CSV and JSON can): name a file", what));
+  check_writable(path);
+}
+
 void check_distinct_paths(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs) {
   namespace fs = std::filesystem;
   auto key = [](const std::string& p) {

@@ -19,6 +19,9 @@ std::string output_target(const std::string& path);
 /// writable file. "" and "-" pass. Throws one line naming the path.
 void check_writable(const std::string& path);
 
+/// check_writable for a binary output (HDF5, PNG): "-" is refused too, in one line naming `what`.
+void check_file_writable(const std::string& path, const char* what);
+
 /// Refuse an output that names an input or another output (after following links): one line naming both.
 /// "" and "-" are skipped.
 void check_distinct_paths(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs);

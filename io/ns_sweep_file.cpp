@@ -67,12 +67,23 @@ const std::vector<Column>& columns() {
                if (std::isfinite(v)) p.stable = v != 0.0;
              }},
       Column{"source", "1",
-             "0 steady, 1 time-averaged (steady state unstable), 2 time-averaged (no steady state), 3 none",
+             "0 steady, 1 time-averaged (steady state unstable), 2 time-averaged (no steady state), 3 none, "
+             "4 steady, reached by marching from rest (the continued state unstable or not found)",
              [](const NsMapPoint& p) { return double(int(p.source)); },
-             [](NsMapPoint& p, double v) { p.source = MapSource(int(v)); }},
+             [](NsMapPoint& p, double v) {
+               p.source = v >= 0.0 && v <= 4.0 ? MapSource(int(v)) : MapSource::none;
+             }},
       NS_COL("seconds", "s", "wall time of the point (measured under the run's load)", seconds),
   };
   return c;
+}
+
+/// How the map decided stability, in words.
+std::string stability_text(const NsMap& m) {
+  if (m.stability_method.empty()) return "stability method not recorded";
+  if (m.stability_method == "none") return "no stability test (--steady-only)";
+  return fmt::format("stability by {}{}", m.stability_method == "march" ? "the marching test" : "eigenvalues",
+                     m.averaged ? ", unstable points marched from rest" : "");
 }
 
 std::string stable_text(const NsMapPoint& p) { return p.stable ? (*p.stable ? "yes" : "no") : "—"; }
@@ -85,6 +96,8 @@ std::string source_short(MapSource s) {
       return "mean (unstable)";
     case MapSource::averaged_no_steady:
       return "mean (no steady)";
+    case MapSource::marched_steady:
+      return "steady (march)";
     case MapSource::none:
       break;
   }
@@ -95,12 +108,23 @@ std::string source_short(MapSource s) {
 
 std::string ns_map_table(const NsMap& m) {
   std::string t = fmt::format("{}\n", m.base.title);
-  t += fmt::format("{:<13}navier-stokes, steady branch continued in α per Re row\n", "model");
+  if (m.continued_in_re())
+    t += fmt::format("{:<13}navier-stokes, steady branch continued in Re at α = {:g}\n", "model",
+                     m.alphas.front());
+  else
+    t += fmt::format("{:<13}navier-stokes, steady branch continued in α per Re row\n", "model");
+  t += fmt::format("{:<13}{}\n", "stability", stability_text(m));
   t += fmt::format("{:<13}n_theta = {}, n_r = {}, R/a = {:g}\n", "grid", m.n_theta, m.n_r, m.outer_over_a);
   t += fmt::format("{:<13}{} Re × {} α", "map", m.reynolds.size(), m.alphas.size());
   if (m.shards > 1) t += fmt::format(", shard {}/{} ({} points)", m.shard, m.shards, m.points.size());
-  t += fmt::format("\n{:<13}{:.2f} s on {} thread{} (rows in parallel)\n\n", "time", m.total_s, m.threads,
-                   m.threads == 1 ? "" : "s");
+  t += fmt::format("\n{:<13}{:.2f} s on {} thread{} ({})\n", "time", m.total_s, m.threads,
+                   m.threads == 1 ? "" : "s", m.continued_in_re() ? "one branch in Re: in order" : "rows in parallel");
+  const double re_max = *std::max_element(m.reynolds.begin(), m.reynolds.end());
+  if (re_max > 200.0 * (1.0 + 1e-9))
+    t += fmt::format("{:<13}Re up to {:g} > 200: real flow is three-dimensional there; this 2D laminar map "
+                     "is not what a real cylinder sees\n",
+                     "note", re_max);
+  t += "\n";
   t += fmt::format("{:>7} {:>6} {:>9} {:>8} {:>8} {:>9} {:>8} {:>7} {:>6} {:>16} {:>6} {:>4} {:>7}\n", "Re",
                    "α", "C_L", "C_D", "C_M", "C_L,ideal", "S/2πρa²", "St", "stable", "source", "Newton",
                    "arc", "s");
@@ -121,6 +145,7 @@ std::string ns_map_json(const NsMap& m, const std::vector<std::string>& written)
   j["title"] = m.base.title;
   j["grid"] = {{"n_theta", count(m.n_theta)}, {"n_r", count(m.n_r)}, {"outer_radius", quantity(m.outer_over_a, "a")}};
   j["shard"] = {{"k", count(m.shard)}, {"n", count(m.shards)}};
+  j["stability"] = {{"method", m.stability_method}, {"averaged", m.averaged}};
   j["axes"] = {{"alpha", quantity(m.alphas, "1")}, {"reynolds", quantity(m.reynolds, "1")}};
   j["timing"] = {{"total_s", quantity(m.total_s, "s")}, {"threads", count(m.threads)}};
   Json cols = Json::object();
@@ -174,6 +199,10 @@ void write_ns_map_hdf5(const NsMap& m, const std::string& path) {
     w.attr(file, "shards", long(m.shards));
     w.attr(file, "shard_units", "1");
     w.attr(file, "shards_units", "1");
+    w.attr(file, "stability", m.stability_method);
+    w.attr(file, "stability_units", "1");
+    w.attr(file, "averaged", long(m.averaged));
+    w.attr(file, "averaged_units", "1");
     {
       const H5Writer::id p = w.group("/parameters");
       w.attr_with_units(p, "radius", m.base.scene.radius, "m");
@@ -223,6 +252,9 @@ NsMap read_ns_map_hdf5(const std::string& path) {
   m.base.source_text = text;
   m.shard = int(f.attr_int("/", "shard"));
   m.shards = int(f.attr_int("/", "shards"));
+  // Files written before these attributes existed: unknown (merge then asks every shard to be alike).
+  m.stability_method = f.has_attr("/", "stability") ? f.attr_string("/", "stability") : "";
+  m.averaged = !f.has_attr("/", "averaged") || f.attr_int("/", "averaged") != 0;
   m.n_theta = int(f.attr_int("/parameters", "n_theta"));
   m.n_r = int(f.attr_int("/parameters", "n_r"));
   m.outer_over_a = f.attr_double("/parameters", "outer_radius");
@@ -258,6 +290,11 @@ NsMap merge_ns_maps(const std::vector<NsMap>& shards, const std::vector<std::str
       throw std::runtime_error(
           fmt::format("merge: {} ({} × {}, R/a {:g}) and {} ({} × {}, R/a {:g}) have different grids",
                       paths[0], a.n_theta, a.n_r, a.outer_over_a, name, s.n_theta, s.n_r, s.outer_over_a));
+    if (s.stability_method != a.stability_method || s.averaged != a.averaged)
+      throw std::runtime_error(fmt::format(
+          "merge: {} ({}) and {} ({}) decided stability differently: compute every shard with the same "
+          "--stability and --steady-only",
+          paths[0], stability_text(a), name, stability_text(s)));
     if (s.alphas != a.alphas || s.reynolds != a.reynolds)
       throw std::runtime_error(fmt::format("merge: {} and {} map different α or Re values", paths[0], name));
     if (s.shards != a.shards)

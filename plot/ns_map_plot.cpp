@@ -2,12 +2,22 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <map>
 
 namespace magnus {
 
 void plot_ns_map(const NsMap& m, const std::string& png, PlotSize size) {
+  const bool any = std::any_of(m.points.begin(), m.points.end(), [](const NsMapPoint& p) { return std::isfinite(p.ratio); });
+  if (!any)
+    throw std::runtime_error(fmt::format(
+        "{}: nothing to draw: S/(2πρa^2) = C_L/C_L,ideal is undefined at every point of this map ({})", png,
+        std::all_of(m.alphas.begin(), m.alphas.end(), [](double a) { return a == 0.0; })
+            ? "α = 0: the ideal lift is 0"
+            : "no point has a lift"));
+  const bool by_re = m.continued_in_re();
   static const Colour cycle[] = {Colour::blue,   Colour::red,   Colour::green, Colour::purple,
                                  Colour::orange, Colour::teal,  Colour::brown, Colour::magenta,
                                  Colour::olive,  Colour::black, Colour::grey};
@@ -15,14 +25,14 @@ void plot_ns_map(const NsMap& m, const std::string& png, PlotSize size) {
   std::vector<PointSet> averaged;
   for (const auto& p : m.points) {
     if (!std::isfinite(p.ratio)) continue;
-    PointSet& s = rows[p.row];
+    PointSet& s = rows[by_re ? 0 : p.row];
     if (s.label.empty()) {
-      s.label = fmt::format("Re {:g}", p.reynolds);
+      s.label = by_re ? fmt::format("α {:g}", p.alpha) : fmt::format("Re {:g}", p.reynolds);
       s.colour = cycle[size_t(p.row) % (sizeof cycle / sizeof cycle[0])];
       s.joined = true;
       s.marker = 0;
     }
-    s.points.push_back({p.alpha, p.ratio});
+    s.points.push_back({by_re ? p.reynolds : p.alpha, p.ratio});
   }
   PointSet avg;
   avg.label = "time-averaged";
@@ -31,14 +41,14 @@ void plot_ns_map(const NsMap& m, const std::string& png, PlotSize size) {
   for (const auto& p : m.points)
     if (std::isfinite(p.ratio) &&
         (p.source == MapSource::averaged_unstable || p.source == MapSource::averaged_no_steady))
-      avg.points.push_back({p.alpha, p.ratio});
+      avg.points.push_back({by_re ? p.reynolds : p.alpha, p.ratio});
   std::vector<PointSet> sets;
   for (auto& [r, s] : rows) sets.push_back(std::move(s));
   if (!avg.points.empty()) sets.push_back(std::move(avg));
   CurvePage page;
   page.title =
       fmt::format("{}: S/(2πρa^2) = C_L/C_L,ideal (n_θ {} × n_r {})", m.base.title, m.n_theta, m.n_r);
-  page.xlabel = "spin ratio α = aω/U";
+  page.xlabel = by_re ? "Reynolds number Re = U·2a/ν" : "spin ratio α = aω/U";
   page.ylabel = "S/(2πρa^2) = C_L / (−2πα)";
   const std::vector<LineCurve> lines;
   plot_curves(page, lines, sets, png, size);

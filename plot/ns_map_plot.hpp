@@ -8,7 +8,8 @@
 namespace magnus {
 
 /// One joined point set per Re row (colours cycle): ● steady points, ○ time-averaged ones; points without
-/// a ratio (α = 0, undefined) are left out. Throws std::runtime_error when nothing is drawable.
+/// a ratio (α = 0, undefined) are left out. A map of one α continued in Re is one curve against Re.
+/// Throws std::runtime_error (one line saying why) when no point has a ratio.
 void plot_ns_map(const NsMap& m, const std::string& png, PlotSize size = {});
 
 }  // namespace magnus

@@ -91,9 +91,15 @@ struct Row {
   }
 };
 
-/// The first steady state of a row at (Re, α): Newton from the potential flow, else a ramp in Re from a
-/// low Reynolds number (each its own Newton solve).
-bool start_state(Row& row, const NsParams& p, double alpha, std::vector<double>& x, int& steps) {
+/// The first steady state of a row at (Re, α): Newton from `guess` (the previous row's state, when the map
+/// is continued in Re), else from the potential flow, else a ramp in Re from a low Reynolds number (each
+/// its own Newton solve).
+bool start_state(Row& row, const NsParams& p, double alpha, const NsState* guess, std::vector<double>& x,
+                 int& steps) {
+  if (guess) {
+    x = row.jac.pack(*guess);
+    if (row.newton(x, alpha, steps)) return true;
+  }
   x = row.jac.pack(potential_guess(p, row.jac.grid()));
   if (row.newton(x, alpha, steps)) return true;
   const double re = p.reynolds();
@@ -126,12 +132,15 @@ NsMapPoint blank_point(const Case& base, int row, int col, double re, double alp
   m.row = row, m.column = col, m.reynolds = re, m.alpha = alpha;
   m.cl = m.cd = m.cm = m.cl_steady = m.cd_steady = m.cm_steady = kNaN;
   m.cl_pressure = m.cl_friction = m.cd_pressure = m.cd_friction = m.strouhal = kNaN;
-  m.cl_ideal = exact_flow(map_point_case(base, re, alpha).scene).cl();
+  m.cl_ideal = exact_flow(map_point_case(base, re, alpha).scene).cl() + 0.0;  // + 0.0: no −0 at α = 0
   m.ratio = kNaN;
   return m;
 }
 
-/// The reported figures: steady when stable (or undecided), else the time average of run_viscous.
+/// The reported figures: steady when stable (or undecided); else what the flow does when it is marched
+/// in time from rest: the time average of a shedding wake, or the steady state it settles on. The march
+/// starts at once: a Newton solve from the potential flow (time.mode = "auto") may land on another steady
+/// state than the continued one and would report that as the point's average without marching.
 void finish_point(const Case& base, const NsMapOptions& o, NsMapPoint& m) {
   if (m.converged && m.stable != std::optional<bool>(false)) {
     m.source = MapSource::steady;
@@ -142,18 +151,24 @@ void finish_point(const Case& base, const NsMapOptions& o, NsMapPoint& m) {
     c.time.checkpoint_interval = 0.0;
     c.output.snapshots = 0;
     c.output.fields = std::vector<std::string>{};
-    const FlowResult r = run_viscous(c);
+    ViscousHooks marching;
+    marching.march_at_once = true;
+    const FlowResult r = run_viscous(c, marching);
     const ViscousPart& v = *r.viscous;
-    m.source = m.converged ? MapSource::averaged_unstable : MapSource::averaged_no_steady;
+    m.source = v.steady      ? MapSource::marched_steady
+               : m.converged ? MapSource::averaged_unstable
+                             : MapSource::averaged_no_steady;
     m.cl = v.cl_mean.value_or(kNaN), m.cd = v.cd_mean.value_or(kNaN), m.cm = v.cm_mean.value_or(kNaN);
     m.strouhal = v.strouhal.value_or(kNaN);
   }
   if (std::isfinite(m.cl) && m.cl_ideal != 0.0) m.ratio = m.cl / m.cl_ideal;
 }
 
-/// One row: continuation along α (sequential).
+/// One row: continuation along α (sequential). guess: a steady state to start the row's first point from
+/// (the previous row's, continuing in Re); first: set to the first point's steady state when it converged.
 std::vector<NsMapPoint> solve_row(const Case& base, const NsMapOptions& o, int row, double re,
-                                  const std::function<void(const NsMapPoint&)>& done) {
+                                  const std::function<void(const NsMapPoint&)>& done,
+                                  const NsState* guess = nullptr, std::optional<NsState>* first = nullptr) {
   const std::vector<double>& al = o.alphas;
   const Case c0 = map_point_case(base, re, al.front());
   const NsParams p0 = ns_params(c0);
@@ -174,7 +189,7 @@ std::vector<NsMapPoint> solve_row(const Case& base, const NsMapOptions& o, int r
     std::vector<double> x;
     if (!have1) {
       // The first point, or a restart after the branch was lost (the row's Jacobian shifts to any α).
-      m.converged = start_state(R, p, al[k], x, m.newton_steps);
+      m.converged = start_state(R, p, al[k], k == 0 ? guess : nullptr, x, m.newton_steps);
     } else {
       x = x1;
       if (have2 && a1 != a2)
@@ -215,6 +230,7 @@ std::vector<NsMapPoint> solve_row(const Case& base, const NsMapOptions& o, int r
     if (m.converged) {
       const NsState s = R.jac.unpack(x);
       set_forces(m, p, g, rho, s);
+      if (k == 0 && first) *first = s;
       if (o.stability) m.stable = o.stability(p, s);
       x2 = std::move(x1), a2 = a1, have2 = have1;
       x1 = R.jac.pack(s), a1 = al[k], have1 = true;
@@ -239,6 +255,8 @@ const char* to_string(MapSource s) {
       return "time-averaged (steady state unstable)";
     case MapSource::averaged_no_steady:
       return "time-averaged (no steady state found)";
+    case MapSource::marched_steady:
+      return "steady, reached by marching from rest (another state than the continued one)";
     case MapSource::none:
       break;
   }
@@ -338,6 +356,8 @@ NsMap ns_map(const Case& c, const NsMapOptions& o) {
       throw std::invalid_argument(fmt::format("--reynolds: Re = {:g} must be > 0", re));
   const std::vector<int> rows = shard_rows(int(map.reynolds.size()), o.shard, o.shards);
   map.shard = o.shard, map.shards = o.shards;
+  map.stability_method = o.stability ? o.stability_method : "none";
+  map.averaged = o.average_unstable && bool(o.stability);
   const NsParams p = ns_params(c);
   const PolarGrid g = ns_grid(p);
   map.n_theta = g.n_theta, map.n_r = g.n_r, map.outer_over_a = p.outer_over_a;
@@ -352,19 +372,36 @@ NsMap ns_map(const Case& c, const NsMapOptions& o) {
     std::lock_guard<std::mutex> lock(mu);
     o.on_point(m);
   };
-  auto work = [&] {
-    for (size_t i; (i = next++) < rows.size();) {
+  if (map.continued_in_re()) {
+    // One spin ratio, several Re: one branch continued in Re, each row starting from the previous one's
+    // steady state (sequential, so one thread).
+    map.threads = 1;
+    std::optional<NsState> state;
+    for (size_t i = 0; i < rows.size(); ++i) {
+      std::optional<NsState> first;
       try {
-        results[i] = solve_row(c, o, rows[i], map.reynolds[size_t(rows[i])], done);
+        results[i] = solve_row(c, o, rows[i], map.reynolds[size_t(rows[i])], done, state ? &*state : nullptr,
+                               &first);
       } catch (const std::exception& e) {
         errors[i] = fmt::format("Re = {:g}: {}", map.reynolds[size_t(rows[i])], e.what());
       }
+      if (first) state = std::move(first);
     }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < map.threads; ++t) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
+  } else {
+    auto work = [&] {
+      for (size_t i; (i = next++) < rows.size();) {
+        try {
+          results[i] = solve_row(c, o, rows[i], map.reynolds[size_t(rows[i])], done);
+        } catch (const std::exception& e) {
+          errors[i] = fmt::format("Re = {:g}: {}", map.reynolds[size_t(rows[i])], e.what());
+        }
+      }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < map.threads; ++t) pool.emplace_back(work);
+    work();
+    for (auto& t : pool) t.join();
+  }
   for (const auto& e : errors)
     if (!e.empty()) throw std::runtime_error(e);
   for (auto& r : results) map.points.insert(map.points.end(), r.begin(), r.end());

@@ -9,11 +9,14 @@
 // continuation (Keller) from the last converged point towards the target α; if the branch tangent's α
 // component changes sign on the way (a fold), the branch turns back before the target: the point is marked
 // (fold) and gets no steady state. Rows are independent: they run in parallel and are the unit of a shard.
+// A map of one spin ratio over several Re is one branch continued in Re instead: its rows run in order, each
+// starting from the previous row's steady state.
 //
 // Per point: steady forces (C_L, C_D, C_M and their pressure and friction parts), the ideal C_L = −2πα,
 // the ratio C_L/C_L,ideal = S/(2πρa²), and "stable" from a stability hook. A point whose steady state is
-// unstable (or that has none) gets the time-averaged C_L, C_D, C_M and St of run_viscous on its case
-// instead, and is marked so.
+// unstable (or that has none) is marched in time from rest (run_viscous on its case) and reports what the
+// march gives: the time-averaged C_L, C_D, C_M and St of a shedding wake, or the steady state the march
+// settles on, and is marked so.
 #include <functional>
 #include <optional>
 #include <string>
@@ -35,8 +38,16 @@ using StabilityHook = std::function<std::optional<bool>(const NsParams&, const N
 std::optional<bool> stability_by_marching(const NsParams& p, const NsState& steady, double span = 30.0,
                                           double margin = 2e-3);
 
-/// Where a map point's reported C_L, C_D, C_M come from.
-enum class MapSource { steady = 0, averaged_unstable = 1, averaged_no_steady = 2, none = 3 };
+/// Where a map point's reported C_L, C_D, C_M come from. A point whose continued steady state is unstable
+/// (or that has none) is marched in time from rest: the flow then sheds (time-averaged), or settles on a
+/// stable steady state of its own, another branch than the continued one (marched_steady).
+enum class MapSource {
+  steady = 0,
+  averaged_unstable = 1,
+  averaged_no_steady = 2,
+  none = 3,
+  marched_steady = 4
+};
 const char* to_string(MapSource);
 
 /// One point of the map. Undefined values are NaN.
@@ -65,7 +76,9 @@ struct NsMapOptions {
   int shard = 1, shards = 1;     ///< compute only rows r with r % shards == shard − 1
   int threads = 1;               ///< rows computed at once (std::thread)
   StabilityHook stability;       ///< empty: stable undefined (then no averaging either)
-  bool average_unstable = true;  ///< run_viscous at unstable points and points without a steady state
+  /// How `stability` decides, kept with the map: "eigenvalues", "march", or "none" (no hook).
+  std::string stability_method = "none";
+  bool average_unstable = true;  ///< march unstable points and points without a steady state from rest
   double newton_tol = 1e-10;     ///< scaled max-norm residual
   int newton_max = 12;           ///< Newton steps per solve before arclength takes over
   int max_arclength_steps = 40;  ///< per gap between two α
@@ -81,9 +94,14 @@ struct NsMap {
   double outer_over_a = 0.0;
   std::vector<double> alphas, reynolds;  ///< the whole map's axes
   int shard = 1, shards = 1;
+  std::string stability_method = "none";  ///< "eigenvalues", "march" or "none"; "" in files that predate it
+  bool averaged = true;                   ///< unstable points were marched (not --steady-only)
   std::vector<NsMapPoint> points;  ///< the computed rows, row-major (row, then column)
   int threads = 1;
   double total_s = 0.0;
+  /// One spin ratio and several Reynolds numbers: the branch is continued in Re (each row starts from the
+  /// previous row's steady state), not in α.
+  bool continued_in_re() const { return alphas.size() == 1 && reynolds.size() > 1; }
 };
 
 /// The case of one map point: the base with ω = αU/a and ν = U·2a/Re (flow.reynolds = Re).

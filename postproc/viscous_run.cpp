@@ -276,7 +276,9 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
 
   if (c.time.mode == TimeMode::steady) return steady_by_newton(c, p, g, resume);
   AutoChoice choice;
-  if (c.time.mode == TimeMode::automatic && !resume) {
+  if (c.time.mode == TimeMode::automatic && hooks.march_at_once)
+    choice.why = "auto: marched in time (asked to march at once); ";
+  else if (c.time.mode == TimeMode::automatic && !resume) {
     choice = auto_steady(c, p, g);
     if (choice.steady) return std::move(*choice.steady);
   }

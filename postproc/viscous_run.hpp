@@ -25,6 +25,9 @@ struct ViscousHooks {
   /// Every time.checkpoint_interval (convective units) of simulated time, and when a run is interrupted
   /// (not when it fails: the last good checkpoint stays).
   std::function<void(const Checkpoint&)> on_checkpoint;
+  /// time.mode = "auto" marches at once, without its Newton solve and stability test: the caller (the
+  /// S map) already knows that the steady state Newton would find is unstable, or that there is none.
+  bool march_at_once = false;
 };
 
 /// Throws std::invalid_argument (one line naming the key) for a case the model refuses: time.dt above the
