@@ -20,7 +20,7 @@ struct MergeOptions {
 
 void command_merge(const MergeOptions& o) {
   check_distinct_paths(o.shards, {o.output});
-  check_writable(o.output);
+  check_file_writable(o.output, "the merged HDF5 sweep file");
   std::vector<NsMap> maps;
   for (const auto& p : o.shards) maps.push_back(read_ns_map_hdf5(p));
   const NsMap m = merge_ns_maps(maps, o.shards);

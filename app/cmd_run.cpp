@@ -34,9 +34,13 @@ void command_run(const std::string& case_path, const std::string& output,
   }
   // Fail before solving, not after: the result, its sidecar, and neither overwriting the case.
   check_distinct_paths({case_path}, {c.output.file, xdmf_path(c.output.file)});
-  check_writable(c.output.file);
+  check_file_writable(c.output.file, "the HDF5 result");
   check_writable(xdmf_path(c.output.file));
   if (c.model == FlowModel::navier_stokes) {
+    if (max_bytes > 0)
+      throw std::runtime_error(
+          "--max-memory: only checked for potential flow (a navier-stokes run at the default grid needs about "
+          "35 MB; its Newton and stability solves are measured in the README)");
     check_writable(checkpoint_path(c.output.file));
     check_output_space(c, c.output.file);
     const FlowResult r = run_viscous_case(c, resume, quiet || json, threads);

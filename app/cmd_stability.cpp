@@ -2,8 +2,10 @@
 // The steady state's leading eigenvalues (growth rate, St; stable or not), or the critical spin ratio.
 #include <fmt/core.h>
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -18,11 +20,46 @@ namespace magnus {
 namespace {
 
 struct StabilityCliOptions {
-  std::string case_path, critical;
+  std::string case_path, critical, tolerance;
   std::vector<std::string> sets;
-  double tolerance = 0.01;
   bool json = false;
 };
+
+/// A finite number, the whole text; throws one line naming the option.
+double parse_number(const std::string& text, const std::string& option, const char* expected) {
+  size_t end = 0;
+  double v = 0.0;
+  try {
+    v = std::stod(text, &end);
+  } catch (const std::exception&) {
+    end = 0;
+  }
+  if (text.empty() || end != text.size() || !std::isfinite(v))
+    throw std::invalid_argument(fmt::format("{}: expected {}, got \"{}\"", option, expected, text));
+  return v;
+}
+
+/// --critical-spin A:B (finite, A < B) and --tolerance T (> 0, below B − A), checked before any solve.
+struct CriticalRange {
+  double A = 0.0, B = 0.0, tolerance = 0.01;
+};
+CriticalRange parse_critical(const StabilityCliOptions& o) {
+  CriticalRange r;
+  const size_t colon = o.critical.find(':');
+  if (colon == std::string::npos)
+    throw std::invalid_argument("--critical-spin: expected A:B (two spin ratios), got \"" + o.critical + "\"");
+  r.A = parse_number(o.critical.substr(0, colon), "--critical-spin", "A:B with two finite spin ratios");
+  r.B = parse_number(o.critical.substr(colon + 1), "--critical-spin", "A:B with two finite spin ratios");
+  if (!(r.A < r.B))
+    throw std::invalid_argument(fmt::format("--critical-spin {}: needs A < B", o.critical));
+  if (!o.tolerance.empty()) {
+    r.tolerance = parse_number(o.tolerance, "--tolerance", "a bracket width T > 0");
+    if (!(r.tolerance > 0.0) || !(r.tolerance < r.B - r.A))
+      throw std::invalid_argument(fmt::format(
+          "--tolerance {}: the bracket width must be > 0 and below B − A = {:g}", o.tolerance, r.B - r.A));
+  }
+  return r;
+}
 
 std::string eig_text(const std::complex<double>& l) {
   return fmt::format("{:+.5f} {:+.5f}i   St {:.4f}", l.real(), l.imag(), std::fabs(l.imag()) / (2.0 * M_PI));
@@ -36,6 +73,10 @@ Json eig_json(const StabilityResult& s) {
 }
 
 void command_stability(const StabilityCliOptions& o) {
+  if (o.critical.empty() && !o.tolerance.empty())
+    throw std::invalid_argument("--tolerance: only used with --critical-spin A:B (the bisection's bracket width)");
+  const std::optional<CriticalRange> range =
+      o.critical.empty() ? std::nullopt : std::optional<CriticalRange>(parse_critical(o));
   const Case c = load_case(o.case_path, o.sets);
   if (c.model != FlowModel::navier_stokes)
     throw std::runtime_error(o.case_path + ": magnus stability needs model.flow = \"navier-stokes\"");
@@ -63,18 +104,8 @@ void command_stability(const StabilityCliOptions& o) {
     j = {{"reynolds", p.reynolds()}, {"spin_ratio", alpha}, {"stable", st.stable}, {"eigenvalues", eig_json(st)},
          {"seconds", s.newton_seconds + st.seconds}, {"solves", st.solves}};
   } else {
-    const size_t colon = o.critical.find(':');
-    double A = 0.0, B = 0.0;
-    try {
-      if (colon == std::string::npos) throw std::invalid_argument("");
-      size_t ea = 0, eb = 0;
-      const std::string sa = o.critical.substr(0, colon), sb = o.critical.substr(colon + 1);
-      A = std::stod(sa, &ea), B = std::stod(sb, &eb);
-      if (ea != sa.size() || eb != sb.size()) throw std::invalid_argument("");
-    } catch (const std::exception&) {
-      throw std::invalid_argument("--critical-spin: expected A:B (two spin ratios), got \"" + o.critical + "\"");
-    }
-    const CriticalSpin cs = critical_spin(p, A, B, o.tolerance, [&](const SpinStability& s) {
+    const double A = range->A, B = range->B;
+    const CriticalSpin cs = critical_spin(p, A, B, range->tolerance, [&](const SpinStability& s) {
       if (!o.json)
         std::fprintf(stderr, "  α = %-9.5g growth rate %+.5f U/D  (%s)\n", s.alpha, s.growth(),
                      s.growth() < 0.0 ? "stable" : "unstable");
@@ -109,8 +140,7 @@ void add_stability_command(CLI::App& app) {
   cmd->add_option("case", o->case_path, "case file (TOML, model.flow = \"navier-stokes\")")->required();
   cmd->add_option("--set", o->sets, "override a case key: section.key=value (repeatable)");
   cmd->add_option("--critical-spin", o->critical, "bisect on the growth rate over spin ratios A:B");
-  cmd->add_option("--tolerance", o->tolerance, "bracket width of the critical spin ratio (default 0.01)")
-      ->check(CLI::PositiveNumber);
+  cmd->add_option("--tolerance", o->tolerance, "bracket width of the critical spin ratio (default 0.01)");
   cmd->add_flag("--json", o->json, "print one JSON object instead of the table");
   cmd->callback([o] { command_stability(*o); });
 }

@@ -31,6 +31,8 @@ SpinStability spin_stability(const NsParams& base, double alpha, const NsState* 
 
 CriticalSpin critical_spin(const NsParams& p, double A, double B, double tol,
                            const std::function<void(const SpinStability&)>& progress) {
+  if (!std::isfinite(A) || !std::isfinite(B))
+    throw std::invalid_argument(fmt::format("--critical-spin A:B needs finite spin ratios (got {}:{})", A, B));
   if (!(A < B)) throw std::invalid_argument(fmt::format("--critical-spin A:B needs A < B (got {}:{})", A, B));
   if (!(tol > 0.0)) throw std::invalid_argument(fmt::format("--tolerance must be > 0 (got {})", tol));
   const auto t0 = std::chrono::steady_clock::now();
