@@ -19,7 +19,7 @@ namespace magnus {
 namespace {
 
 /// magnus bench on a navier-stokes case: the cost of a time step on a ladder of grids, split into its parts.
-void bench_viscous(const Case& c, std::vector<int> ladder, int steps, const std::string& case_path,
+void bench_viscous(const Case& c, std::vector<int> ladder, int steps, int threads, const std::string& case_path,
                    const std::string& csv, const std::string& plot) {
   if (!plot.empty())
     throw std::runtime_error("--plot: a navier-stokes bench has no error to plot (its table is the step cost)");
@@ -28,13 +28,17 @@ void bench_viscous(const Case& c, std::vector<int> ladder, int steps, const std:
   if (ladder.empty()) ladder = {c.grid.n_theta / 2 + (c.grid.n_theta / 2) % 2, c.grid.n_theta, 2 * c.grid.n_theta};
   for (int n : ladder)
     if (n % 2) throw std::runtime_error(fmt::format("--ladder: n_theta = {} must be even", n));
-  const auto rows = run_ns_bench(c, ladder, steps);
-  std::printf("magnus bench — %s (navier-stokes, Re = %.6g, α = %.6g; %d timed steps per grid from the start, "
-              "one thread; ms per step and share)\n",
-              c.title.c_str(), c.scene.reynolds(), c.scene.spin_ratio(), steps);
-  std::fputs(ns_bench_table(rows).c_str(), stdout);
-  std::puts("(The error of a whole run against published values, and its wall time, is the README's validation "
-            "table: ctest -L validation.)");
+  const auto rows = run_ns_bench(c, ladder, steps, 20, threads);
+  // With --csv - the CSV alone goes to standard output, the table to standard error.
+  std::FILE* table = is_stdout(csv) ? stderr : stdout;
+  std::fprintf(table,
+               "magnus bench — %s (navier-stokes, Re = %.6g, α = %.6g; %d timed steps per grid from the start, "
+               "%d thread%s; ms per step and share)\n",
+               c.title.c_str(), c.scene.reynolds(), c.scene.spin_ratio(), steps, threads, threads == 1 ? "" : "s");
+  std::fputs(ns_bench_table(rows).c_str(), table);
+  std::fputs("(The error of a whole run against published values, and its wall time, is the README's validation "
+             "table: ctest -L validation.)\n",
+             table);
   if (!csv.empty()) write_text_output(csv, ns_bench_csv(rows));
 }
 
@@ -50,6 +54,8 @@ void add_bench_command(CLI::App& app) {
   };
   auto o = std::make_shared<Options>();
   auto* b = app.add_subcommand("bench", "speed against error: a ladder of grids for each solver and stencil");
+  // Options of one model only: given to the other, they are refused rather than ignored.
+  static const char* const potential_only[] = {"--repeats", "--method", "--stencil", "--cholmod-max-unknowns"};
   b->add_option("case", o->case_path, "case file (TOML)")->required();
   b->add_option("--set", o->sets, "override a case key: section.key=value (repeatable)");
   b->add_option("--ladder", o->ladder, "n_theta of each rung (default 32,64,…,1024)")
@@ -69,12 +75,20 @@ void add_bench_command(CLI::App& app) {
   b->add_option("--steps", o->steps, "navier-stokes: timed steps per rung (default 200)")->check(CLI::Range(1, 1000000));
   b->add_option("--csv", o->csv, "write the table as CSV");
   b->add_option("--plot", o->plot, "write a log-log PNG of C_L error against time (the Pareto front)");
-  b->callback([o] {
+  b->callback([o, b] {
     const Case c = load_case(o->case_path, o->sets);
     if (c.model == FlowModel::navier_stokes) {
-      bench_viscous(c, o->ladder, o->steps, o->case_path, o->csv, o->plot);
+      for (const char* k : potential_only)
+        if (b->count(k))
+          throw std::runtime_error(fmt::format(
+              "{}: only used by a potential-flow bench ({} is navier-stokes: its bench times the steps)", k,
+              o->case_path));
+      bench_viscous(c, o->ladder, o->steps, usable_threads(o->threads), o->case_path, o->csv, o->plot);
       return;
     }
+    if (b->count("--steps"))
+      throw std::runtime_error(
+          fmt::format("--steps: only used by a navier-stokes bench ({} is potential flow)", o->case_path));
     BenchOptions opt;
     if (!o->ladder.empty()) opt.ladder = o->ladder;
     for (int n : opt.ladder)
@@ -93,7 +107,7 @@ void add_bench_command(CLI::App& app) {
     opt.cholmod_max_unknowns = o->cholmod_max;
     check_distinct_paths({o->case_path}, {o->csv, o->plot});
     if (!o->csv.empty()) check_writable(o->csv);
-    if (!o->plot.empty()) check_writable(o->plot);
+    if (!o->plot.empty()) check_file_writable(o->plot, "the PNG plot");
     const bool tty = ::isatty(2);
     auto progress = [tty](const std::string& text) {
       if (tty) std::fprintf(stderr, "\r\033[K%s", text.c_str());
@@ -104,10 +118,11 @@ void add_bench_command(CLI::App& app) {
       throw std::runtime_error(
           "bench: no rung ran (the 9-point stencil needs geometric spacing, or every CHOLMOD "
           "rung is above --cholmod-max-unknowns)");
-    std::printf("magnus bench — %s (α = %.6g, far field %s, %d thread%s, median of %d)\n", c.title.c_str(),
+    std::FILE* table = is_stdout(o->csv) ? stderr : stdout;  // --csv -: the CSV alone on standard output
+    std::fprintf(table, "magnus bench — %s (α = %.6g, far field %s, %d thread%s, median of %d)\n", c.title.c_str(),
                 c.scene.spin_ratio(), to_string(c.grid.far_field), opt.threads, opt.threads == 1 ? "" : "s",
                 opt.repeats);
-    std::fputs(bench_table(rows).c_str(), stdout);
+    std::fputs(bench_table(rows).c_str(), table);
     if (!o->csv.empty()) write_text_output(o->csv, bench_csv(rows));
     if (!o->plot.empty()) {
       // One joined point set per method and stencil; the legend goes beside the plot, off the data.

@@ -7,11 +7,13 @@
 
 namespace magnus {
 
-std::vector<NsBenchRow> run_ns_bench(const Case& c, const std::vector<int>& ladder, int steps, int warmup) {
+std::vector<NsBenchRow> run_ns_bench(const Case& c, const std::vector<int>& ladder, int steps, int warmup,
+                                     int threads) {
   using clock = std::chrono::steady_clock;
   std::vector<NsBenchRow> rows;
   for (int n : ladder) {
     NsParams p = ns_params(c);
+    p.threads = threads;
     p.n_theta = n;
     const PolarGrid g = ns_grid(p);
     NsState cur = impulsive_start(p, g), nxt;

@@ -20,7 +20,8 @@ struct NsBenchRow {
 };
 
 /// For each n_θ of the ladder (the case's radial refinement and R kept): `warmup` untimed steps, then `steps`
-/// timed ones, forces evaluated after each as in a run.
-std::vector<NsBenchRow> run_ns_bench(const Case& c, const std::vector<int>& ladder, int steps, int warmup = 20);
+/// timed ones, forces evaluated after each as in a run, on `threads` threads (advection and mode solves).
+std::vector<NsBenchRow> run_ns_bench(const Case& c, const std::vector<int>& ladder, int steps, int warmup = 20,
+                                     int threads = 1);
 
 }  // namespace magnus

@@ -1,0 +1,220 @@
+// The S(Re, α) map's command line beyond shards: --reynolds alone (one branch continued in Re), what an
+// unstable point reports, merge refusing shards that decided stability differently, the plot refused
+// before solving when nothing would be drawable, and `magnus stability` with its refusals.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "io/ns_sweep_file.hpp"
+#include "support.hpp"
+
+using namespace magnus;
+using namespace magnus::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string s_map = std::string(MAGNUS_SOURCE_DIR) + "/cases/s_map.toml";
+
+void write_case(const std::string& path, int n_theta, double alpha) {
+  std::ofstream(path)
+      << "title = \"coarse map\"\n[model]\nflow = \"navier-stokes\"\n[cylinder]\nradius = 0.5\n"
+         "spin_ratio = "
+      << alpha
+      << "\n[flow]\nspeed = 1.0\ndensity = 1.0\nreynolds = 20.0\n[domain]\n"
+         "outer_radius = 20.0\n[grid]\nn_theta = "
+      << n_theta << "\n";
+}
+
+bool one_line(const std::string& s) { return !s.empty() && s.find('\n') == s.size() - 1; }
+
+}  // namespace
+
+TEST_CASE("navier-stokes sweep --reynolds alone: the case's α continued in Re, the states of separate solves",
+          "[app][sweep]") {
+  const std::string dir = temp_dir("ns-sweep-re");
+  write_case(dir + "/c.toml", 32, 1.0);
+  const Outcome o = magnus_cmd({"sweep", dir + "/c.toml", "--reynolds", "20:60:20", "--steady-only", "-o",
+                                dir + "/re.h5", "--plot", dir + "/re.png"},
+                               dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  CHECK(o.out.find("continued in Re at α = 1") != std::string::npos);
+  CHECK(fs::file_size(dir + "/re.png") > 10000);  // S against Re, one curve
+  // The same points as rows of a map, each row started from the potential flow.
+  REQUIRE(magnus_cmd({"sweep", dir + "/c.toml", "--spin-ratio", "1:1:1", "--reynolds", "20:60:20",
+                      "--steady-only", "-q", "-o", dir + "/map.h5"},
+                     dir)
+              .status == 0);
+  const NsMap re = read_ns_map_hdf5(dir + "/re.h5"), map = read_ns_map_hdf5(dir + "/map.h5");
+  CHECK(re.continued_in_re());
+  REQUIRE(re.points.size() == 3);
+  REQUIRE(map.points.size() == 3);
+  for (size_t i = 0; i < 3; ++i) {
+    INFO("Re " << re.points[i].reynolds);
+    CHECK(re.points[i].alpha == 1.0);
+    CHECK(re.points[i].reynolds == 20.0 * double(i + 1));
+    REQUIRE(re.points[i].converged);
+    // One steady state, reached from two starts: equal to Newton's tolerance.
+    CHECK(re.points[i].cl_steady == Approx(map.points[i].cl_steady).epsilon(1e-8));
+    CHECK(re.points[i].cd_steady == Approx(map.points[i].cd_steady).epsilon(1e-8));
+  }
+  // A potential case has no Reynolds number to sweep.
+  const Outcome p = magnus_cmd({"sweep", std::string(MAGNUS_SOURCE_DIR) + "/cases/spin_ratio_1.toml",
+                                "--reynolds", "20:60:20", "-o", dir + "/p.h5"},
+                               dir);
+  CHECK(p.status != 0);
+  CHECK(one_line(p.err));
+  CHECK(p.err.find("--reynolds alone sweeps a navier-stokes case") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir + "/p.h5"));
+}
+
+TEST_CASE("navier-stokes map: an unstable point is marched from rest and says what the march found",
+          "[app][sweep]") {
+  // Re 100 on the map's grid: at α = 5.1 the continued steady state is unstable and the march sheds; at
+  // α = 5.4 the continued state is unstable too, but the march from rest settles on another, stable steady
+  // state (the one magnus run finds from the potential flow), and the point says so.
+  const std::string dir = temp_dir("ns-map-march");
+  const Outcome o = magnus_cmd({"sweep", s_map, "--spin-ratio", "4.8:5.4:0.3", "--reynolds", "100:100:1", "-q",
+                                "-o", dir + "/m.h5"},
+                               dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  const NsMap m = read_ns_map_hdf5(dir + "/m.h5");
+  REQUIRE(m.points.size() == 3);
+  CHECK(m.stability_method == "eigenvalues");
+  const NsMapPoint &a = m.points[0], &b = m.points[1], &c = m.points[2];
+  CHECK(a.source == MapSource::steady);
+  CHECK(a.stable == std::optional<bool>(true));
+  CHECK(b.stable == std::optional<bool>(false));
+  CHECK(b.source == MapSource::averaged_unstable);
+  CHECK(b.strouhal > 0.05);
+  CHECK(c.stable == std::optional<bool>(false));
+  REQUIRE(c.source == MapSource::marched_steady);
+  CHECK(std::isnan(c.strouhal));
+  CHECK(std::fabs(c.cl - c.cl_steady) > 0.005 * std::fabs(c.cl_steady));  // not the continued state (1% apart)
+  const Outcome r = magnus_cmd({"run", s_map, "--set", "cylinder.spin_ratio=5.4", "-o", dir + "/r.h5", "--json"},
+                               dir);
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(c.cl == Approx(j["forces"]["cl"]["value"].get<double>()).epsilon(1e-4));
+}
+
+TEST_CASE("navier-stokes merge: shards that decided stability differently are refused", "[app][merge]") {
+  const std::string dir = temp_dir("ns-merge-stability");
+  write_case(dir + "/c.toml", 32, 0.0);
+  const std::vector<std::string> map = {"sweep", dir + "/c.toml", "--spin-ratio", "1:2:1", "--reynolds",
+                                        "20:40:20", "-q"};
+  auto shard = [&](const std::string& k, const std::string& out, std::vector<std::string> extra) {
+    std::vector<std::string> a = map;
+    a.insert(a.end(), {"--shard", k, "-o", dir + "/" + out});
+    a.insert(a.end(), extra.begin(), extra.end());
+    return magnus_cmd(a, dir).status;
+  };
+  REQUIRE(shard("1/2", "s1.h5", {}) == 0);
+  REQUIRE(shard("2/2", "steady.h5", {"--steady-only"}) == 0);
+  REQUIRE(shard("2/2", "march.h5", {"--stability", "march"}) == 0);
+  REQUIRE(shard("2/2", "s2.h5", {}) == 0);
+  for (const std::string other : {"steady.h5", "march.h5"}) {
+    const Outcome b = magnus_cmd({"merge", dir + "/bad.h5", dir + "/s1.h5", dir + "/" + other}, dir);
+    INFO(other << ": " << b.err);
+    CHECK(b.status != 0);
+    CHECK(one_line(b.err));
+    CHECK(b.err.find("decided stability differently") != std::string::npos);
+    CHECK_FALSE(fs::exists(dir + "/bad.h5"));
+  }
+  CHECK(magnus_cmd({"merge", dir + "/good.h5", dir + "/s1.h5", dir + "/s2.h5"}, dir).status == 0);
+}
+
+TEST_CASE("navier-stokes sweep: nothing drawable or '-' for a binary output is refused before solving",
+          "[app][sweep]") {
+  const std::string dir = temp_dir("ns-sweep-refuse");
+  write_case(dir + "/c.toml", 32, 0.0);
+  struct Bad {
+    std::vector<std::string> args;
+    const char* expect;
+  };
+  const std::string c = dir + "/c.toml";
+  for (const Bad& b : {Bad{{"sweep", c, "--spin-ratio", "0:0:1", "--reynolds", "20:40:20", "--csv", dir + "/o.csv",
+                            "-o", dir + "/o.h5", "--plot", dir + "/o.png"},
+                           "undefined at α = 0"},
+                       Bad{{"sweep", c, "--spin-ratio", "0:1:1", "-o", "-"}, "cannot go to standard output"},
+                       Bad{{"sweep", c, "--spin-ratio", "0:1:1", "--plot", "-"}, "cannot go to standard output"},
+                       Bad{{"run", c, "-o", "-"}, "cannot go to standard output"},
+                       Bad{{"merge", "-", dir + "/x.h5"}, "cannot go to standard output"}}) {
+    const Outcome o = magnus_cmd(b.args, dir);
+    INFO(b.args[0] << " " << b.args.back() << ": " << o.err);
+    CHECK(o.status != 0);
+    CHECK(one_line(o.err));
+    CHECK(o.err.find(b.expect) != std::string::npos);
+    CHECK(o.err.find("magnus: Re") == std::string::npos);  // refused before any point was solved
+  }
+  for (const char* f : {"o.csv", "o.h5", "o.png", "-", "-.xmf"}) CHECK_FALSE(fs::exists(dir + "/" + f));
+}
+
+TEST_CASE("magnus stability: the eigenvalues, the critical spin ratio, and refusals before solving",
+          "[app][stability]") {
+  const std::string dir = temp_dir("ns-stability-cli");
+  // Re 60, α 1.5 on the map's grid: the wake's pair grows (unstable); bisection brackets the critical α.
+  Outcome o = magnus_cmd({"stability", s_map, "--set", "flow.reynolds=60", "--set", "cylinder.spin_ratio=1.5",
+                          "--json"},
+                         dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  auto j = nlohmann::json::parse(o.out);
+  CHECK(j["stable"] == false);
+  const auto& lead = j["eigenvalues"][0];
+  CHECK(lead["growth_rate"].get<double>() > 0.0);
+  CHECK(lead["strouhal"].get<double>() == Approx(std::fabs(lead["frequency"].get<double>()) / (2.0 * M_PI)));
+  // Eigenvalues rightmost first.
+  for (size_t k = 1; k < j["eigenvalues"].size(); ++k)
+    CHECK(j["eigenvalues"][k]["growth_rate"].get<double>() <= j["eigenvalues"][k - 1]["growth_rate"].get<double>());
+
+  o = magnus_cmd({"stability", s_map, "--set", "flow.reynolds=60", "--critical-spin", "1.4:1.9", "--tolerance",
+                  "0.05", "--json"},
+                 dir);
+  REQUIRE(o.status == 0);
+  j = nlohmann::json::parse(o.out);
+  const double lo = j["bracket"][0], hi = j["bracket"][1], ac = j["critical_spin_ratio"];
+  CHECK(hi - lo <= 0.05);
+  CHECK((lo <= ac && ac <= hi));
+  CHECK((1.4 < lo && hi < 1.9));
+  CHECK(j["at_a"]["stable"] == false);  // sheds below the threshold
+  CHECK(j["at_b"]["stable"] == true);   // steady above it
+
+  for (auto [args, expect] :
+       {std::pair{std::vector<std::string>{"--critical-spin", "0:inf"}, "two finite spin ratios"},
+        {std::vector<std::string>{"--critical-spin", "2:1"}, "needs A < B"},
+        {std::vector<std::string>{"--critical-spin", "1:2", "--tolerance", "0"}, "must be > 0"},
+        {std::vector<std::string>{"--critical-spin", "1:2", "--tolerance", "5"}, "below B − A"},
+        {std::vector<std::string>{"--tolerance", "0.1"}, "only used with --critical-spin"}}) {
+    std::vector<std::string> a = {"stability", s_map};
+    a.insert(a.end(), args.begin(), args.end());
+    const Outcome b = magnus_cmd(a, dir);
+    INFO(b.err);
+    CHECK(b.status != 0);
+    CHECK(one_line(b.err));
+    CHECK(b.err.find(expect) != std::string::npos);
+  }
+}
+
+TEST_CASE("navier-stokes bench: --csv - is the CSV alone, potential-only options are refused", "[app][bench]") {
+  const std::string dir = temp_dir("ns-bench-cli");
+  const Outcome o = magnus_cmd({"bench", s_map, "--ladder", "16", "--steps", "5", "--csv", "-"}, dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  CHECK(o.out.rfind("n_theta,", 0) == 0);                 // the CSV's header first
+  CHECK(o.out.find("magnus bench") == std::string::npos);  // the table went to standard error
+  CHECK(o.err.find("magnus bench") != std::string::npos);
+  for (const char* opt : {"--method=fft", "--stencil=9-point", "--repeats=3"}) {
+    const Outcome b = magnus_cmd({"bench", s_map, "--ladder", "16", opt}, dir);
+    INFO(opt << ": " << b.err);
+    CHECK(b.status != 0);
+    CHECK(one_line(b.err));
+    CHECK(b.err.find("only used by a potential-flow bench") != std::string::npos);
+  }
+}
