@@ -218,3 +218,22 @@ TEST_CASE("navier-stokes bench: --csv - is the CSV alone, potential-only options
     CHECK(b.err.find("only used by a potential-flow bench") != std::string::npos);
   }
 }
+
+TEST_CASE("navier-stokes auto run: an unstable steady state is marched and the result says why",
+          "[app][ns]") {
+  // Re 50, α 0.5 on the map's grid: Newton finds the steady state, its leading pair grows, so "auto"
+  // marches from rest to the shedding wake (periodic means, St), and keeps the eigenvalue it decided by.
+  const std::string dir = temp_dir("ns-auto-unstable");
+  const Outcome o = magnus_cmd({"run", s_map, "--set", "flow.reynolds=50", "--set", "cylinder.spin_ratio=0.5",
+                                "-o", dir + "/r.h5", "--json"},
+                               dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  const auto j = nlohmann::json::parse(o.out);
+  const std::string status = j["status"];
+  CHECK(status.find("auto: marched in time (the steady state is unstable") != std::string::npos);
+  CHECK(status.find("periodic means converged") != std::string::npos);
+  CHECK(j["forces"]["eigenvalue_real"]["value"].get<double>() > 0.0);
+  CHECK(j["forces"]["strouhal"]["value"].get<double>() > 0.08);
+  CHECK(j["forces"]["cl_amplitude"]["value"].get<double>() > 0.01);
+}
