@@ -223,8 +223,13 @@ std::string describe_sweep(const ResultFile& f) {
   std::string s;
   s += fmt::format("{}: magnus-sweep version {} (written by magnus {})\n", f.path(), f.version(),
                    f.has_attr("/", "software_version") ? f.attr_string("/", "software_version") : "?");
-  for (const char* k : {"title", "variable"})
+  for (const char* k : {"title", "model", "variable", "stability"})
     if (f.has_attr("/", k)) s += fmt::format("{}: {}\n", k, f.attr_string("/", k));
+  if (f.has_attr("/", "averaged"))
+    s += fmt::format("unstable points: {}\n", f.attr_int("/", "averaged") ? "marched from rest" : "not marched");
+  if (f.has_attr("/", "shards"))
+    s += fmt::format("shard: {} of {}\n", f.attr_int("/", "shard"), f.attr_int("/", "shards"));
+  if (f.has_attr("/", "case")) s += fmt::format("case (resolved):\n{}\n", f.attr_string("/", "case"));
   for (const auto& [g, heading] : {std::pair{"/parameters", "parameters"}, std::pair{"/timing", "timing"}}) {
     if (!f.has(g)) continue;
     s += fmt::format("\n{}\n", heading);

@@ -36,7 +36,10 @@ ResultFile::ResultFile(const std::string& path, const std::vector<std::string>& 
       fail(fmt::format("'{}' is not a magnus result: no 'format' attribute", path));
     format = attr_string("/", "format");
     if (std::find(formats.begin(), formats.end(), format) == formats.end())
-      fail(fmt::format("'{}' is not a magnus result: format is '{}'", path, format));
+      fail(format.rfind("magnus-", 0) == 0
+               ? fmt::format("'{}' is a {} file, not {}", path, format,
+                             formats.size() == 1 ? "a " + formats.front() + " file" : "of the kind this reads")
+               : fmt::format("'{}' is not a magnus result: format is '{}'", path, format));
     format_ = format;
   } catch (const std::exception&) {
     H5Fclose(id_);
