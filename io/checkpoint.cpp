@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "io/hdf5_io.hpp"
@@ -16,10 +17,65 @@ constexpr const char* kFormat = "magnus-checkpoint";
 /// The history's columns: name and member.
 const std::vector<std::pair<const char*, double ForceSample::*>>& history_columns() {
   static const std::vector<std::pair<const char*, double ForceSample::*>> c = {
-      {"t", &ForceSample::t},     {"cl", &ForceSample::C_L},  {"cd", &ForceSample::C_D},
-      {"cm", &ForceSample::C_M},  {"fx", &ForceSample::F_x},  {"fy", &ForceSample::F_y},
+      {"t", &ForceSample::t},     {"cl", &ForceSample::C_L}, {"cd", &ForceSample::C_D},
+      {"cm", &ForceSample::C_M},  {"fx", &ForceSample::F_x}, {"fy", &ForceSample::F_y},
       {"torque", &ForceSample::M}};
   return c;
+}
+
+/// The entries of a stored key "key=value key=value …", in order.
+std::vector<IdentityEntry> parse_key(const std::string& key) {
+  std::vector<IdentityEntry> out;
+  size_t b = 0;
+  while (b < key.size()) {
+    size_t e = key.find(' ', b);
+    if (e == std::string::npos) e = key.size();
+    const std::string item = key.substr(b, e - b);
+    const size_t eq = item.find('=');
+    if (eq != std::string::npos) out.push_back({item.substr(0, eq), item.substr(eq + 1)});
+    b = e + 1;
+  }
+  return out;
+}
+
+/// Whether two values of one parameter agree: as numbers when both read as numbers, else as text.
+bool same_value(const std::string& a, const std::string& b) {
+  char *ea = nullptr, *eb = nullptr;
+  const double x = std::strtod(a.c_str(), &ea), y = std::strtod(b.c_str(), &eb);
+  if (!a.empty() && !b.empty() && *ea == '\0' && *eb == '\0') return x == y;
+  return a == b;
+}
+
+/// "" when the stored key continues case c; else one line saying which parameters differ (there, here).
+std::string identity_mismatch(const std::string& path, const std::string& stored, const Case& c) {
+  const std::vector<IdentityEntry> there = parse_key(stored), here = checkpoint_identity(c);
+  auto find = [](const std::vector<IdentityEntry>& v, const std::string& k) -> const IdentityEntry* {
+    for (const IdentityEntry& e : v)
+      if (e.key == k) return &e;
+    return nullptr;
+  };
+  // A key without the advection orders comes from an older magnus: it cannot say what it was run with.
+  if (!find(there, "solver.advection_order"))
+    return fmt::format(
+        "checkpoint '{}' does not record the advection orders (an older magnus wrote it): "
+        "remove it or run without --resume",
+        path);
+  std::string diff;
+  auto add = [&diff](const std::string& key, const std::string& a, const std::string& b) {
+    diff += fmt::format("{}{} {} there, {} here", diff.empty() ? "" : "; ", key, a, b);
+  };
+  for (const IdentityEntry& h : here) {
+    const IdentityEntry* t = find(there, h.key);
+    if (!t)
+      add(h.key, "undefined", h.value);
+    else if (!same_value(t->value, h.value))
+      add(h.key, t->value, h.value);
+  }
+  for (const IdentityEntry& t : there)
+    if (!find(here, t.key)) add(t.key, t.value, "undefined");
+  if (diff.empty()) return "";
+  return fmt::format("checkpoint '{}' is from another scene: {}; remove it or run without --resume", path,
+                     diff);
 }
 
 }  // namespace
@@ -31,11 +87,29 @@ std::string checkpoint_path(const std::string& result_path) {
   return (has_ext ? result_path.substr(0, dot) : result_path) + ".checkpoint.h5";
 }
 
-std::string checkpoint_key(const Case& c) {
+std::vector<IdentityEntry> checkpoint_identity(const Case& c) {
   const NsParams p = ns_params(c);
   const PolarGrid g = ns_grid(p);  // the grid as built: n_r = 0 asks for square cells
-  return fmt::format("a={:.17g} U={:.17g} omega={:.17g} nu={:.17g} rho={:.17g} R/a={:.17g} n_theta={} n_r={}",
-                     p.a, p.U, p.omega, p.nu, c.scene.density, g.outer_radius() / p.a, g.n_theta, g.n_r);
+  auto num = [](double v) { return fmt::format("{}", v + 0.0); };  // shortest text that reads back exactly
+  std::vector<IdentityEntry> id = {
+      {"cylinder.radius", num(p.a)}, {"flow.speed", num(p.U)}, {"cylinder.spin", num(p.omega)}};
+  if (p.U > 0.0) id.push_back({"cylinder.spin_ratio", num(p.a * p.omega / p.U)});
+  id.push_back({"flow.viscosity", num(p.nu)});
+  if (p.U > 0.0) id.push_back({"flow.reynolds", num(p.U * 2.0 * p.a / p.nu)});
+  id.push_back({"flow.density", num(c.scene.density)});
+  id.push_back({"domain.outer_radius", num(g.outer_radius() / p.a)});
+  id.push_back({"grid.n_theta", std::to_string(g.n_theta)});
+  id.push_back({"grid.n_r", std::to_string(g.n_r)});
+  id.push_back({"solver.advection_order", std::to_string(p.advection_order)});
+  id.push_back({"solver.advection_order_xi", std::to_string(p.advection_order_xi)});
+  return id;
+}
+
+std::string checkpoint_key(const Case& c) {
+  std::string key;
+  for (const IdentityEntry& e : checkpoint_identity(c))
+    key += (key.empty() ? "" : " ") + e.key + "=" + e.value;
+  return key;
 }
 
 void write_checkpoint(const std::string& path, const Case& c, const Checkpoint& cp) {
@@ -80,10 +154,8 @@ Checkpoint read_checkpoint(const std::string& path, const Case& c) {
   } catch (const std::exception& e) {
     throw std::runtime_error(fmt::format("--resume: {}", e.what()));
   }
-  const std::string key = f->attr_string("/", "key"), want = checkpoint_key(c);
-  if (key != want)
-    throw std::runtime_error(fmt::format(
-        "--resume: '{}' belongs to another scene or grid ({}; this case: {})", path, key, want));
+  const std::string mismatch = identity_mismatch(path, f->attr_string("/", "key"), c);
+  if (!mismatch.empty()) throw std::runtime_error(mismatch);
   Checkpoint cp;
   NsState& s = cp.state;
   s.t = f->attr_double("/state", "t");
@@ -99,7 +171,8 @@ Checkpoint read_checkpoint(const std::string& path, const Case& c) {
   cp.history.resize(v[0].size());
   for (size_t k = 0; k < cols.size(); ++k) {
     if (v[k].size() != cp.history.size())
-      throw std::runtime_error(fmt::format("--resume: '{}' is damaged: /history columns differ in length", path));
+      throw std::runtime_error(
+          fmt::format("--resume: '{}' is damaged: /history columns differ in length", path));
     for (size_t q = 0; q < v[k].size(); ++q) cp.history[q].*cols[k].second = v[k][q];
   }
   for (ForceSample& h : cp.history) h.has_coefficients = c.scene.speed > 0.0;
@@ -109,7 +182,8 @@ Checkpoint read_checkpoint(const std::string& path, const Case& c) {
   if (s.zeta.size() != n || psi.size() != t.size() * n || zeta.size() != t.size() * n)
     throw std::runtime_error(fmt::format("--resume: '{}' is damaged: its arrays do not match", path));
   for (size_t k = 0; k < t.size(); ++k)
-    cp.snapshots.push_back({t[k], {psi.begin() + long(k * n), psi.begin() + long((k + 1) * n)},
+    cp.snapshots.push_back({t[k],
+                            {psi.begin() + long(k * n), psi.begin() + long((k + 1) * n)},
                             {zeta.begin() + long(k * n), zeta.begin() + long((k + 1) * n)}});
   for (double x : s.psi)
     if (!std::isfinite(x)) throw std::runtime_error(fmt::format("--resume: '{}' holds a non-finite ψ", path));

@@ -3,6 +3,7 @@
 // stepper, the force history and the kept snapshots, written atomically beside the result so that a killed
 // run resumes (`magnus run CASE --resume`) and loses at most one checkpoint interval.
 #include <string>
+#include <vector>
 
 #include "postproc/viscous_run.hpp"
 
@@ -11,15 +12,26 @@ namespace magnus {
 /// The checkpoint file of a result path: "out.h5" → "out.checkpoint.h5".
 std::string checkpoint_path(const std::string& result_path);
 
-/// What must agree for a checkpoint to continue a case: the scene and the grid (a, U, ω, ν, ρ, R/a,
-/// n_θ, n_r); time.end, the output and the tolerances may change between runs.
+/// One parameter a checkpoint must share with the case it continues: the case key it comes from and its
+/// value as text (the shortest form that reads back exactly).
+struct IdentityEntry {
+  std::string key, value;
+};
+
+/// What must agree for a checkpoint to continue a case: the scene (a m, U m/s, ω rad/s, α = aω/U, ν m²/s,
+/// Re = U·2a/ν, ρ kg/m³), the grid as built (R/a, n_θ, n_r) and the advection orders in θ and ξ;
+/// time.end, the output and the tolerances may change between runs. α and Re only when U > 0.
+std::vector<IdentityEntry> checkpoint_identity(const Case& c);
+
+/// The identity as the file stores it: "key=value key=value …" (checkpoint_identity's entries).
 std::string checkpoint_key(const Case& c);
 
 /// Write cp for case c to path atomically (temporary name, then rename).
 void write_checkpoint(const std::string& path, const Case& c, const Checkpoint& cp);
 
 /// Read the checkpoint at path for case c. Throws std::runtime_error in one line when it is missing,
-/// damaged, or belongs to another scene or grid (naming what differs).
+/// damaged, holds a non-finite value (naming the dataset or attribute), or belongs to another scene or grid
+/// (naming each parameter that differs, with its value there and here).
 Checkpoint read_checkpoint(const std::string& path, const Case& c);
 
 }  // namespace magnus
