@@ -1,0 +1,89 @@
+// magnus run --resume on navier-stokes cases, from checkpoints that real runs left behind (killed outright
+// by MAGNUS_TEST_KILL_AT). Each refusal is one line, writes no result and keeps the checkpoint as it was.
+// Coarse grids: each run takes well under a second.
+#include <fmt/core.h>
+#include <catch2/catch.hpp>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+
+#include "io/case_file.hpp"
+#include "io/checkpoint.hpp"
+#include "io/result_reader.hpp"
+#include "support.hpp"
+
+using namespace magnus;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Re 100, α = 1 on a coarse grid (a = 0.5 m, U = 1 m/s: the time unit D/U is 1 s), a checkpoint every
+/// 2 D/U; `more` goes on in [time] (and may open further sections).
+std::string resume_case(const std::string& dir, double t_end, const std::string& more = "") {
+  const std::string path = dir + "/case.toml";
+  std::ofstream(path) << fmt::format(
+      "title = \"resume\"\n[model]\nflow = \"navier-stokes\"\n[cylinder]\nradius = 0.5\nspin_ratio = 1\n"
+      "[flow]\nspeed = 1.0\ndensity = 1.0\nreynolds = 100\n[domain]\nouter_radius = 40.0\n[grid]\n"
+      "n_theta = 48\n[time]\nend = {}\ncheckpoint_interval = 2.0\n{}",
+      t_end, more);
+  return path;
+}
+
+/// Run the case to dir/r.h5 and kill it outright at t_kill D/U: its last checkpoint, read back.
+Checkpoint killed_at(const std::string& dir, const std::string& c, double t_kill) {
+  const std::string cmd = fmt::format("MAGNUS_TEST_KILL_AT={} '{}' run '{}' -o '{}/r.h5' >/dev/null 2>&1",
+                                      t_kill, MAGNUS_EXE, c, dir);
+  const int raw = std::system(cmd.c_str());
+  REQUIRE((WIFSIGNALED(raw) || (WIFEXITED(raw) && WEXITSTATUS(raw) == 128 + SIGKILL)));  // the shell's 137
+  REQUIRE_FALSE(fs::exists(dir + "/r.h5"));
+  return read_checkpoint(checkpoint_path(dir + "/r.h5"), load_case(c, {}));
+}
+
+/// magnus run CASE -o dir/r.h5 --resume with the --set overrides.
+test::Outcome resume(const std::string& dir, const std::string& c, const std::vector<std::string>& sets) {
+  std::vector<std::string> args = {"run", c, "-o", dir + "/r.h5", "--resume"};
+  for (const std::string& s : sets) args.push_back("--set"), args.push_back(s);
+  return test::magnus_cmd(args, dir);
+}
+
+/// A refusal: non-zero status, one line holding `text`, no result, the checkpoint byte for byte as before.
+void require_refused(const test::Outcome& o, const std::string& text, const std::string& dir,
+                     const std::string& checkpoint_bytes) {
+  INFO(o.err);
+  REQUIRE(o.status != 0);
+  REQUIRE(test::lines(o.err) == 1);
+  REQUIRE(o.err.find(text) != std::string::npos);
+  REQUIRE(o.out.empty());
+  REQUIRE_FALSE(fs::exists(dir + "/r.h5"));
+  REQUIRE_FALSE(fs::exists(dir + "/r.xmf"));
+  REQUIRE(test::slurp(checkpoint_path(dir + "/r.h5")) == checkpoint_bytes);
+}
+
+}  // namespace
+
+TEST_CASE("navier-stokes --resume: a checkpoint of another scene is refused naming what differs, and kept",
+          "[app][ns][resume]") {
+  const std::string dir = test::temp_dir("ns-resume-scene");
+  const std::string c = resume_case(dir, 6);
+  const Checkpoint cp = killed_at(dir, c, 3);
+  REQUIRE(cp.state.t > 2.0);
+  const std::string ckpt = checkpoint_path(dir + "/r.h5"), bytes = test::slurp(ckpt);
+  const std::string where = "checkpoint '" + ckpt + "' is from another scene: ";
+  require_refused(
+      resume(dir, c, {"flow.reynolds=80"}),
+      where +
+          "flow.viscosity 0.01 there, 0.0125 here; flow.reynolds 100 there, 80 here; remove it or run "
+          "without --resume",
+      dir, bytes);
+  require_refused(resume(dir, c, {"solver.advection_order=4"}),
+                  where + "solver.advection_order 2 there, 4 here; remove it or run without --resume", dir,
+                  bytes);
+  require_refused(resume(dir, c, {"grid.n_theta=32"}), where + "grid.n_theta 48 there, 32 here", dir, bytes);
+  // The kept checkpoint still serves its own scene.
+  const auto o = resume(dir, c, {});
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  CHECK(read_result(dir + "/r.h5").viscous->t == Approx(6.0));
+  CHECK_FALSE(fs::exists(ckpt));
+}
