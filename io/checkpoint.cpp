@@ -156,18 +156,33 @@ Checkpoint read_checkpoint(const std::string& path, const Case& c) {
   }
   const std::string mismatch = identity_mismatch(path, f->attr_string("/", "key"), c);
   if (!mismatch.empty()) throw std::runtime_error(mismatch);
+  // Every value is checked as it is read: a non-finite one is refused naming where it is.
+  auto non_finite = [&path](const std::string& name) {
+    return std::runtime_error(fmt::format("checkpoint '{}': {} holds a non-finite value", path, name));
+  };
+  auto number = [&](const char* name) {
+    const double x = f->attr_double("/state", name);
+    if (!std::isfinite(x)) throw non_finite(std::string("/state/") + name);
+    return x;
+  };
+  auto array = [&](const std::string& name) {
+    std::vector<double> x = f->dataset(name);
+    for (double e : x)
+      if (!std::isfinite(e)) throw non_finite(name);
+    return x;
+  };
   Checkpoint cp;
   NsState& s = cp.state;
-  s.t = f->attr_double("/state", "t");
-  s.Gamma_R = f->attr_double("/state", "Gamma_R");
-  s.Gamma_flux_prev = f->attr_double("/state", "Gamma_flux_prev");
-  s.dt_prev = f->attr_double("/state", "dt_prev");
-  s.psi = f->dataset("/state/psi");
-  s.zeta = f->dataset("/state/zeta");
-  s.N_prev = f->dataset("/state/N_prev");
+  s.t = number("t");
+  s.Gamma_R = number("Gamma_R");
+  s.Gamma_flux_prev = number("Gamma_flux_prev");
+  s.dt_prev = number("dt_prev");
+  s.psi = array("/state/psi");
+  s.zeta = array("/state/zeta");
+  s.N_prev = array("/state/N_prev");
   const auto& cols = history_columns();
   std::vector<std::vector<double>> v;
-  for (const auto& col : cols) v.push_back(f->dataset(std::string("/history/") + col.first));
+  for (const auto& col : cols) v.push_back(array(std::string("/history/") + col.first));
   cp.history.resize(v[0].size());
   for (size_t k = 0; k < cols.size(); ++k) {
     if (v[k].size() != cp.history.size())
@@ -176,8 +191,8 @@ Checkpoint read_checkpoint(const std::string& path, const Case& c) {
     for (size_t q = 0; q < v[k].size(); ++q) cp.history[q].*cols[k].second = v[k][q];
   }
   for (ForceSample& h : cp.history) h.has_coefficients = c.scene.speed > 0.0;
-  const std::vector<double> t = f->dataset("/snapshots/t"), psi = f->dataset("/snapshots/psi"),
-                            zeta = f->dataset("/snapshots/vorticity");
+  const std::vector<double> t = array("/snapshots/t"), psi = array("/snapshots/psi"),
+                            zeta = array("/snapshots/vorticity");
   const size_t n = s.psi.size();
   if (s.zeta.size() != n || psi.size() != t.size() * n || zeta.size() != t.size() * n)
     throw std::runtime_error(fmt::format("--resume: '{}' is damaged: its arrays do not match", path));
@@ -185,8 +200,6 @@ Checkpoint read_checkpoint(const std::string& path, const Case& c) {
     cp.snapshots.push_back({t[k],
                             {psi.begin() + long(k * n), psi.begin() + long((k + 1) * n)},
                             {zeta.begin() + long(k * n), zeta.begin() + long((k + 1) * n)}});
-  for (double x : s.psi)
-    if (!std::isfinite(x)) throw std::runtime_error(fmt::format("--resume: '{}' holds a non-finite ψ", path));
   return cp;
 }
 

@@ -7,6 +7,7 @@
 #include <hdf5.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include "io/case_parse.hpp"
@@ -137,4 +138,32 @@ TEST_CASE("checkpoint: one from an older magnus, without the advection orders, i
         "checkpoint '" + path +
             "' does not record the advection orders (an older magnus wrote it): remove it "
             "or run without --resume");
+}
+
+TEST_CASE("checkpoint: a non-finite value anywhere is refused naming its dataset", "[io][checkpoint]") {
+  const std::string dir = test::temp_dir("ckpt-finite"), path = dir + "/r.checkpoint.h5";
+  const Case c = test::parse(kCase);
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  // Each spoiled checkpoint and the object its refusal must name.
+  const std::vector<std::pair<std::function<void(Checkpoint&)>, std::string>> spoiled = {
+      {[&](Checkpoint& cp) { cp.state.zeta[7] = nan; }, "/state/zeta"},
+      {[&](Checkpoint& cp) { cp.state.psi[3] = -inf; }, "/state/psi"},
+      {[&](Checkpoint& cp) { cp.state.N_prev.back() = inf; }, "/state/N_prev"},
+      {[&](Checkpoint& cp) { cp.state.t = nan; }, "/state/t"},
+      {[&](Checkpoint& cp) { cp.state.Gamma_R = inf; }, "/state/Gamma_R"},
+      {[&](Checkpoint& cp) { cp.state.Gamma_flux_prev = nan; }, "/state/Gamma_flux_prev"},
+      {[&](Checkpoint& cp) { cp.state.dt_prev = inf; }, "/state/dt_prev"},
+      {[&](Checkpoint& cp) { cp.history[1].t = inf; }, "/history/t"},
+      {[&](Checkpoint& cp) { cp.history[2].C_D = inf; }, "/history/cd"},
+      {[&](Checkpoint& cp) { cp.history[0].M = nan; }, "/history/torque"},
+      {[&](Checkpoint& cp) { cp.snapshots[1].t = nan; }, "/snapshots/t"},
+      {[&](Checkpoint& cp) { cp.snapshots[0].psi[5] = inf; }, "/snapshots/psi"},
+      {[&](Checkpoint& cp) { cp.snapshots[1].vorticity[0] = nan; }, "/snapshots/vorticity"},
+  };
+  for (const auto& [spoil, name] : spoiled) {
+    Checkpoint cp = made_up(c);
+    spoil(cp);
+    write_checkpoint(path, c, cp);
+    CHECK(refusal(path, c) == "checkpoint '" + path + "': " + name + " holds a non-finite value");
+  }
 }
