@@ -31,7 +31,8 @@ struct ViscousHooks {
 };
 
 /// Throws std::invalid_argument (one line naming the key) for a case the model refuses: time.dt above the
-/// stability limit of the start, a grid too coarse for the boundary layer, U = 0 and ω = 0.
+/// stability limit of the start, a grid too coarse for the boundary layer, U = 0 and ω = 0, a time.end
+/// before the time of the checkpoint it resumes (time.mode "steady" does not march: any time.end).
 /// threads: for the advection and the mode solves (≥ 1; on 2 cores a second thread gained about 4%).
 FlowResult run_viscous(const Case& c, const ViscousHooks& hooks = {}, const Checkpoint* resume = nullptr,
                        int threads = 1);

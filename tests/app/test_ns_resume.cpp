@@ -62,6 +62,19 @@ void require_refused(const test::Outcome& o, const std::string& text, const std:
 
 }  // namespace
 
+TEST_CASE("navier-stokes --resume: a time.end before the checkpoint's time is refused, the checkpoint kept",
+          "[app][ns][resume]") {
+  const std::string dir = test::temp_dir("ns-resume-end");
+  const std::string c = resume_case(dir, 12);
+  const Checkpoint cp = killed_at(dir, c, 5);
+  REQUIRE(cp.state.t > 4.0);
+  REQUIRE(cp.state.t < 5.0);
+  const std::string ckpt = checkpoint_path(dir + "/r.h5"), bytes = test::slurp(ckpt);
+  require_refused(resume(dir, c, {"time.end=2"}),
+                  fmt::format("time.end = 2 D/U is before the checkpoint's time t = {:.6g} D/U", cp.state.t),
+                  dir, bytes);
+}
+
 TEST_CASE("navier-stokes --resume: a checkpoint of another scene is refused naming what differs, and kept",
           "[app][ns][resume]") {
   const std::string dir = test::temp_dir("ns-resume-scene");
