@@ -60,7 +60,7 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
   }
   const double unit = v.time_unit;
   const double steps_per_s = r.timing.solve_s > 0.0 ? double(v.steps) / r.timing.solve_s : 0.0;
-  if (v.steps == 0)
+  if (v.newton)
     line("run", fmt::format("steady state by Newton's method, {} ({:.0f} ms)", wall(r.timing.total_s),
                             1e3 * r.timing.total_s));
   else

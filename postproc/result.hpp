@@ -38,6 +38,7 @@ struct ViscousPart {
   double time_unit = 0.0;                ///< D/U_ref, s (U_ref = U, or a|ω| when U = 0)
   std::string status;                    ///< why the run stopped (steady, converged, t_end, interrupted…)
   bool steady = false, periodic = false, converged = false;
+  bool newton = false;                   ///< a steady state by Newton's method (not marched in time)
   bool partial = false;                  ///< interrupted (Ctrl-C) or stopped on an error before the end
   double t = 0.0;                        ///< the time reached, s
   double dt = 0.0;                       ///< the last time step, s

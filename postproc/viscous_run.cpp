@@ -177,6 +177,7 @@ FlowResult steady_result(const Case& c, const NsParams& p, const PolarGrid& g, N
   u.reference_speed = c.scene.reference_speed();
   u.wall_seconds = wall_seconds;
   FlowResult r = viscous_result(c, p, u, {});
+  r.viscous->newton = true;
   if (stab && !stab->eigenvalues.empty()) {
     r.viscous->eigenvalue_real = stab->eigenvalues.front().real();
     r.viscous->eigenvalue_imag = stab->eigenvalues.front().imag();

@@ -75,6 +75,25 @@ TEST_CASE("navier-stokes --resume: a time.end before the checkpoint's time is re
                   dir, bytes);
 }
 
+TEST_CASE("navier-stokes --resume: time.end at the checkpoint's time takes no step, and the summary says so",
+          "[app][ns][resume]") {
+  const std::string dir = test::temp_dir("ns-resume-same-end");
+  const std::string c = resume_case(dir, 12);
+  const Checkpoint cp = killed_at(dir, c, 5);
+  const std::string ckpt = checkpoint_path(dir + "/r.h5");
+  // The run line is the marched run's (t, 0 steps), not the one of a steady state by Newton's method.
+  const auto o = resume(dir, c, {fmt::format("time.end={}", cp.state.t)});
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  CHECK(o.out.find("Newton") == std::string::npos);
+  CHECK(o.out.find(" 0 steps of Δt") != std::string::npos);
+  CHECK(o.out.find("stopped: reached t_end") != std::string::npos);
+  const FlowResult r = read_result(dir + "/r.h5");
+  CHECK(r.viscous->t == cp.state.t);
+  CHECK(r.viscous->steps == 0);
+  CHECK_FALSE(fs::exists(ckpt));
+}
+
 TEST_CASE("navier-stokes --resume: a checkpoint of another scene is refused naming what differs, and kept",
           "[app][ns][resume]") {
   const std::string dir = test::temp_dir("ns-resume-scene");
