@@ -317,7 +317,10 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
 
   std::vector<ForceSample> history = resume ? resume->history : std::vector<ForceSample>{};
   std::deque<Snapshot> snaps;
-  if (resume) snaps.assign(resume->snapshots.begin(), resume->snapshots.end());
+  if (resume) {  // the newest output.snapshots of them: the case may keep fewer than the checkpoint holds
+    const size_t keep = std::min(resume->snapshots.size(), size_t(std::max(0, c.output.snapshots)));
+    snaps.assign(resume->snapshots.end() - long(keep), resume->snapshots.end());
+  }
   const double snap_every = c.output.snapshot_interval * unit;
   double next_snap = snaps.empty() ? start.t : snaps.back().t + snap_every;
   const double ckpt_every = c.time.checkpoint_interval * unit;

@@ -119,3 +119,37 @@ TEST_CASE("navier-stokes --resume: a checkpoint of another scene is refused nami
   CHECK(read_result(dir + "/r.h5").viscous->t == Approx(6.0));
   CHECK_FALSE(fs::exists(ckpt));
 }
+
+TEST_CASE("navier-stokes --resume: output.snapshots trims the checkpoint's snapshots to the newest ones",
+          "[app][ns][resume]") {
+  const std::string dir = test::temp_dir("ns-resume-snap");
+  const std::string c = resume_case(dir, 12, "[output]\nsnapshots = 20\nsnapshot_interval = 0.05\n");
+  const Checkpoint cp = killed_at(dir, c, 3);
+  REQUIRE(cp.snapshots.size() == 20);
+  const std::string ckpt = checkpoint_path(dir + "/r.h5");
+  fs::copy_file(ckpt, dir + "/saved.h5");
+  // None kept: the result holds no snapshot.
+  const double t_end = cp.state.t + 0.12;
+  auto o = resume(dir, c, {"output.snapshots=0", fmt::format("time.end={}", t_end)});
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  CHECK(read_result(dir + "/r.h5").viscous->snapshots.empty());
+  // Five kept: the newest five, the checkpoint's last ones first, then those of the resumed run.
+  fs::copy_file(dir + "/saved.h5", ckpt, fs::copy_options::overwrite_existing);
+  o = resume(dir, c, {"output.snapshots=5", fmt::format("time.end={}", t_end)});
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  const std::vector<Snapshot> s = read_result(dir + "/r.h5").viscous->snapshots;
+  REQUIRE(s.size() == 5);
+  size_t old = 0;  // those from the checkpoint
+  while (old < s.size() && s[old].t <= cp.state.t) ++old;
+  REQUIRE(old >= 1);
+  REQUIRE(old < 5);
+  for (size_t k = 0; k < old; ++k) {
+    const Snapshot& want = cp.snapshots[cp.snapshots.size() - old + k];
+    CHECK(s[k].t == want.t);
+    CHECK(s[k].vorticity == want.vorticity);
+  }
+  for (size_t k = 1; k < s.size(); ++k) CHECK(s[k].t > s[k - 1].t);
+  CHECK(s.back().t <= t_end);
+}
