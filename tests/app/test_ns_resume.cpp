@@ -1,5 +1,6 @@
 // magnus run --resume on navier-stokes cases, from checkpoints that real runs left behind (killed outright
-// by MAGNUS_TEST_KILL_AT). Each refusal is one line, writes no result and keeps the checkpoint as it was.
+// by MAGNUS_TEST_KILL_AT): a time.end before the checkpoint, output.snapshots, a changed scene, and a state
+// that turns non-finite. Each refusal is one line, writes no result and keeps the checkpoint as it was.
 // Coarse grids: each run takes well under a second.
 #include <fmt/core.h>
 #include <catch2/catch.hpp>
@@ -152,4 +153,29 @@ TEST_CASE("navier-stokes --resume: output.snapshots trims the checkpoint's snaps
   }
   for (size_t k = 1; k < s.size(); ++k) CHECK(s[k].t > s[k - 1].t);
   CHECK(s.back().t <= t_end);
+}
+
+TEST_CASE("navier-stokes --resume: a state that turns non-finite stops in one line, the checkpoint kept",
+          "[app][ns][resume]") {
+  const std::string dir = test::temp_dir("ns-resume-blowup");
+  const std::string c = resume_case(dir, 6);
+  Checkpoint cp = killed_at(dir, c, 3);
+  // A huge but finite vorticity in the middle of the grid (away from the wall, where the forces are taken):
+  // the checkpoint reads, and the first step's right-hand side overflows (1e300 would not: the step would
+  // go through and the next one stop on its CFL number instead).
+  const Case cs = load_case(c, {});
+  const PolarGrid g = ns_grid(ns_params(cs));
+  cp.state.zeta[size_t(g.n_r / 2) * size_t(g.n_theta) + 3] = 1e308;
+  const std::string ckpt = checkpoint_path(dir + "/r.h5");
+  write_checkpoint(ckpt, cs, cp);
+  const std::string bytes = test::slurp(ckpt);
+  const auto o = resume(dir, c, {});
+  require_refused(o, "the flow turned non-finite at t = ", dir, bytes);
+  CHECK(o.err.find("likely cause") != std::string::npos);
+  // The time named is the failing step's: the checkpoint's plus one step (Δt < 0.1 D/U = 0.1 s).
+  const size_t at = o.err.find("at t = ") + 7;
+  const double t_fail = std::stod(o.err.substr(at));
+  CHECK(t_fail > cp.state.t);
+  CHECK(t_fail < cp.state.t + 0.1);
+  for (const char* bad : {"nan", "inf"}) CHECK(o.err.find(bad) == std::string::npos);
 }
