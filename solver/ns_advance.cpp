@@ -29,6 +29,14 @@ std::string fmt_time(double t) {
   return buf;
 }
 
+/// A CFL number for a message: 4 digits, or "not finite" (never "inf" or a 300-digit number).
+std::string fmt_cfl(double c) {
+  if (!std::isfinite(c)) return "not finite";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.4g", c);
+  return buf;
+}
+
 }  // namespace
 
 void advance(const NsOperator& op, const NsState& old, NsState& next, NsStepTimes* times) {
@@ -132,7 +140,7 @@ void advance(const NsOperator& op, const NsState& old, NsState& next, NsStepTime
       p.stokes ? cfl_number(g, old.psi, dt, p.advection_order, p.advection_order_xi) : rate * dt;
   if (!(cfl <= kNsCflLimit))
     throw std::runtime_error("advance: at t = " + fmt_time(old.t) + " the CFL number is " +
-                             std::to_string(cfl) + " > " + std::to_string(kNsCflLimit) + ": the time step " +
+                             fmt_cfl(cfl) + " > " + fmt_cfl(kNsCflLimit) + ": the time step " +
                              fmt_time(dt) + " is above the stability limit (reduce dt or the CFL number)");
   auto non_finite = [&](const std::string& where) {
     return std::runtime_error("advance: the flow turned non-finite at t = " + fmt_time(old.t + dt) + " (" +
