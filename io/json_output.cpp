@@ -175,7 +175,7 @@ Json viscous_derived(const FlowResult& r) {
   d["steps_per_second"] = quantity(
       r.timing.solve_s > 0.0 ? std::optional<double>(double(v.steps) / r.timing.solve_s) : std::nullopt,
       "1/s");
-  d["three_dimensional"] = v.reynolds && *v.reynolds > kReynolds3D;
+  d["three_dimensional"] = v.reynolds && above_laminar_range(*v.reynolds);
   if (v.steady_study) d["steady_study"] = json_parts::steady_study_json(*v.steady_study);
   if (sc.speed <= 0.0) {  // still fluid: the potential vortex u_θ = a²ω/r is an exact viscous solution
     const double nu = v.viscosity > 0.0 ? v.viscosity : sc.viscosity;

@@ -23,6 +23,8 @@ std::string wall(double seconds) {
 
 }  // namespace
 
+bool above_laminar_range(double reynolds) { return reynolds > kReynolds3D * (1.0 + 1e-9); }
+
 std::string viscous_summary_text(const FlowResult& r, const std::string& output_path) {
   check_finite(r);  // nothing that is not finite is printed
   const Case& c = r.c;
@@ -125,9 +127,9 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
                      *v.eigenvalue_real, *v.eigenvalue_imag,
                      *v.eigenvalue_real < 0.0 ? "stable" : "unstable: it sheds",
                      std::fabs(*v.eigenvalue_imag) / (2.0 * M_PI)));
-  if (v.reynolds && *v.reynolds > kReynolds3D)
+  if (v.reynolds && above_laminar_range(*v.reynolds))
     line("note",
-         fmt::format("Re = {:.4g} > {:.0f}: real flow past a cylinder is three-dimensional there; this is "
+         fmt::format("Re = {:.6g} > {:.0f}: real flow past a cylinder is three-dimensional there; this is "
                      "the 2D laminar answer, not the real one",
                      *v.reynolds, kReynolds3D));
   if (!output_path.empty())

@@ -13,6 +13,10 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
 /// Re above which 2D laminar flow past a cylinder is no longer what a real cylinder sees.
 constexpr double kReynolds3D = 200.0;
 
+/// Re > kReynolds3D by more than round-off (relative 1e-9): Re = U·2a/ν of a ν set from Re = 200 reads
+/// 200.00000000000003, which is 200.
+bool above_laminar_range(double reynolds);
+
 /// Wall cells across D/√(Re(1 + α²)) below which the summary warns. At Re = 100 on R = 100a the mean drag
 /// was off by +1.9% with 6.1 cells (α = 1, square cells n_θ = 192), −0.5% with 7.1 (α = 1, the default
 /// grid), +2.2% with 5.6 (α = 1.5) and +12% with 4.5 (α = 2).

@@ -13,7 +13,11 @@ double Scene::Gamma() const {
 
 double Scene::spin_ratio() const { return speed > 0.0 ? radius * spin / speed : 0.0; }
 
-double Scene::reynolds() const { return viscosity > 0.0 ? speed * 2.0 * radius / viscosity : 0.0; }
+double Scene::reynolds() const {
+  if (reynolds_given && speed > 0.0)
+    return reynolds_value;  // as given: U·2a/ν of ν = U·2a/Re is off by an ulp
+  return viscosity > 0.0 ? speed * 2.0 * radius / viscosity : 0.0;
+}
 
 double Scene::reference_speed() const { return speed > 0.0 ? speed : radius * std::fabs(spin); }
 

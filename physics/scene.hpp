@@ -43,7 +43,8 @@ struct Scene {
   double Gamma() const;
   /// α = aω/U; 0 when U = 0 (undefined: callers that report it check U first).
   double spin_ratio() const;
-  /// Re = U·2a/ν; 0 when ν or U is 0 (undefined: callers check viscosity and speed first).
+  /// Re = U·2a/ν, or flow.reynolds exactly as given (U·2a/ν of the ν it sets reads 200.00000000000003 for
+  /// 200); 0 when ν or U is 0 (undefined: callers check viscosity and speed first).
   double reynolds() const;
   /// The reference speed of the time unit and the coefficients' dynamic pressure: U, or the wall speed
   /// a|ω| when U = 0 (a spinning cylinder in still fluid), m/s.

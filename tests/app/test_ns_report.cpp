@@ -1,0 +1,73 @@
+// What the navier-stokes summary says at the edges of its range: Re = 200 as given, a refused time step,
+// a boundary layer with no cell across it, Re below the floor and a viscous length beyond R, and a cylinder
+// spinning in still fluid (U = 0: the time unit D/(a|ω|), no Strouhal number). The Re 100, α 1 case on
+// coarse grids: each run takes well under a second.
+#include <fmt/core.h>
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <regex>
+
+#include "io/hdf5_io.hpp"
+#include "support.hpp"
+
+using namespace magnus;
+
+namespace {
+
+const std::string kCase = std::string(MAGNUS_SOURCE_DIR) + "/cases/re100_alpha1.toml";
+
+/// magnus run on cases/re100_alpha1.toml (n_θ 32, R = 20a, t_end 2 D/U unless overridden) with --set sets.
+test::Outcome run(const std::string& dir, const std::vector<std::string>& sets,
+                  const std::string& out = "r.h5") {
+  std::vector<std::string> args = {"run", kCase, "-o", dir + "/" + out};
+  for (const char* s : {"grid.n_theta=32", "domain.outer_radius=20", "time.end=2"})
+    args.push_back("--set"), args.push_back(s);
+  for (const std::string& s : sets) args.push_back("--set"), args.push_back(s);
+  return test::magnus_cmd(args, dir);
+}
+
+/// The line of a summary that starts with label ("" if none).
+std::string line_of(const std::string& text, const std::string& label) {
+  for (size_t start = 0, nl; start < text.size(); start = nl + 1) {
+    nl = text.find('\n', start);
+    if (nl == std::string::npos) nl = text.size();
+    if (text.compare(start, label.size(), label) == 0) return text.substr(start, nl - start);
+  }
+  return "";
+}
+
+bool exists(const std::string& path) { return std::ifstream(path).good(); }
+
+/// The longest run of digits in s.
+size_t longest_digit_run(const std::string& s) {
+  size_t best = 0, run = 0;
+  for (char ch : s) best = std::max(best, run = (ch >= '0' && ch <= '9') ? run + 1 : 0);
+  return best;
+}
+
+}  // namespace
+
+TEST_CASE("navier-stokes summary: Re = 200 as given is not above 200, and is stored as given",
+          "[app][ns][report]") {
+  const std::string dir = test::temp_dir("ns-report-re200");
+  // flow.reynolds = 200: ν = U·2a/200 = 5e-7, and U·2a/ν of that ν is 200.00000000000003.
+  const auto o = run(dir, {"flow.reynolds=200"});
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  CHECK(o.out.find("three-dimensional") == std::string::npos);
+  CHECK(ResultFile(dir + "/r.h5").attr_double("/parameters", "reynolds") == 200.0);
+  const auto c = run(dir, {}, "c.h5");  // the case's own Re = 100: 100 in the file, not 100.00000000000001
+  REQUIRE(c.status == 0);
+  CHECK(ResultFile(dir + "/c.h5").attr_double("/parameters", "reynolds") == 100.0);
+  // The same ν given as flow.viscosity: Re = U·2a/ν is 200 to round-off, not above 200.
+  const auto v = run(dir, {"flow.viscosity=5e-7"}, "v.h5");
+  REQUIRE(v.status == 0);
+  CHECK(v.out.find("three-dimensional") == std::string::npos);
+  // Above 200 by more than round-off, the note stays.
+  const auto h = run(dir, {"flow.reynolds=200.001"}, "h.h5");
+  REQUIRE(h.status == 0);
+  CHECK(line_of(h.out, "note") ==
+        "note           Re = 200.001 > 200: real flow past a cylinder is three-dimensional there; this is "
+        "the 2D "
+        "laminar answer, not the real one");
+}
