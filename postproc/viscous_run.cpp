@@ -299,14 +299,22 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
     start = impulsive_start(p, g);
     break_symmetry(p, g, start);
   }
-  // An asked Δt above the stability limit of the start is refused (the driver would have to clamp it).
+  // An asked Δt above the stability limit of the start is refused (the driver would have to clamp it). The
+  // limit is the start's: the impulsive start from rest has the fastest flow of the run, so its limit is
+  // lower than the Δt that time.cfl picks once the flow has settled (0.016 against 0.028 D/U at n_θ 48).
   if (p.dt > 0.0) {
     const double limit = cfl_time_step(p, g, start.psi, 0.9 * kNsCflLimit);
     if (p.dt > limit)
       throw std::invalid_argument(fmt::format(
-          "time.dt = {:g} (D/U) is above the stability limit {:.4g} of this grid and flow (CFL {:g}): leave "
-          "it out (Δt then follows time.cfl) or lower it",
-          c.time.dt, limit / unit, 0.9 * kNsCflLimit));
+          "time.dt = {:g} (D/U) is above {:.4g} D/U, the stability limit {} on this grid (CFL {:g}): leave "
+          "it out "
+          "or lower it",
+          c.time.dt, limit / unit,
+          resume
+              ? "of the state it resumes from"
+              : "at the start (from rest, where the flow is fastest; the Δt that time.cfl picks grows as the "
+                "flow settles)",
+          0.9 * kNsCflLimit));
   }
 
   UnsteadyOptions o;

@@ -71,3 +71,18 @@ TEST_CASE("navier-stokes summary: Re = 200 as given is not above 200, and is sto
         "the 2D "
         "laminar answer, not the real one");
 }
+
+TEST_CASE("navier-stokes run: a refused time step names the limit as the impulsive start's",
+          "[app][ns][report]") {
+  const std::string dir = test::temp_dir("ns-report-dt");
+  const auto o = run(dir, {"time.dt=0.5"});
+  REQUIRE(o.status != 0);
+  REQUIRE(test::lines(o.err) == 1);
+  INFO(o.err);
+  CHECK(std::regex_search(
+      o.err,
+      std::regex("^magnus: error: time\\.dt = 0\\.5 \\(D/U\\) is above 0\\.0[0-9]+ D/U, the stability limit "
+                 "at the start \\(from rest, where the flow is fastest; the Δt that time\\.cfl picks grows "
+                 "as the flow settles\\) on this grid \\(CFL 0\\.72\\): leave it out or lower it\n$")));
+  CHECK_FALSE(exists(dir + "/r.h5"));
+}
