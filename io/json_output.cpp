@@ -168,6 +168,7 @@ Json viscous_derived(const FlowResult& r) {
     const double cells = (2.0 * g.a / std::sqrt(*v.reynolds * (1.0 + alpha * alpha))) / (g.r[1] - g.r[0]);
     d["wall_cells"] = quantity(cells, "1");
     d["wall_cells_coarse"] = cells < kWallCellsForPercent;
+    d["wall_cells_unresolved"] = cells < kWallCellsResolved;  // the forces are not meaningful
   }
   const bool unit = v.time_unit > 0.0;
   d["t_convective"] = quantity(unit ? std::optional<double>(v.t / v.time_unit) : std::nullopt, "1");

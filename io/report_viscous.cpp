@@ -53,12 +53,17 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
     // Spin thins the layer where the wall moves against the stream: D/√(Re(1 + α²)) is the measure.
     const double alpha = sc.spin_ratio();
     const double cells = (2.0 * g.a / std::sqrt(*v.reynolds * (1.0 + alpha * alpha))) / (g.r[1] - g.r[0]);
-    line("", fmt::format("boundary layer: {:.1f} wall cells across D/√(Re(1 + α²)){}", cells,
-                         cells < kWallCellsForPercent
-                             ? fmt::format(" — coarse: below {:.0f} expect errors of several % in C_D (raise "
-                                           "grid.n_theta)",
-                                           kWallCellsForPercent)
-                             : ""));
+    const std::string grade =
+        cells < kWallCellsResolved
+            ? fmt::format(
+                  " — not resolved: below {:.0f} cell the forces are not meaningful (raise grid.n_theta)",
+                  kWallCellsResolved)
+        : cells < kWallCellsForPercent
+            ? fmt::format(" — coarse: below {:.0f} expect errors of several % in C_D (raise grid.n_theta)",
+                          kWallCellsForPercent)
+            : std::string();
+    line("", fmt::format("boundary layer: {} wall cells across D/√(Re(1 + α²)){}",
+                         cells < kWallCellsResolved ? num(cells, "{:.2g}") : num(cells, "{:.1f}"), grade));
   }
   const double unit = v.time_unit;
   const double steps_per_s = r.timing.solve_s > 0.0 ? double(v.steps) / r.timing.solve_s : 0.0;

@@ -86,3 +86,26 @@ TEST_CASE("navier-stokes run: a refused time step names the limit as the impulsi
                  "as the flow settles\\) on this grid \\(CFL 0\\.72\\): leave it out or lower it\n$")));
   CHECK_FALSE(exists(dir + "/r.h5"));
 }
+
+TEST_CASE("navier-stokes summary: below one wall cell the boundary layer is not resolved",
+          "[app][ns][report]") {
+  const std::string dir = test::temp_dir("ns-report-coarse");
+  // n_θ = 8 at Re 200, α 6: 0.044 cells across D/√(Re(1 + α²)); C_L came out with the wrong sign.
+  const auto o =
+      run(dir, {"grid.n_theta=8", "flow.reynolds=200", "cylinder.spin_ratio=6", "time.mode=unsteady"});
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  CAPTURE(o.out);
+  CHECK(line_of(o.out, "               boundary layer") ==
+        "               boundary layer: 0.044 wall cells across D/√(Re(1 + α²)) — not resolved: below 1 cell "
+        "the "
+        "forces are not meaningful (raise grid.n_theta)");
+  CHECK(o.out.find("several %") == std::string::npos);
+  // Between one and six cells: coarse, errors of several %.
+  const auto c = run(dir, {"grid.n_theta=96"}, "c.h5");
+  REQUIRE(c.status == 0);
+  CHECK(line_of(c.out, "               boundary layer") ==
+        "               boundary layer: 3.6 wall cells across D/√(Re(1 + α²)) — coarse: below 6 expect "
+        "errors of "
+        "several % in C_D (raise grid.n_theta)");
+}
