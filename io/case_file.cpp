@@ -118,6 +118,16 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
       r.fail("flow.reynolds", "needs flow.speed > 0 (Re = U*2a/nu); give flow.viscosity instead");
     c.scene.viscosity = c.scene.speed * 2.0 * c.scene.radius / c.scene.reynolds_value;
   }
+  // Re has a floor for navier-stokes (kNsMinReynolds): named by the key that set it.
+  if (ns && c.scene.speed > 0.0 && c.scene.viscosity > 0.0 && c.scene.reynolds() < kNsMinReynolds) {
+    const std::string why = fmt::format(
+        " out of range: must be >= {:g} for navier-stokes (below it the viscous length D/Re is over {:g} D: "
+        "creeping flow whose forces depend on domain.outer_radius)",
+        kNsMinReynolds, 1.0 / kNsMinReynolds);
+    if (has_re) r.fail("flow.reynolds", fmt::format("{:g} is{}", c.scene.reynolds_value, why));
+    r.fail("flow.viscosity",
+           fmt::format("{:g} gives Re = U*2a/nu = {:g},{}", c.scene.viscosity, c.scene.reynolds(), why));
+  }
   if (spin_key == "spin_ratio") {
     const double alpha = r.number("cylinder", "spin_ratio", 0.0, any, "finite");
     if (c.scene.speed == 0.0 && alpha != 0.0)

@@ -12,6 +12,10 @@ struct CaseError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The lowest Re = U·2a/ν a navier-stokes case accepts: below it the viscous (Oseen) length D/Re is over
+/// 100 D, creeping flow whose forces depend on the outer radius R (D/Re beyond R) rather than on the scene.
+constexpr double kNsMinReynolds = 0.01;
+
 /// Parse a case from TOML text; `origin` names it in messages. `overrides` are "section.key=value"
 /// strings (the value as in TOML; a bare word is a string). Throws CaseError.
 Case parse_case(const std::string& toml_text, const std::string& origin,

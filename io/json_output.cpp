@@ -177,6 +177,8 @@ Json viscous_derived(const FlowResult& r) {
       r.timing.solve_s > 0.0 ? std::optional<double>(double(v.steps) / r.timing.solve_s) : std::nullopt,
       "1/s");
   d["three_dimensional"] = v.reynolds && above_laminar_range(*v.reynolds);
+  d["viscous_length_beyond_grid"] =
+      v.reynolds && *v.reynolds > 0.0 && 2.0 * g.a / *v.reynolds > g.outer_radius();
   if (v.steady_study) d["steady_study"] = json_parts::steady_study_json(*v.steady_study);
   if (sc.speed <= 0.0) {  // still fluid: the potential vortex u_θ = a²ω/r is an exact viscous solution
     const double nu = v.viscosity > 0.0 ? v.viscosity : sc.viscosity;

@@ -14,7 +14,7 @@
 namespace magnus {
 
 std::string fmt_opt(const std::optional<double>& v, const char* spec) {
-  return v ? fmt::format(fmt::runtime(spec), *v + 0.0) : std::string("undefined");  // + 0.0: never "-0"
+  return v ? figure(*v + 0.0, spec) : std::string("undefined");  // + 0.0: never "-0"
 }
 
 namespace {

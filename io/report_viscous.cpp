@@ -9,12 +9,13 @@
 #include "io/report.hpp"
 #include "io/report_scene.hpp"
 #include "io/report_steady.hpp"
+#include "io/text_format.hpp"
 
 namespace magnus {
 
 namespace {
 
-std::string num(double v, const char* spec = "{:.6g}") { return fmt::format(fmt::runtime(spec), v + 0.0); }
+std::string num(double v, const char* spec = "{:.6g}") { return figure(v + 0.0, spec); }
 
 std::string wall(double seconds) {
   return seconds < 60.0 ? fmt::format("{:.3g} s", seconds)
@@ -137,6 +138,12 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
          fmt::format("Re = {:.6g} > {:.0f}: real flow past a cylinder is three-dimensional there; this is "
                      "the 2D laminar answer, not the real one",
                      *v.reynolds, kReynolds3D));
+  // The viscous (Oseen) length D/Re: beyond R the outer boundary cuts into it, and the forces depend on R.
+  if (v.reynolds && *v.reynolds > 0.0 && 2.0 * g.a / *v.reynolds > g.outer_radius())
+    line("note",
+         fmt::format("the viscous length D/Re = {} D reaches beyond the grid (R = {} D): the forces "
+                     "depend on R (raise domain.outer_radius)",
+                     num(1.0 / *v.reynolds, "{:.3g}"), num(g.outer_radius() / (2.0 * g.a), "{:.3g}")));
   if (!output_path.empty())
     line("output", fmt::format("{} (+ {} for ParaView)", output_path, xdmf_path(output_path)));
   return s;

@@ -6,9 +6,16 @@
 
 namespace magnus {
 
+std::string figure(double v, const char* spec) {
+  const std::string sp = spec;
+  const bool fixed =
+      sp.size() >= 2 && sp[sp.size() - 1] == '}' && (sp[sp.size() - 2] == 'f' || sp[sp.size() - 2] == 'F');
+  return fmt::format(fmt::runtime(fixed && std::fabs(v) >= 1e9 ? "{:.6g}" : spec), v);
+}
+
 std::string cell(double v, const char* spec) {
   if (!std::isfinite(v)) return "—";
-  std::string s = fmt::format(fmt::runtime(spec), v);
+  std::string s = figure(v, spec);
   if (s[0] == '-' && s.find_first_of("123456789", 1) == std::string::npos) s.erase(0, 1);
   return s;
 }

@@ -4,7 +4,11 @@
 
 namespace magnus {
 
-/// A table cell: fmt spec applied to v; "—" for a non-finite (undefined) value; no sign on a value that
+/// fmt spec applied to v, except that a fixed-point spec ("{:.5f}") of |v| >= 1e9 gives "{:.6g}" instead:
+/// no figure runs to hundreds of digits (1e290 prints as 1e+290, not 291 digits and 5 decimals).
+std::string figure(double v, const char* spec);
+
+/// A table cell: figure(v, spec); "—" for a non-finite (undefined) value; no sign on a value that
 /// rounds to zero ("0.000", not "-0.000").
 std::string cell(double v, const char* spec);
 

@@ -109,3 +109,37 @@ TEST_CASE("navier-stokes summary: below one wall cell the boundary layer is not 
         "errors of "
         "several % in C_D (raise grid.n_theta)");
 }
+
+TEST_CASE("navier-stokes case: Re below 0.01 is refused, a viscous length beyond R is noted",
+          "[app][ns][report]") {
+  const std::string dir = test::temp_dir("ns-report-low-re");
+  for (const char* re : {"1e-300", "0.001"}) {
+    const auto o = run(dir, {fmt::format("flow.reynolds={}", re)});
+    REQUIRE(o.status != 0);
+    REQUIRE(test::lines(o.err) == 1);
+    CHECK(o.err == fmt::format("magnus: error: {}: flow.reynolds: {} is out of range: must be >= 0.01 for "
+                               "navier-stokes (below it the viscous length D/Re is over 100 D: creeping flow "
+                               "whose forces depend on domain.outer_radius)\n",
+                               kCase, re == std::string("0.001") ? "0.001" : "1e-300"));
+    CHECK_FALSE(exists(dir + "/r.h5"));
+  }
+  // The same through flow.viscosity: U·2a/ν = 1e-4/1 = 1e-4.
+  const auto v = run(dir, {"flow.viscosity=1"});
+  REQUIRE(v.status != 0);
+  CHECK(v.err ==
+        "magnus: error: " + kCase +
+            ": flow.viscosity: 1 gives Re = U*2a/nu = 0.0001, out of range: must be >= 0.01 for "
+            "navier-stokes (below it the viscous length D/Re is over 100 D: creeping flow whose forces "
+            "depend on domain.outer_radius)\n");
+  // Re = 0.05 on R = 20a: D/Re = 20 D = 40a lies beyond R.
+  const auto o = run(dir, {"flow.reynolds=0.05"});
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  CHECK(o.out.find(
+            "note           the viscous length D/Re = 20 D reaches beyond the grid (R = 10 D): the forces "
+            "depend on R (raise domain.outer_radius)\n") != std::string::npos);
+  CHECK(longest_digit_run(o.out) < 20);
+  const auto f = run(dir, {"flow.reynolds=1"}, "f.h5");  // D/Re = D, well inside R
+  REQUIRE(f.status == 0);
+  CHECK(f.out.find("viscous length") == std::string::npos);
+}

@@ -391,3 +391,16 @@ TEST_CASE("the navier-stokes keys are valid keys, with suggestions for near spel
         "test.toml: unknown key model (did you mean model.flow?)");
   CHECK(error_of(scene + "[tme]\nend = 1\n") == "test.toml: unknown section [tme] (did you mean [time]?)");
 }
+
+TEST_CASE("navier-stokes: Re below 0.01 is refused by the key that sets it, potential flow only reports it",
+          "[io][case]") {
+  const std::string why =
+      " out of range: must be >= 0.01 for navier-stokes (below it the viscous length D/Re is "
+      "over 100 D: creeping flow whose forces depend on domain.outer_radius)";
+  CHECK(error_of(ns_with("reynolds = 1e-3\n")) == "test.toml: flow.reynolds: 0.001 is" + why);
+  CHECK(error_of(ns_with("viscosity = 1.0\n")) ==
+        "test.toml: flow.viscosity: 1 gives Re = U*2a/nu = 0.0001," + why);
+  CHECK(parse(ns_with("reynolds = 0.01\n")).scene.reynolds() == 0.01);
+  CHECK(parse(ns_with("viscosity = 1.0\n"), {"flow.speed=0"}).scene.viscosity == 1.0);  // still fluid: no Re
+  CHECK(parse(scene + "reynolds = 1e-3\n").scene.reynolds() == 1e-3);
+}

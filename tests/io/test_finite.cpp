@@ -7,6 +7,7 @@
 #include "io/finite.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/report.hpp"
+#include "io/text_format.hpp"
 #include "support.hpp"
 
 using namespace magnus;
@@ -34,4 +35,14 @@ TEST_CASE("the last line of defence names the first stored number that is not fi
   FlowResult p = r;
   p.stagnation.at(0).theta = NAN;
   CHECK(first_non_finite(p) == "/stagnation/theta at 0");
+}
+
+TEST_CASE("a fixed-point figure of a huge value is printed in exponent form, never hundreds of digits",
+          "[io][finite][report]") {
+  CHECK(fmt_opt(1e290, "{:.5f}") == "1e+290");
+  CHECK(fmt_opt(-2.5e12, "{:.4f}") == "-2.5e+12");
+  CHECK(fmt_opt(-123456.789, "{:.5f}") == "-123456.78900");
+  CHECK(fmt_opt(std::nullopt, "{:.5f}") == "undefined");
+  CHECK(cell(1e290, "{:.3f}") == "1e+290");
+  CHECK(cell(12.5, "{:.3f}") == "12.500");
 }
