@@ -78,6 +78,8 @@ std::vector<Quantity> quantities() {
 struct FileData {
   std::string path;
   bool viscous = false;  // a navier-stokes result
+  bool partial = false;  // a navier-stokes run stopped before its end (/@partial = 1)
+  std::string status;    // why it stopped (navier-stokes)
   bool has(Models m) const { return m == Models::all || (m == Models::viscous) == viscous; }
   std::vector<Param> params;                  // as params()
   std::vector<std::optional<double>> values;  // as quantities()
@@ -89,6 +91,8 @@ FileData read(const std::string& path, const std::vector<const AttrSpec*>& ps,
   FileData d;
   d.path = path;
   d.viscous = f.has_attr("/", "model") && f.attr_string("/", "model") == "navier-stokes";
+  d.partial = d.viscous && f.has_attr("/", "partial") && f.attr_int("/", "partial") != 0;
+  if (d.viscous && f.has_attr("/", "status")) d.status = f.attr_string("/", "status");
   for (const AttrSpec* p : ps) {
     Param v;
     if (std::string(p->group) == "/" && std::string(p->name) == "model") {
@@ -184,8 +188,9 @@ Comparison compare_results(const std::vector<std::string>& paths) {
   t += fmt::format("magnus compare: {} result file{}\n", n, n == 1 ? "" : "s");
   for (size_t i = 0; i < n; ++i) {
     const Param& title = files[i].params[0];
-    t +=
-        fmt::format("  {} {}{}\n", head[i], files[i].path, title.text ? "  — " + *title.text : std::string());
+    t += fmt::format("  {} {}{}{}\n", head[i], files[i].path,
+                     title.text ? "  — " + *title.text : std::string(),
+                     files[i].partial ? "  (PARTIAL: " + files[i].status + ")" : std::string());
   }
   auto row = [&](const std::string& label, const std::vector<std::string>& cells) {
     std::string s = pad_right("  " + label, label_w + 2);
@@ -208,15 +213,17 @@ Comparison compare_results(const std::vector<std::string>& paths) {
                    : "lift, drag, errors\n";
   for (const auto& [label, cells] : value_rows) row(label, cells);
 
-  // CSV: one row per file.
+  // CSV: one row per file; with navier-stokes files, whether each is partial (1), complete (0) or potential
+  // ("").
   std::string& c = out.csv;
-  c += "file,title";
+  c += any_viscous ? "file,title,partial" : "file,title";
   for (size_t k : differ)
     if (k != 0) c += std::string(",") + kParams[k]->name;
   for (const auto& q : kQuantities) c += std::string(",") + q.csv;
   c += "\n";
   for (const auto& f : files) {
     c += csv_field(f.path) + "," + csv_field(f.params[0].text.value_or(""));
+    if (any_viscous) c += f.viscous ? (f.partial ? ",1" : ",0") : ",";
     for (size_t k : differ)
       if (k != 0)
         c += "," + csv_field(f.params[k].text     ? *f.params[k].text

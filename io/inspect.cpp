@@ -185,6 +185,12 @@ std::string describe_flow(const ResultFile& f) {
                    f.attr_string("/", "software_version"));
   for (const char* k : {"model", "title"})
     if (f.has_attr("/", k)) s += fmt::format("{}: {}\n", k, f.attr_string("/", k));
+  // Why a navier-stokes run stopped, and loudly whether it stopped before its end (Ctrl-C, an error).
+  if (viscous && f.has_attr("/", "status")) {
+    const bool partial = f.has_attr("/", "partial") && f.attr_int("/", "partial") != 0;
+    s += fmt::format("status: {}{}\n", f.attr_string("/", "status"),
+                     partial ? " — a PARTIAL result (stopped before its end: /@partial = 1)" : "");
+  }
   s += group_text(f, "/parameters", "parameters", version >= 2);
   s += group_text(f, "/forces", "forces", version >= 2);
   s += group_text(f, "/errors", "errors", version >= 2);

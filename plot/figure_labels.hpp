@@ -23,10 +23,12 @@ inline std::string flow_label(const Case& c) {
   return s;
 }
 
-/// flow_label, with the Reynolds number of a navier-stokes result.
+/// flow_label, with the Reynolds number of a navier-stokes result and " (partial)" for a run stopped before
+/// its end (every title of its pictures says so).
 inline std::string flow_label(const FlowResult& r) {
   std::string s = flow_label(r.c);
   if (r.viscous && r.viscous->reynolds) s += fmt::format(", Re = {}", num(*r.viscous->reynolds, 4));
+  if (r.viscous && r.viscous->partial) s += " (partial)";
   return s;
 }
 

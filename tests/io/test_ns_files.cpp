@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "io/compare.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/inspect.hpp"
 #include "io/result_reader.hpp"
@@ -188,4 +189,30 @@ TEST_CASE("a steady grid study: its grids and Richardson values in /steady_study
   r.viscous->steady_study.reset();
   write_result(r, dir + "/u.h5");
   CHECK_FALSE(ResultFile(dir + "/u.h5").has("/steady_study"));
+}
+
+TEST_CASE("a partial navier-stokes file says so in inspect and compare", "[io][inspect][compare][viscous]") {
+  const std::string dir = test::temp_dir("ns-partial");
+  FlowResult r = test::viscous_result_by_hand(1.0, 16, 10, 0);
+  write_result(r, dir + "/done.h5");
+  r.viscous->partial = true;
+  r.viscous->status = "interrupted";
+  write_result(r, dir + "/part.h5");
+  const std::string s = describe_result(dir + "/part.h5");
+  CAPTURE(s);
+  CHECK(s.find("\nstatus: interrupted — a PARTIAL result (stopped before its end: /@partial = 1)\n") !=
+        std::string::npos);
+  const std::string d = describe_result(dir + "/done.h5");
+  CHECK(d.find("\nstatus: periodic means converged\n") != std::string::npos);
+  CHECK(d.find("PARTIAL") == std::string::npos);
+
+  const Comparison c = compare_results({dir + "/done.h5", dir + "/part.h5"});
+  CAPTURE(c.table);
+  CHECK(c.table.find("  [2] " + dir + "/part.h5  — NS by hand  (PARTIAL: interrupted)\n") !=
+        std::string::npos);
+  CHECK(c.table.find("  [1] " + dir + "/done.h5  — NS by hand\n") != std::string::npos);
+  // The CSV: a partial column, 0 or 1.
+  CHECK(c.csv.rfind("file,title,partial,", 0) == 0);
+  CHECK(c.csv.find("\n" + dir + "/done.h5,NS by hand,0,") != std::string::npos);
+  CHECK(c.csv.find("\n" + dir + "/part.h5,NS by hand,1,") != std::string::npos);
 }

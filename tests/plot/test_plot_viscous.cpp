@@ -113,6 +113,19 @@ TEST_CASE("forces against time: C_L and C_D of the history in D/U, the means and
   REQUIRE_THROWS_AS(force_history_figure(none), std::runtime_error);
 }
 
+TEST_CASE("a partial result's pictures say so in their titles", "[plot][viscous]") {
+  FlowResult r = test::viscous_result_by_hand(1.0, 32, 16, 0);
+  CHECK(force_history_figure(r).page.title.find("partial") == std::string::npos);
+  r.viscous->partial = true;
+  const std::string mark = ", Re = 100 (partial)";
+  CHECK(force_history_figure(r).page.title.find(mark) != std::string::npos);
+  CHECK(shear_stress_figure(r).page.title.find(mark) != std::string::npos);
+  CHECK(surface_cp_figure(r).page.title.find(mark) != std::string::npos);
+  CHECK(vorticity_picture(r).view.title.find(mark) != std::string::npos);
+  CHECK(streamline_picture(r).view.title.find(mark) != std::string::npos);
+  CHECK(cp_picture(r).view.title.find(mark) != std::string::npos);
+}
+
 TEST_CASE("wall shear stress against θ, with the separation points", "[plot][viscous]") {
   const FlowResult r = test::viscous_result_by_hand(1.0, 32, 16, 0);
   const CurveFigure fig = shear_stress_figure(r);
