@@ -213,7 +213,8 @@ std::string describe_flow(const ResultFile& f) {
     std::string units = dataset_units(name);
     if (units.empty()) units = f.has_attr(name, "units") ? f.attr_string(name, "units") : "?";
     const DatasetSpec* d = find_dataset(name);
-    s += fmt::format("  {}({})  [{}]{}\n", padded(name, 24), dims_text(shape), units, d ? "  " + d->description : "");
+    s += fmt::format("  {}({})  [{}]{}\n", padded(name, 24), dims_text(shape), units,
+                     d ? "  " + description_of(*d, viscous) : "");
     // Read every value back: HDF5 verifies the checksums (Fletcher-32) on the way, so a damaged file is
     // reported here rather than found later by whoever uses the numbers.
     values += f.dataset(name).size();

@@ -167,7 +167,7 @@ Json inspect_flow(const ResultFile& f) {
     std::string units = dataset_units(name);
     if (units.empty() && f.has_attr(name, "units")) units = f.attr_string(name, "units");
     q["units"] = units;
-    if (const DatasetSpec* d = find_dataset(name)) q["description"] = d->description;
+    if (const DatasetSpec* d = find_dataset(name)) q["description"] = description_of(*d, is_viscous(f));
     ds.push_back(std::move(q));
   }
   j["datasets"] = std::move(ds);

@@ -44,7 +44,7 @@ void write_snapshots(const FlowResult& r, H5Writer& w) {
     const std::vector<double> v = d.values(r);
     const std::string name = d.path.substr(d.path.rfind('/') + 1);
     const std::vector<size_t> shape = name == "t" ? std::vector<size_t>{n} : std::vector<size_t>{n, nr, nt};
-    w.dataset(g, name, shape, v.data(), d.units, d.description);
+    w.dataset(g, name, shape, v.data(), d.units, description_of(d, true));
   }
   w.make_scale("/snapshots/t", "t");
   for (const DatasetSpec& d : result_datasets())
@@ -104,7 +104,8 @@ void write_file(const FlowResult& r, H5Writer& w) {
     if (d.shape == DataShape::grid) shape = {nr, nt};
     if (shape[0] * (shape.size() > 1 ? shape[1] : 1) != v.size())
       throw std::runtime_error(fmt::format("{} has {} values, not {} × {}", d.path, v.size(), nr, nt));
-    w.dataset(group(group_of(d.path)), name, shape, v.data(), d.units, d.description);
+    w.dataset(group(group_of(d.path)), name, shape, v.data(), d.units,
+              description_of(d, r.viscous.has_value()));
     if (d.shape == DataShape::grid) on_grid.push_back(d.path);
     if (d.shape == DataShape::n_theta && d.path != "/grid/theta") on_theta.push_back(d.path);
   }

@@ -67,7 +67,13 @@ struct DatasetSpec {
   /// Put values read from a file back into a result; may be empty.
   std::function<void(FlowResult&, std::vector<double>)> set;
   Models models = Models::all;
+  /// The description in a navier-stokes result where the model computes it otherwise (the pressure: the
+  /// pressure Poisson equation, not Bernoulli); empty: `description` for both models.
+  std::string viscous_description = {};
 };
+
+/// The one-line description of d as a result of the given model (viscous: navier-stokes).
+const std::string& description_of(const DatasetSpec& d, bool viscous);
 
 /// Every attribute, in file order.
 const std::vector<AttrSpec>& result_attributes();

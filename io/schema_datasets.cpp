@@ -12,6 +12,12 @@ using namespace schema_build;
 
 using Member = std::vector<double> Fields::*;
 
+/// d, described otherwise in a navier-stokes result.
+DatasetSpec described_viscous(DatasetSpec d, const char* viscous_description) {
+  d.viscous_description = viscous_description;
+  return d;
+}
+
 DatasetSpec field(const char* name, const char* units, const char* description, Member m) {
   return {std::string("/fields/") + name,
           units,
@@ -134,7 +140,8 @@ std::vector<DatasetSpec> make_datasets() {
        DataShape::n_r, [](const FlowResult& r) { return r.grid.r; },
        [](FlowResult& r, std::vector<double> v) { r.grid.r = std::move(v); }},
       {"/grid/theta", "rad",
-       "angle θ_j of grid column j from the freestream direction, counter-clockwise (wind frame; dimension scale)",
+       "angle θ_j of grid column j from the freestream direction, counter-clockwise (wind frame; dimension "
+       "scale)",
        DataShape::n_theta, [](const FlowResult& r) { return r.grid.theta; },
        [](FlowResult& r, std::vector<double> v) { r.grid.theta = std::move(v); }},
       {"/grid/x",
@@ -154,7 +161,9 @@ std::vector<DatasetSpec> make_datasets() {
       field("u_theta", "m/s", "angular velocity u_θ = −∂ψ/∂r", &Fields::u_theta),
       world_velocity("u_x", "velocity component along the world +x", false),
       world_velocity("u_y", "velocity component along the world +y", true),
-      field("pressure", "Pa", "pressure p = p∞ + ½ρ(U² − |u|²)", &Fields::pressure),
+      described_viscous(field("pressure", "Pa", "pressure p = p∞ + ½ρ(U² − |u|²)", &Fields::pressure),
+                        "pressure from the pressure Poisson equation ∇²p = 2ρ(∂u_x/∂x ∂u_y/∂y − ∂u_x/∂y "
+                        "∂u_y/∂x), fixed to p∞ far upstream"),
       field("cp", "1", "pressure coefficient (p − p∞)/(½ρU²) (undefined when U = 0)", &Fields::cp),
       only(Models::potential,
            field("psi_exact", "m^2/s", "exact stream function on the same grid", &Fields::psi_exact)),
@@ -172,28 +181,33 @@ std::vector<DatasetSpec> make_datasets() {
       only(Models::potential,
            stagnation("r", "m", "radius of each stagnation point, numeric (sorted by θ)", false, false)),
       only(Models::potential,
-           stagnation("theta", "rad", "angle of each stagnation point from the freestream direction, numeric, in [0, 2π)", false, true)),
+           stagnation("theta", "rad",
+                      "angle of each stagnation point from the freestream direction, numeric, in [0, 2π)",
+                      false, true)),
       only(Models::potential,
            stagnation("r_exact", "m", "radius of each stagnation point, exact", true, false)),
       only(Models::potential,
-           stagnation("theta_exact", "rad", "angle of each stagnation point from the freestream direction, exact, in [0, 2π)", true, true)),
-      only(Models::viscous, {"/separation/theta",
-                             "rad",
-                             "angles where the wall shear stress changes sign (separation, reattachment)",
-                             DataShape::points,
-                             [](const FlowResult& r) {
-                               return r.viscous ? r.viscous->separation : std::vector<double>();
-                             },
-                             [](FlowResult& r, std::vector<double> v) { vis(r).separation = std::move(v); }}),
+           stagnation("theta_exact", "rad",
+                      "angle of each stagnation point from the freestream direction, exact, in [0, 2π)", true,
+                      true)),
+      only(Models::viscous,
+           {"/separation/theta", "rad",
+            "angles where the wall shear stress changes sign (separation, reattachment)", DataShape::points,
+            [](const FlowResult& r) { return r.viscous ? r.viscous->separation : std::vector<double>(); },
+            [](FlowResult& r, std::vector<double> v) { vis(r).separation = std::move(v); }}),
       history("t", "s", "time of each step", &ForceSample::t),
-      {"/history/t_convective", "1", "time of each step in convective units D/U", DataShape::steps,
+      {"/history/t_convective",
+       "1",
+       "time of each step in convective units D/U",
+       DataShape::steps,
        [](const FlowResult& r) {
          std::vector<double> v;
          if (r.viscous)
            for (const ForceSample& f : r.viscous->history) v.push_back(f.t / r.viscous->time_unit);
          return v;
        },
-       {}, Models::viscous},
+       {},
+       Models::viscous},
       history("cl", "1", "lift coefficient", &ForceSample::C_L),
       history("cd", "1", "drag coefficient", &ForceSample::C_D),
       history("cm", "1", "torque coefficient", &ForceSample::C_M),
@@ -223,6 +237,10 @@ std::vector<const DatasetSpec*> field_datasets() {
   for (const auto& d : result_datasets())
     if (d.path.rfind("/fields/", 0) == 0) out.push_back(&d);
   return out;
+}
+
+const std::string& description_of(const DatasetSpec& d, bool viscous) {
+  return viscous && !d.viscous_description.empty() ? d.viscous_description : d.description;
 }
 
 const DatasetSpec* find_dataset(const std::string& path) {

@@ -216,3 +216,22 @@ TEST_CASE("a partial navier-stokes file says so in inspect and compare", "[io][i
   CHECK(c.csv.find("\n" + dir + "/done.h5,NS by hand,0,") != std::string::npos);
   CHECK(c.csv.find("\n" + dir + "/part.h5,NS by hand,1,") != std::string::npos);
 }
+
+TEST_CASE(
+    "/fields/pressure: Bernoulli's for potential flow, the pressure Poisson equation's for navier-stokes",
+    "[io][format][viscous]") {
+  const std::string dir = test::temp_dir("ns-pressure-description");
+  write_result(test::viscous_result_by_hand(1.0, 16, 10, 0), dir + "/ns.h5");
+  Case c = test::make_case(1.0, 16);
+  c.output.fields.reset();  // every field
+  write_result(run_case(c), dir + "/pot.h5");
+  const std::string bernoulli = "pressure p = p∞ + ½ρ(U² − |u|²)";
+  const std::string poisson =
+      "pressure from the pressure Poisson equation ∇²p = 2ρ(∂u_x/∂x ∂u_y/∂y − ∂u_x/∂y ∂u_y/∂x), fixed to p∞ "
+      "far upstream";
+  CHECK(ResultFile(dir + "/pot.h5").attr_string("/fields/pressure", "description") == bernoulli);
+  CHECK(ResultFile(dir + "/ns.h5").attr_string("/fields/pressure", "description") == poisson);
+  CHECK(describe_result(dir + "/ns.h5").find("[Pa]  " + poisson + "\n") != std::string::npos);
+  CHECK(describe_result(dir + "/ns.h5").find("Bernoulli") == std::string::npos);
+  CHECK(describe_result(dir + "/pot.h5").find("[Pa]  " + bernoulli + "\n") != std::string::npos);
+}
