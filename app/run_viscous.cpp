@@ -71,8 +71,8 @@ FlowResult run_viscous_case(const Case& c, bool resume, bool quiet, int threads)
         const double rate = el > 0.0 ? (s.t - t0) / el : 0.0;  // simulated s per wall s
         const std::string coeffs = f.C_L ? fmt::format("C_L = {:+.4f}  C_D = {:.4f}", *f.C_L, *f.C_D)
                                          : fmt::format("M = {:+.4g} N·m/m", f.M);
-        std::fprintf(stderr, "\r  t = %.1f D/U of %.0f  %s  %.0f steps/s  ETA ≤ %s   ", s.t / unit,
-                     c.time.end, coeffs.c_str(), double(steps) / std::max(el, 1e-9),
+        std::fprintf(stderr, "\r  t = %.1f %s of %.0f  %s  %.0f steps/s  ETA ≤ %s   ", s.t / unit,
+                     time_unit_name(c.scene), c.time.end, coeffs.c_str(), double(steps) / std::max(el, 1e-9),
                      rate > 0.0 ? clock_text((t_end - s.t) / rate).c_str() : "?");
         std::fflush(stderr);
         printed = true;

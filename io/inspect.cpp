@@ -133,10 +133,13 @@ std::string time_series_text(const ResultFile& f) {
   std::string s = "\ntime series\n";
   const double unit =
       f.has_attr("/parameters", "time_unit") ? f.attr_double("/parameters", "time_unit") : 0.0;
+  // D/U, or D/(a|ω|) for a cylinder spinning in still fluid.
+  const bool still = f.has_attr("/parameters", "speed") && !(f.attr_double("/parameters", "speed") > 0.0);
+  const char* unit_name = still ? "D/(a|ω|)" : "D/U";
   auto span = [&](const std::vector<double>& t) {
     if (t.empty()) return std::string();
     std::string out = fmt::format(", t = {:.6g} … {:.6g} s", t.front(), t.back());
-    if (unit > 0) out += fmt::format(" ({:.6g} … {:.6g} D/U)", t.front() / unit, t.back() / unit);
+    if (unit > 0) out += fmt::format(" ({:.6g} … {:.6g} {})", t.front() / unit, t.back() / unit, unit_name);
     return out;
   };
   const std::vector<double> h = f.has("/history/t") ? f.dataset("/history/t") : std::vector<double>();

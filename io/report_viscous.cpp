@@ -10,6 +10,7 @@
 #include "io/report_scene.hpp"
 #include "io/report_steady.hpp"
 #include "io/text_format.hpp"
+#include "postproc/viscous_run.hpp"
 
 namespace magnus {
 
@@ -72,9 +73,10 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
     line("run", fmt::format("steady state by Newton's method, {} ({:.0f} ms)", wall(r.timing.total_s),
                             1e3 * r.timing.total_s));
   else
-    line("run", fmt::format("t = {} s = {} D/U, {} steps of Δt = {} s ({} D/U), {} ({:.0f} steps/s)",
-                            num(v.t), num(v.t / unit, "{:.5g}"), v.steps, num(v.dt, "{:.4g}"),
-                            num(v.dt / unit, "{:.4g}"), wall(r.timing.total_s), steps_per_s));
+    line("run",
+         fmt::format("t = {} s = {} {}, {} steps of Δt = {} s ({} {}), {} ({:.0f} steps/s)", num(v.t),
+                     num(v.t / unit, "{:.5g}"), time_unit_name(sc), v.steps, num(v.dt, "{:.4g}"),
+                     num(v.dt / unit, "{:.4g}"), time_unit_name(sc), wall(r.timing.total_s), steps_per_s));
   line("", fmt::format("stopped: {}{}", v.status, v.partial ? " — a PARTIAL result (the file says so)" : ""));
   if (!v.converged && !v.partial)
     line("", "not converged: the means below are the last period's (or the last step's); raise time.end");
@@ -128,11 +130,11 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
     line("recirculation", fmt::format("L/D = {:.4f} (steady)", *v.recirculation_length));
   s += steady_study_text(v);
   if (v.eigenvalue_real && v.eigenvalue_imag)
-    line("stability",
-         fmt::format("steady state's leading eigenvalue λ·D/U = {:+.5f} {:+.5f}i ({}; St {:.4f})",
-                     *v.eigenvalue_real, *v.eigenvalue_imag,
-                     *v.eigenvalue_real < 0.0 ? "stable" : "unstable: it sheds",
-                     std::fabs(*v.eigenvalue_imag) / (2.0 * M_PI)));
+    line("stability", fmt::format("steady state's leading eigenvalue λ·{} = {:+.5f} {:+.5f}i ({}; St {})",
+                                  time_unit_name(sc), *v.eigenvalue_real, *v.eigenvalue_imag,
+                                  *v.eigenvalue_real < 0.0 ? "stable" : "unstable: it sheds",
+                                  moving ? fmt::format("{:.4f}", std::fabs(*v.eigenvalue_imag) / (2.0 * M_PI))
+                                         : std::string("undefined (U = 0)")));
   if (v.reynolds && above_laminar_range(*v.reynolds))
     line("note",
          fmt::format("Re = {:.6g} > {:.0f}: real flow past a cylinder is three-dimensional there; this is "

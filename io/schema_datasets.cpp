@@ -198,7 +198,7 @@ std::vector<DatasetSpec> make_datasets() {
       history("t", "s", "time of each step", &ForceSample::t),
       {"/history/t_convective",
        "1",
-       "time of each step in convective units D/U",
+       "time of each step in convective units D/U (D/(a|ω|) when U = 0)",
        DataShape::steps,
        [](const FlowResult& r) {
          std::vector<double> v;

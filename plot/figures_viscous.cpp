@@ -51,7 +51,7 @@ CurveFigure force_history_figure(const FlowResult& r) {
   const double unit = v.time_unit > 0.0 ? v.time_unit : 1.0;
   CurveFigure f;
   f.page.title = case_title(r.c.title) + ": forces against time, " + flow_label(r);
-  f.page.xlabel = v.time_unit > 0.0 ? "time t U/D" : "time t (s)";
+  f.page.xlabel = v.time_unit <= 0.0 ? "time t (s)" : r.c.scene.speed > 0.0 ? "time t U/D" : "time t a|ω|/D";
   if (v.time_unit > 0.0 && v.history.back().t / unit > 10.0)
     f.page.xlabel += " (from 2: the impulsive start's force peak is left out)";
   f.page.ylabel = "C_L, C_D (on ½ρU^2·D)";

@@ -32,6 +32,9 @@ void break_symmetry(const NsParams& p, const PolarGrid& g, NsState& s) {
 
 }  // namespace
 
+const char* time_unit_name(const Scene& s) { return s.speed > 0.0 ? "D/U" : "D/(a|ω|)"; }
+const char* rate_unit_name(const Scene& s) { return s.speed > 0.0 ? "U/D" : "a|ω|/D"; }
+
 NsParams ns_params(const Case& c) {
   NsParams p;
   const Scene& s = c.scene;
@@ -248,8 +251,10 @@ AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g) {
   }
   const std::complex<double> l = st.eigenvalues.front();
   a.eigenvalue = l;
+  // St = f·D/U needs a stream: in still fluid (U = 0) the eigenvalues are in a|ω|/D and St is undefined.
   const std::string lam =
-      fmt::format("leading eigenvalue {:.4g} {:+.4g}i U/D, St {:.4g}", l.real(), l.imag(), st.strouhal());
+      fmt::format("leading eigenvalue {:.4g} {:+.4g}i {}, St {}", l.real(), l.imag(), rate_unit_name(c.scene),
+                  p.U > 0.0 ? fmt::format("{:.4g}", st.strouhal()) : "undefined (U = 0)");
   if (st.stable)
     a.steady =
         steady_result(c, p, g, nr.state,
@@ -306,10 +311,10 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
     const double limit = cfl_time_step(p, g, start.psi, 0.9 * kNsCflLimit);
     if (p.dt > limit)
       throw std::invalid_argument(fmt::format(
-          "time.dt = {:g} (D/U) is above {:.4g} D/U, the stability limit {} on this grid (CFL {:g}): leave "
-          "it out "
+          "time.dt = {:g} ({}) is above {:.4g} {}, the stability limit {} on this grid (CFL {:g}): leave it "
+          "out "
           "or lower it",
-          c.time.dt, limit / unit,
+          c.time.dt, time_unit_name(sc), limit / unit, time_unit_name(sc),
           resume
               ? "of the state it resumes from"
               : "at the start (from rest, where the flow is fastest; the Δt that time.cfl picks grows as the "

@@ -8,6 +8,11 @@
 
 namespace magnus {
 
+/// The convective time unit's name: "D/U", or "D/(a|ω|)" for a cylinder spinning in still fluid (U = 0).
+const char* time_unit_name(const Scene& s);
+/// The rate unit's name (eigenvalues, growth rates): "U/D", or "a|ω|/D" when U = 0.
+const char* rate_unit_name(const Scene& s);
+
 /// The viscous model's parameters of a case (SI): a, U, ω, ν, R/a, n_θ, n_r, Δt (s) and the CFL number.
 NsParams ns_params(const Case& c);
 

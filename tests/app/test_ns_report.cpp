@@ -143,3 +143,32 @@ TEST_CASE("navier-stokes case: Re below 0.01 is refused, a viscous length beyond
   REQUIRE(f.status == 0);
   CHECK(f.out.find("viscous length") == std::string::npos);
 }
+
+TEST_CASE("navier-stokes summary at U = 0: times in D/(a|ω|), no Strouhal number", "[app][ns][report]") {
+  const std::string dir = test::temp_dir("ns-report-still");
+  const std::vector<std::string> still = {"flow.speed=0", "flow.viscosity=1e-6", "cylinder.spin=2"};
+  const auto o = run(dir, still);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  CAPTURE(o.out);
+  CHECK(o.out.find("D/U") == std::string::npos);
+  CHECK(o.out.find("U/D") == std::string::npos);
+  CHECK(std::regex_search(o.out,
+                          std::regex("stopped: auto: stable \\(leading eigenvalue -0\\.[0-9]+ \\+0\\.[0-9]+i "
+                                     "a\\|ω\\|/D, St undefined \\(U = 0\\)\\)")));
+  CHECK(std::regex_search(
+      o.out, std::regex("\nstability      steady state's leading eigenvalue λ·D/\\(a\\|ω\\|\\) = "
+                        "-0\\.[0-9]+ \\+0\\.[0-9]+i \\(stable; St undefined \\(U = 0\\)\\)\n")));
+  std::vector<std::string> marched = still;
+  marched.push_back("time.mode=unsteady");
+  const auto m = run(dir, marched, "m.h5");
+  REQUIRE(m.status == 0);
+  CHECK(std::regex_search(m.out,
+                          std::regex("\nrun            t = 2 s = 2 D/\\(a\\|ω\\|\\), [0-9]+ steps of Δt = "
+                                     "[0-9.e-]+ s \\([0-9.e-]+ D/\\(a\\|ω\\|\\)\\)")));
+  CHECK(m.out.find("D/U") == std::string::npos);
+  const auto i = test::magnus_cmd({"inspect", dir + "/m.h5"}, dir);
+  REQUIRE(i.status == 0);
+  CHECK(i.out.find("D/U)") == std::string::npos);
+  CHECK(i.out.find(" D/(a|ω|))\n") != std::string::npos);
+}
