@@ -75,8 +75,7 @@ Json eig_json(const StabilityResult& s) {
 void command_stability(const StabilityCliOptions& o) {
   if (o.critical.empty() && !o.tolerance.empty())
     throw std::invalid_argument("--tolerance: only used with --critical-spin A:B (the bisection's bracket width)");
-  const std::optional<CriticalRange> range =
-      o.critical.empty() ? std::nullopt : std::optional<CriticalRange>(parse_critical(o));
+  const CriticalRange range = o.critical.empty() ? CriticalRange{} : parse_critical(o);
   const Case c = load_case(o.case_path, o.sets);
   if (c.model != FlowModel::navier_stokes)
     throw std::runtime_error(o.case_path + ": magnus stability needs model.flow = \"navier-stokes\"");
@@ -104,8 +103,8 @@ void command_stability(const StabilityCliOptions& o) {
     j = {{"reynolds", p.reynolds()}, {"spin_ratio", alpha}, {"stable", st.stable}, {"eigenvalues", eig_json(st)},
          {"seconds", s.newton_seconds + st.seconds}, {"solves", st.solves}};
   } else {
-    const double A = range->A, B = range->B;
-    const CriticalSpin cs = critical_spin(p, A, B, range->tolerance, [&](const SpinStability& s) {
+    const double A = range.A, B = range.B;
+    const CriticalSpin cs = critical_spin(p, A, B, range.tolerance, [&](const SpinStability& s) {
       if (!o.json)
         std::fprintf(stderr, "  α = %-9.5g growth rate %+.5f U/D  (%s)\n", s.alpha, s.growth(),
                      s.growth() < 0.0 ? "stable" : "unstable");

@@ -57,6 +57,12 @@ void command_ns_sweep(const SweepOptions& o, const Case& c, const SweepRange& al
   NsMapOptions mo;
   mo.alphas = alphas.values;
   if (!o.reynolds.empty()) mo.reynolds = parse_sweep_range(o.reynolds, "--reynolds").values;
+  for (double re : mo.reynolds)
+    if (!(re >= kNsMinReynolds))
+      throw std::invalid_argument(fmt::format(
+          "--reynolds {}: Re = {:g} is below {:g}, the floor of the navier-stokes model (the viscous length D/Re "
+          "would exceed {:g} D)",
+          o.reynolds, re, kNsMinReynolds, 1.0 / kNsMinReynolds));
   if (!o.shard.empty()) std::tie(mo.shard, mo.shards) = parse_shard(o.shard);
   // Bad shards fail before any solve.
   shard_rows(mo.reynolds.empty() ? 1 : int(mo.reynolds.size()), mo.shard, mo.shards);

@@ -11,6 +11,7 @@
 #include "io/case_file.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/json_output.hpp"
+#include "io/report_viscous.hpp"
 #include "io/text_format.hpp"
 
 namespace magnus {
@@ -120,10 +121,10 @@ std::string ns_map_table(const NsMap& m) {
   t += fmt::format("\n{:<13}{:.2f} s on {} thread{} ({})\n", "time", m.total_s, m.threads,
                    m.threads == 1 ? "" : "s", m.continued_in_re() ? "one branch in Re: in order" : "rows in parallel");
   const double re_max = *std::max_element(m.reynolds.begin(), m.reynolds.end());
-  if (re_max > 200.0 * (1.0 + 1e-9))
-    t += fmt::format("{:<13}Re up to {:g} > 200: real flow is three-dimensional there; this 2D laminar map "
+  if (above_laminar_range(re_max))
+    t += fmt::format("{:<13}Re up to {:g} > {:g}: real flow is three-dimensional there; this 2D laminar map "
                      "is not what a real cylinder sees\n",
-                     "note", re_max);
+                     "note", re_max, kReynolds3D);
   t += "\n";
   t += fmt::format("{:>7} {:>6} {:>9} {:>8} {:>8} {:>9} {:>8} {:>7} {:>6} {:>16} {:>6} {:>4} {:>7}\n", "Re",
                    "α", "C_L", "C_D", "C_M", "C_L,ideal", "S/2πρa²", "St", "stable", "source", "Newton",

@@ -298,7 +298,7 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
   NsState start;
   if (resume) {
     start = resume->state;
-    if (start.psi.size() != g.nodes() || start.zeta.size() != g.nodes())
+    if (start.psi.size() != size_t(g.nodes()) || start.zeta.size() != size_t(g.nodes()))
       throw std::invalid_argument("the checkpoint's grid is not the case's grid");
   } else {
     start = impulsive_start(p, g);

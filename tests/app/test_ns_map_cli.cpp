@@ -44,6 +44,10 @@ TEST_CASE("navier-stokes sweep --reynolds alone: the case's α continued in Re, 
   INFO(o.err);
   REQUIRE(o.status == 0);
   CHECK(o.out.find("continued in Re at α = 1") != std::string::npos);
+  CHECK(o.out.find("three-dimensional") == std::string::npos);  // Re ≤ 200
+  const Outcome high = magnus_cmd({"sweep", dir + "/c.toml", "--reynolds", "150:250:100", "--steady-only"}, dir);
+  REQUIRE(high.status == 0);
+  CHECK(high.out.find("Re up to 250 > 200: real flow is three-dimensional") != std::string::npos);
   CHECK(fs::file_size(dir + "/re.png") > 10000);  // S against Re, one curve
   // The same points as rows of a map, each row started from the potential flow.
   REQUIRE(magnus_cmd({"sweep", dir + "/c.toml", "--spin-ratio", "1:1:1", "--reynolds", "20:60:20",
@@ -142,6 +146,9 @@ TEST_CASE("navier-stokes sweep: nothing drawable or '-' for a binary output is r
   for (const Bad& b : {Bad{{"sweep", c, "--spin-ratio", "0:0:1", "--reynolds", "20:40:20", "--csv", dir + "/o.csv",
                             "-o", dir + "/o.h5", "--plot", dir + "/o.png"},
                            "undefined at α = 0"},
+                       Bad{{"sweep", c, "--spin-ratio", "0:1:1", "--reynolds", "0.001:0.002:0.001", "-o",
+                            dir + "/o.h5"},
+                           "below 0.01, the floor"},
                        Bad{{"sweep", c, "--spin-ratio", "0:1:1", "-o", "-"}, "cannot go to standard output"},
                        Bad{{"sweep", c, "--spin-ratio", "0:1:1", "--plot", "-"}, "cannot go to standard output"},
                        Bad{{"run", c, "-o", "-"}, "cannot go to standard output"},
