@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 
 #include "io/checkpoint.hpp"
 #include "io/hdf5_io.hpp"
@@ -22,6 +23,13 @@ volatile std::sig_atomic_t g_interrupted = 0;
 extern "C" void on_sigint(int) {
   g_interrupted = 1;
   std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the program at once
+}
+
+/// Before the march: Ctrl-C ends the program at once, as by default (also where the shell started it with
+/// SIGINT ignored, as it does for a background job).
+extern "C" void on_sigint_now(int) {
+  std::signal(SIGINT, SIG_DFL);
+  std::raise(SIGINT);
 }
 
 /// Ctrl-C stops the run at the next step (a partial result is written) while this lives.
@@ -59,8 +67,13 @@ FlowResult run_viscous_case(const Case& c, bool resume, bool quiet, int threads)
   const char* kill_at = std::getenv("MAGNUS_TEST_KILL_AT");
   const double t_kill = kill_at ? std::atof(kill_at) * unit : -1.0;
 
+  // Ctrl-C stops the march at the next step with a partial result; before the march (the Newton solve and
+  // stability test of time.mode "steady" or "auto") nothing is computed yet that a result could keep, so
+  // there Ctrl-C ends the program at once: the handler is installed with the first step.
+  std::optional<InterruptGuard> guard;
   ViscousHooks hooks;
   hooks.on_step = [&](const NsState& s, const ViscousForces& f) {
+    if (!guard) guard.emplace();
     ++steps;
     if (t_kill >= 0.0 && s.t >= t_kill) std::raise(SIGKILL);
     if (progress) {
@@ -71,7 +84,7 @@ FlowResult run_viscous_case(const Case& c, bool resume, bool quiet, int threads)
         const double rate = el > 0.0 ? (s.t - t0) / el : 0.0;  // simulated s per wall s
         const std::string coeffs = f.C_L ? fmt::format("C_L = {:+.4f}  C_D = {:.4f}", *f.C_L, *f.C_D)
                                          : fmt::format("M = {:+.4g} N·m/m", f.M);
-        std::fprintf(stderr, "\r  t = %.1f %s of %.0f  %s  %.0f steps/s  ETA ≤ %s   ", s.t / unit,
+        std::fprintf(stderr, "\r\033[K  t = %.1f %s of %.0f  %s  %.0f steps/s  ETA ≤ %s   ", s.t / unit,
                      time_unit_name(c.scene), c.time.end, coeffs.c_str(), double(steps) / std::max(el, 1e-9),
                      rate > 0.0 ? clock_text((t_end - s.t) / rate).c_str() : "?");
         std::fflush(stderr);
@@ -82,16 +95,26 @@ FlowResult run_viscous_case(const Case& c, bool resume, bool quiet, int threads)
   };
   hooks.on_checkpoint = [&](const Checkpoint& cp) { write_checkpoint(ckpt, c, cp); };
 
-  FlowResult r;
-  {
-    InterruptGuard guard;
-    try {
-      r = run_viscous(c, hooks, start.get(), threads);
-    } catch (...) {
-      if (printed) std::fputs("\n", stderr);
-      throw;
-    }
+  if (progress && !start && c.time.mode != TimeMode::unsteady) {
+    std::fputs(c.time.mode == TimeMode::steady
+                   ? "  solving the steady equations by Newton's method (Ctrl-C stops) …"
+                   : "  auto: looking for a stable steady state (Newton's method, eigenvalues; Ctrl-C stops) …",
+               stderr);
+    std::fflush(stderr);
+    printed = true;
   }
+  FlowResult r;
+  void (*before_march)(int) = std::signal(SIGINT, on_sigint_now);
+  try {
+    r = run_viscous(c, hooks, start.get(), threads);
+  } catch (...) {
+    guard.reset();
+    std::signal(SIGINT, before_march);
+    if (printed) std::fputs("\n", stderr);
+    throw;
+  }
+  guard.reset();
+  std::signal(SIGINT, before_march);
   if (printed) std::fputs("\n", stderr);
   write_result(r, c.output.file, c.output.compression);
   // Complete: the checkpoint has served. Interrupted: run_viscous checkpointed the last state, so

@@ -3,7 +3,11 @@
 // before solving when nothing would be drawable, and `magnus stability` with its refusals.
 #include <catch2/catch.hpp>
 
+#include <sys/wait.h>
+
 #include <cmath>
+#include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -243,4 +247,20 @@ TEST_CASE("navier-stokes auto run: an unstable steady state is marched and the r
   CHECK(j["forces"]["eigenvalue_real"]["value"].get<double>() > 0.0);
   CHECK(j["forces"]["strouhal"]["value"].get<double>() > 0.08);
   CHECK(j["forces"]["cl_amplitude"]["value"].get<double>() > 0.01);
+}
+
+TEST_CASE("navier-stokes run: Ctrl-C during the steady solve ends the program at once and writes nothing",
+          "[app][ns]") {
+  // The Re 40 grid study takes about 2 s of Newton solves; a Ctrl-C after 0.3 s must not be held until
+  // they end (there is no partial state to keep before the march): the run ends, and no file appears.
+  const std::string dir = temp_dir("ns-int-newton");
+  const std::string cmd = "'" + std::string(MAGNUS_EXE) + "' run '" + std::string(MAGNUS_SOURCE_DIR) +
+                          "/cases/re40_steady.toml' -o '" + dir + "/r.h5' >'" + dir + "/out.txt' 2>'" + dir +
+                          "/err.txt' & pid=$!; sleep 0.3; kill -INT $pid; wait $pid";
+  const int raw = std::system(cmd.c_str());
+  REQUIRE(WIFEXITED(raw));
+  CHECK(WEXITSTATUS(raw) == 128 + SIGINT);  // the shell's status of a job ended by SIGINT
+  CHECK_FALSE(fs::exists(dir + "/r.h5"));
+  CHECK_FALSE(fs::exists(dir + "/r.xmf"));
+  CHECK(slurp(dir + "/out.txt").empty());
 }
