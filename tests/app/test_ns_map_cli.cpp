@@ -1,6 +1,8 @@
-// The S(Re, α) map's command line beyond shards: --reynolds alone (one branch continued in Re), what an
-// unstable point reports, merge refusing shards that decided stability differently, the plot refused
-// before solving when nothing would be drawable, and `magnus stability` with its refusals.
+// The navier-stokes command line beyond runs and shards: the S(Re, α) map's --reynolds alone (one branch
+// continued in Re), what an unstable point reports, merge refusing shards that decided stability
+// differently, the plot refused before solving when nothing would be drawable, `magnus stability` with its
+// refusals, the bench's options, "auto" marching an unstable state, Ctrl-C before the march, and the
+// progress line on a terminal.
 #include <catch2/catch.hpp>
 
 #include <sys/wait.h>
@@ -11,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <string>
 
 #include "io/ns_sweep_file.hpp"
@@ -263,4 +266,56 @@ TEST_CASE("navier-stokes run: Ctrl-C during the steady solve ends the program at
   CHECK_FALSE(fs::exists(dir + "/r.h5"));
   CHECK_FALSE(fs::exists(dir + "/r.xmf"));
   CHECK(slurp(dir + "/out.txt").empty());
+}
+
+TEST_CASE("navier-stokes run: on a terminal a progress line shows t, C_L, C_D, steps/s and the ETA",
+          "[app][ns]") {
+  // script(1) (util-linux, in every Debian) gives the run a terminal; without one no progress is printed.
+  const std::string dir = temp_dir("ns-progress");
+  const std::string run = "'" + std::string(MAGNUS_EXE) + "' run '" + std::string(MAGNUS_SOURCE_DIR) +
+                          "/cases/re100_alpha1.toml' --set grid.n_theta=96 --set time.mode=unsteady --set "
+                          "time.end=40 -o '" + dir + "/r.h5'";
+  const int raw = std::system(("script -qec \"" + run + "\" /dev/null >'" + dir + "/tty.txt' 2>&1").c_str());
+  REQUIRE(WIFEXITED(raw));
+  REQUIRE(WEXITSTATUS(raw) == 0);
+  const std::string tty = slurp(dir + "/tty.txt");
+  const std::regex line(R"(t = [0-9.]+ D/U of 40  C_L = [-+][0-9.]+  C_D = [0-9.]+  [0-9]+ steps/s  ETA ≤ [0-9]+:[0-9]{2})");
+  CHECK(std::regex_search(tty, line));
+  const Outcome piped = magnus_cmd({"run", std::string(MAGNUS_SOURCE_DIR) + "/cases/re100_alpha1.toml", "--set",
+                                    "grid.n_theta=96", "--set", "time.mode=unsteady", "--set", "time.end=40",
+                                    "-o", dir + "/p.h5"},
+                                   dir);
+  REQUIRE(piped.status == 0);
+  CHECK(piped.err.find("ETA") == std::string::npos);  // not a terminal: no progress line
+}
+
+TEST_CASE("navier-stokes hard cases on a coarse grid: each a finite result with its error stated",
+          "[app][ns]") {
+  // α up to 6, Re from 1 to 200, U = 0 (still fluid), on n_θ = 32: every run ends with finite figures (a
+  // JSON document holds no NaN or inf), and the summary's wall-cell count says how far to trust them.
+  const std::string dir = temp_dir("ns-hard");
+  const std::string c = std::string(MAGNUS_SOURCE_DIR) + "/cases/re100_alpha1.toml";
+  struct Hard {
+    std::vector<std::string> sets;
+    bool coarse, unresolved, coefficients;
+  };
+  for (const Hard& h : {Hard{{"flow.reynolds=1", "cylinder.spin_ratio=6"}, true, false, true},
+                        Hard{{"flow.reynolds=200", "cylinder.spin_ratio=0"}, true, false, true},
+                        Hard{{"flow.reynolds=200", "cylinder.spin_ratio=6"}, true, true, true},
+                        Hard{{"flow.speed=0", "flow.viscosity=0.01", "cylinder.spin=2"}, false, false, false}}) {
+    std::vector<std::string> a = {"run", c, "-o", dir + "/h.h5", "--json", "--set", "grid.n_theta=32", "--set",
+                                  "time.mode=unsteady", "--set", "time.end=5"};
+    for (const auto& s : h.sets) a.insert(a.end(), {"--set", s});
+    const Outcome o = magnus_cmd(a, dir);
+    INFO(h.sets[0] << " " << h.sets[1] << ": " << o.err);
+    REQUIRE(o.status == 0);
+    const auto j = nlohmann::json::parse(o.out);
+    CHECK(j["forces"]["lift"]["value"].is_number());
+    CHECK(j["forces"]["torque"]["value"].is_number());
+    CHECK(j["forces"]["cl"]["value"].is_number() == h.coefficients);  // U = 0: undefined, null
+    if (h.coefficients) {
+      CHECK(j["derived"]["wall_cells_coarse"] == h.coarse);
+      CHECK(j["derived"]["wall_cells_unresolved"] == h.unresolved);
+    }
+  }
 }

@@ -30,9 +30,17 @@ TEST_CASE("the s_map case: 420 points within 5 minutes, the shedding onset near 
   for (int r = 4; r < 20; ++r) CHECK(at(r, 0).stable == std::optional<bool>(false));  // Re 50…200: sheds
   CHECK(at(9, 3).stable == std::optional<bool>(false));                               // Re 100, α 0.9: sheds
   CHECK(at(9, 8).stable == std::optional<bool>(true));  // Re 100, α 2.4: steady
+  // Re 100 near α = 5: the one-sided shedding window is narrow (α 5.1 sheds, slowly: St ≈ 0.12); beyond it
+  // the continued branch is unstable, but the flow marched from rest settles on another steady state.
+  CHECK(at(9, 17).source == MapSource::averaged_unstable);
+  CHECK(at(9, 17).strouhal > 0.05);
+  for (int k = 18; k <= 20; ++k) {
+    CHECK(at(9, k).source == MapSource::marched_steady);
+    CHECK(at(9, k).stable == std::optional<bool>(false));
+  }
   for (const auto& p : m.points)
     if (p.alpha > 0.0 && std::isfinite(p.ratio)) {
       CHECK(p.ratio > 0.0);
-      CHECK(p.ratio < 1.0);  // never more than the ideal lift
+      CHECK(p.ratio < 1.2);  // at α = 6 finer grids reach 1.03 of the ideal lift (README); this one less
     }
 }
