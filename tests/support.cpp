@@ -11,6 +11,17 @@
 
 namespace magnus::test {
 
+std::string line_of(const std::string& text, const std::string& label) {
+  for (size_t start = 0, nl; start < text.size(); start = nl + 1) {
+    nl = text.find('\n', start);
+    if (nl == std::string::npos) nl = text.size();
+    if (text.compare(start, label.size(), label) == 0) return text.substr(start, nl - start);
+  }
+  return "";
+}
+
+bool one_line(const std::string& s) { return !s.empty() && s.find('\n') == s.size() - 1; }
+
 std::string temp_dir(const std::string& name) {
   namespace fs = std::filesystem;
   const fs::path p = fs::temp_directory_path() / ("magnus-test-" + std::to_string(::getpid())) / name;

@@ -88,4 +88,10 @@ inline NsState sample_state(const PolarGrid& g, double t, const std::function<do
   return s;
 }
 
+/// The line of a text (a summary) that starts with label ("" if none).
+std::string line_of(const std::string& text, const std::string& label);
+
+/// True when s is exactly one line (non-empty, one newline, at its end): a refusal's message.
+bool one_line(const std::string& s);
+
 }  // namespace magnus::test

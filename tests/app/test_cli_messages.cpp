@@ -18,15 +18,6 @@ namespace {
 
 const std::string demo = std::string(MAGNUS_SOURCE_DIR) + "/cases/spin_ratio_1.toml";
 
-/// The line of a summary that starts with label ("" if none).
-std::string line_of(const std::string& text, const std::string& label) {
-  for (size_t start = 0, nl; start < text.size(); start = nl + 1) {
-    nl = text.find('\n', start);
-    if (nl == std::string::npos) nl = text.size();
-    if (text.compare(start, label.size(), label) == 0) return text.substr(start, nl - start);
-  }
-  return "";
-}
 
 /// The line after the one that starts with label.
 std::string line_after(const std::string& text, const std::string& label) {
@@ -46,18 +37,18 @@ TEST_CASE("summary: the given-circulation model labels each figure by its model"
                                     "[circulation]\nmodel = \"given\"\nvalue = -3.0\n[grid]\nn_theta = 32\n";
   const Outcome o = magnus_cmd({"run", dir + "/g.toml", "-o", dir + "/g.h5"}, dir);
   REQUIRE(o.status == 0);
-  CHECK(line_of(o.out, "case") ==
+  CHECK(test::line_of(o.out, "case") ==
         "case           a = 0.1 m, ω = 100 rad/s, U = 10 m/s, α = aω/U = 1, α_Γ = Γ/(2πaU) = "
         "-0.477465 (the given Γ sets the flow), ρ = 1.225 kg/m³");
-  CHECK(line_of(o.out, "circulation") == "circulation    Γ = -3 m²/s (given, not from the spin)");
-  CHECK(line_of(o.out, "C_L  ").find("seed estimate -4 (−4α: from ω, not from the given Γ)") !=
+  CHECK(test::line_of(o.out, "circulation") == "circulation    Γ = -3 m²/s (given, not from the spin)");
+  CHECK(test::line_of(o.out, "C_L  ").find("seed estimate -4 (−4α: from ω, not from the given Γ)") !=
         std::string::npos);
   CHECK(line_after(o.out, "C_L  ").find("KJ/seed = -0.750000 (= α_Γ·π/(2α): π/2 only when Γ = 2πa²ω)") !=
         std::string::npos);
   CHECK(line_after(o.out, "ΔP top−bottom").find(": the given Γ, not the spin, sets ΔP (exact 2α_Γ/α)") !=
         std::string::npos);
   CHECK(
-      line_of(o.out, "Magnus S").find("exact ρΓ/ω = -0.03675 kg/m (the given Γ)   seed 4ρa² = 0.049 kg/m") !=
+      test::line_of(o.out, "Magnus S").find("exact ρΓ/ω = -0.03675 kg/m (the given Γ)   seed 4ρa² = 0.049 kg/m") !=
       std::string::npos);
   CHECK(o.out.find("potential flow doubles") == std::string::npos);
   CHECK(o.out.find("2πρa²") == std::string::npos);
@@ -65,13 +56,13 @@ TEST_CASE("summary: the given-circulation model labels each figure by its model"
   const Outcome z =
       magnus_cmd({"run", dir + "/g.toml", "-o", dir + "/g.h5", "--set", "cylinder.spin=0"}, dir);
   REQUIRE(z.status == 0);
-  CHECK(line_of(z.out, "case").find("α = aω/U = 0, α_Γ = Γ/(2πaU) = -0.477465 (the given Γ sets the flow)") !=
+  CHECK(test::line_of(z.out, "case").find("α = aω/U = 0, α_Γ = Γ/(2πaU) = -0.477465 (the given Γ sets the flow)") !=
         std::string::npos);
-  CHECK(line_of(z.out, "C_L  ") ==
+  CHECK(test::line_of(z.out, "C_L  ") ==
         "C_L            numeric 2.987288752   Kutta–Joukowski 3   seed estimate undefined (ω = 0)");
   CHECK(line_after(z.out, "C_L  ").find("KJ/seed = undefined (ω = 0)") != std::string::npos);
-  CHECK(line_of(z.out, "ΔP top−bottom").find("seed 2ρUaω = undefined (ω = 0)") != std::string::npos);
-  CHECK(line_of(z.out, "Magnus S") ==
+  CHECK(test::line_of(z.out, "ΔP top−bottom").find("seed 2ρUaω = undefined (ω = 0)") != std::string::npos);
+  CHECK(test::line_of(z.out, "Magnus S") ==
         "Magnus S       numeric undefined (ω = 0)   exact ρΓ/ω = undefined (ω = 0)   seed 4ρa² = 0.049 kg/m");
   CHECK_FALSE(has_negative_zero(z.out));
   CAPTURE(z.out);
@@ -80,7 +71,7 @@ TEST_CASE("summary: the given-circulation model labels each figure by its model"
                                 dir + "/n.h5", "--set", "grid.n_theta=32"},
                                dir);
   REQUIRE(n.status == 0);
-  CHECK(line_of(n.out, "C_L  ").find("seed estimate 0") != std::string::npos);
+  CHECK(test::line_of(n.out, "C_L  ").find("seed estimate 0") != std::string::npos);
   CHECK_FALSE(has_negative_zero(n.out));
 }
 
@@ -100,12 +91,12 @@ TEST_CASE("summary: stagnation points on the surface at α = 2, in one order, an
   const std::string two = run("2");
   CHECK(line_after(two, "stagnation") == "               exact   θ = 90.000° on the surface");
   const std::string back = run("-1");
-  CHECK(line_of(back, "stagnation") ==
+  CHECK(test::line_of(back, "stagnation") ==
         "stagnation     numeric θ = 210.075° on the surface, θ = 329.925° on the surface");
   CHECK(line_after(back, "stagnation") ==
         "               exact   θ = 210.000° on the surface, θ = 330.000° on the surface");
   const std::string far = run("100");
-  CHECK(line_of(far, "stagnation") ==
+  CHECK(test::line_of(far, "stagnation") ==
         "stagnation     numeric none: the free point lies outside the grid (exact r_s/a = "
         "99.99, grid R/a = 20.9768)");
 }
@@ -115,7 +106,7 @@ TEST_CASE("U = 0: the C_L error is undefined, in the summary, the file and bench
   const std::string still = std::string(MAGNUS_SOURCE_DIR) + "/cases/pure_rotation.toml";
   const Outcome o = magnus_cmd({"run", still, "-o", dir + "/r.h5", "--set", "grid.n_theta=32"}, dir);
   REQUIRE(o.status == 0);
-  CHECK(line_of(o.out, "errors").find("C_L rel undefined") != std::string::npos);
+  CHECK(test::line_of(o.out, "errors").find("C_L rel undefined") != std::string::npos);
   CHECK_FALSE(ResultFile(dir + "/r.h5").has_attr("/errors", "cl_rel"));
   const Outcome b = magnus_cmd({"bench", still, "--ladder", "16"}, dir);
   CHECK(b.status == 1);

@@ -37,7 +37,6 @@ void write_case(const std::string& path, int n_theta, double alpha) {
       << n_theta << "\n";
 }
 
-bool one_line(const std::string& s) { return !s.empty() && s.find('\n') == s.size() - 1; }
 
 }  // namespace
 

@@ -26,15 +26,6 @@ test::Outcome run(const std::string& dir, const std::vector<std::string>& sets,
   return test::magnus_cmd(args, dir);
 }
 
-/// The line of a summary that starts with label ("" if none).
-std::string line_of(const std::string& text, const std::string& label) {
-  for (size_t start = 0, nl; start < text.size(); start = nl + 1) {
-    nl = text.find('\n', start);
-    if (nl == std::string::npos) nl = text.size();
-    if (text.compare(start, label.size(), label) == 0) return text.substr(start, nl - start);
-  }
-  return "";
-}
 
 bool exists(const std::string& path) { return std::ifstream(path).good(); }
 
@@ -66,7 +57,7 @@ TEST_CASE("navier-stokes summary: Re = 200 as given is not above 200, and is sto
   // Above 200 by more than round-off, the note stays.
   const auto h = run(dir, {"flow.reynolds=200.001"}, "h.h5");
   REQUIRE(h.status == 0);
-  CHECK(line_of(h.out, "note") ==
+  CHECK(test::line_of(h.out, "note") ==
         "note           Re = 200.001 > 200: real flow past a cylinder is three-dimensional there; this is "
         "the 2D "
         "laminar answer, not the real one");
@@ -96,7 +87,7 @@ TEST_CASE("navier-stokes summary: below one wall cell the boundary layer is not 
   INFO(o.err);
   REQUIRE(o.status == 0);
   CAPTURE(o.out);
-  CHECK(line_of(o.out, "               boundary layer") ==
+  CHECK(test::line_of(o.out, "               boundary layer") ==
         "               boundary layer: 0.044 wall cells across D/√(Re(1 + α²)) — not resolved: below 1 cell "
         "the "
         "forces are not meaningful (raise grid.n_theta)");
@@ -104,7 +95,7 @@ TEST_CASE("navier-stokes summary: below one wall cell the boundary layer is not 
   // Between one and six cells: coarse, errors of several %.
   const auto c = run(dir, {"grid.n_theta=96"}, "c.h5");
   REQUIRE(c.status == 0);
-  CHECK(line_of(c.out, "               boundary layer") ==
+  CHECK(test::line_of(c.out, "               boundary layer") ==
         "               boundary layer: 3.6 wall cells across D/√(Re(1 + α²)) — coarse: below 6 expect "
         "errors of "
         "several % in C_D (raise grid.n_theta)");

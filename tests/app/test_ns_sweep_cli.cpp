@@ -26,7 +26,6 @@ void write_case(const std::string& path, int n_theta) {
       << n_theta << "\n";
 }
 
-bool one_line(const std::string& s) { return !s.empty() && s.find('\n') == s.size() - 1; }
 
 }  // namespace
 
