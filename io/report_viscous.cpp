@@ -85,13 +85,14 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
   auto row = [&](const std::string& label, const std::string& a, const std::string& b) {
     s += fmt::format("{:<15}{:<40}{}\n", label, a, b);
   };
+  const char* kind = v.steady ? "(steady)" : "(mean)";  // a steady flow's mean is its value
   if (moving) {
     const std::string amp =
         v.cl_amplitude ? fmt::format(" ± {} (amplitude)", fmt_opt(v.cl_amplitude, "{:.4f}")) : "";
-    row("C_L", fmt::format("{} (mean){}", fmt_opt(v.cl_mean, "{:.5f}"), amp),
+    row("C_L", fmt::format("{} {}{}", fmt_opt(v.cl_mean, "{:.5f}"), kind, amp),
         fmt::format("{} (−2πα)   seed −4α = {}", fmt_opt(v.cl_ideal, "{:.5f}"),
                     fmt_opt(r.forces.cl_seed_estimate, "{:.5f}")));
-    row("C_D", fmt::format("{} (mean)", fmt_opt(v.cd_mean, "{:.5f}")), "0 (d'Alembert)");
+    row("C_D", fmt::format("{} {}", fmt_opt(v.cd_mean, "{:.5f}"), kind), "0 (d'Alembert)");
     row("",
         fmt::format("last step: pressure {} + friction {}", fmt_opt(v.last.C_D_pressure, "{:.4f}"),
                     fmt_opt(v.last.C_D_friction, "{:.4f}")),
@@ -99,9 +100,9 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
     row("St = fD/U",
         v.strouhal ? fmt_opt(v.strouhal, "{:.5f}") : (v.steady ? "steady (no shedding)" : "no period found"),
         "— (no wake)");
-    row("lift F_y", fmt::format("{} N/m (mean)", num(v.lift_mean, "{:.6g}")),
+    row("lift F_y", fmt::format("{} N/m {}", num(v.lift_mean, "{:.6g}"), kind),
         fmt::format("{} N/m (−ρUΓ)", num(r.forces.lift_kutta_joukowski, "{:.6g}")));
-    row("drag F_x", fmt::format("{} N/m (mean)", num(v.drag_mean, "{:.6g}")), "0 N/m");
+    row("drag F_x", fmt::format("{} N/m {}", num(v.drag_mean, "{:.6g}"), kind), "0 N/m");
     row("Magnus S", fmt::format("{} kg/m", fmt_opt(r.forces.magnus_S, "{:.6g}")),
         fmt::format("2πρa² = {} kg/m", fmt_opt(r.forces.magnus_S_exact, "{:.6g}")));
     line("S/(2πρa²)",
@@ -115,7 +116,7 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
     line("forces", fmt::format("F_x = {} N/m, F_y = {} N/m (last step)", num(v.last.F_x, "{:.4g}"),
                                num(v.last.F_y, "{:.4g}")));
   }
-  line("torque", fmt::format("{} N·m/m (mean), spin power −Mω = {} W/m", num(v.torque_mean, "{:.6g}"),
+  line("torque", fmt::format("{} N·m/m {}, spin power −Mω = {} W/m", num(v.torque_mean, "{:.6g}"), kind,
                              num(v.spin_power_mean, "{:.6g}")));
   if (!moving) {  // still fluid: the potential vortex u_θ = a²ω/r is an exact viscous solution too
     const double exact = -4.0 * M_PI * sc.density * sc.viscosity * sc.radius * sc.radius * sc.spin;

@@ -318,3 +318,18 @@ TEST_CASE("navier-stokes hard cases on a coarse grid: each a finite result with 
     }
   }
 }
+
+TEST_CASE("navier-stokes summary of a steady run: values marked steady, no signed zero", "[app][ns]") {
+  // Re 20 without spin on the map's grid: auto finds the stable steady state; its C_L is round-off.
+  const std::string dir = temp_dir("ns-steady-summary");
+  const Outcome o = magnus_cmd({"run", s_map, "--set", "flow.reynolds=20", "--set", "cylinder.spin_ratio=0", "-o",
+                                dir + "/r.h5"},
+                               dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  const std::string cl = line_of(o.out, "C_L  "), cd = line_of(o.out, "C_D  ");
+  CHECK(cl.rfind("C_L            0.00000 (steady)", 0) == 0);
+  CHECK(cd.find(" (steady)") != std::string::npos);
+  CHECK(o.out.find("(mean)") == std::string::npos);
+  CHECK(o.out.find("-0.0000") == std::string::npos);
+}
