@@ -164,8 +164,7 @@ Json viscous_derived(const FlowResult& r) {
   Json d;
   d["nodes"] = count(g.nodes());
   if (v.reynolds && *v.reynolds > 0.0 && g.r.size() > 1) {
-    const double alpha = sc.speed > 0.0 ? sc.spin_ratio() : 0.0;
-    const double cells = (2.0 * g.a / std::sqrt(*v.reynolds * (1.0 + alpha * alpha))) / (g.r[1] - g.r[0]);
+    const double cells = wall_cells(g, *v.reynolds, sc.spin_ratio());
     d["wall_cells"] = quantity(cells, "1");
     d["wall_cells_coarse"] = cells < kWallCellsForPercent;
     d["wall_cells_unresolved"] = cells < kWallCellsResolved;  // the forces are not meaningful
@@ -177,8 +176,7 @@ Json viscous_derived(const FlowResult& r) {
       r.timing.solve_s > 0.0 ? std::optional<double>(double(v.steps) / r.timing.solve_s) : std::nullopt,
       "1/s");
   d["three_dimensional"] = v.reynolds && above_laminar_range(*v.reynolds);
-  d["viscous_length_beyond_grid"] =
-      v.reynolds && *v.reynolds > 0.0 && 2.0 * g.a / *v.reynolds > g.outer_radius();
+  d["viscous_length_beyond_grid"] = v.reynolds && viscous_length_beyond_grid(g, *v.reynolds);
   if (v.steady_study) d["steady_study"] = json_parts::steady_study_json(*v.steady_study);
   if (sc.speed <= 0.0) {  // still fluid: the potential vortex u_θ = a²ω/r is an exact viscous solution
     const double nu = v.viscosity > 0.0 ? v.viscosity : sc.viscosity;

@@ -27,6 +27,14 @@ std::string wall(double seconds) {
 
 bool above_laminar_range(double reynolds) { return reynolds > kReynolds3D * (1.0 + 1e-9); }
 
+double wall_cells(const PolarGrid& g, double reynolds, double alpha) {
+  return (2.0 * g.a / std::sqrt(reynolds * (1.0 + alpha * alpha))) / (g.r[1] - g.r[0]);
+}
+
+bool viscous_length_beyond_grid(const PolarGrid& g, double reynolds) {
+  return reynolds > 0.0 && 2.0 * g.a / reynolds > g.outer_radius();
+}
+
 std::string viscous_summary_text(const FlowResult& r, const std::string& output_path) {
   check_finite(r);  // nothing that is not finite is printed
   const Case& c = r.c;
@@ -52,9 +60,7 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
                            g.n_r, g.nodes(), g.outer_radius() / g.a));
   // The boundary layer's thickness scales as D/√Re: the cells across it say how well the wall is resolved.
   if (v.reynolds && *v.reynolds > 0.0) {
-    // Spin thins the layer where the wall moves against the stream: D/√(Re(1 + α²)) is the measure.
-    const double alpha = sc.spin_ratio();
-    const double cells = (2.0 * g.a / std::sqrt(*v.reynolds * (1.0 + alpha * alpha))) / (g.r[1] - g.r[0]);
+    const double cells = wall_cells(g, *v.reynolds, sc.spin_ratio());
     const std::string grade =
         cells < kWallCellsResolved
             ? fmt::format(
@@ -142,7 +148,7 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
                      "the 2D laminar answer, not the real one",
                      *v.reynolds, kReynolds3D));
   // The viscous (Oseen) length D/Re: beyond R the outer boundary cuts into it, and the forces depend on R.
-  if (v.reynolds && *v.reynolds > 0.0 && 2.0 * g.a / *v.reynolds > g.outer_radius())
+  if (v.reynolds && viscous_length_beyond_grid(g, *v.reynolds))
     line("note",
          fmt::format("the viscous length D/Re = {} D reaches beyond the grid (R = {} D): the forces "
                      "depend on R (raise domain.outer_radius)",

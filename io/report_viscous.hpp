@@ -26,4 +26,11 @@ constexpr double kWallCellsForPercent = 6.0;
 /// are not meaningful: n_θ = 8 at Re 200, α 6 (0.04 cells) gave C_L of the wrong sign, Re = 1e9 C_D 0.00001.
 constexpr double kWallCellsResolved = 1.0;
 
+/// Cells of the first ring across the boundary layer's thickness D/√(Re(1 + α²)) (spin thins it where the
+/// wall moves against the stream): (2a/√(Re(1 + α²)))/(r_1 − r_0). Needs Re > 0 and two rings.
+double wall_cells(const PolarGrid& g, double reynolds, double alpha);
+
+/// The viscous (Oseen) length D/Re reaches beyond the outer radius R: the forces then depend on R.
+bool viscous_length_beyond_grid(const PolarGrid& g, double reynolds);
+
 }  // namespace magnus
