@@ -14,11 +14,7 @@
 namespace magnus {
 
 std::string fmt_opt(const std::optional<double>& v, const char* spec) {
-  if (!v) return "undefined";
-  std::string s = figure(*v + 0.0, spec);  // + 0.0: never "-0"
-  // Nor "-0.00000": a round-off below the last digit shown carries no sign.
-  if (s[0] == '-' && s.find_first_of("123456789", 1) == std::string::npos) s.erase(0, 1);
-  return s;
+  return v ? figure(*v, spec) : std::string("undefined");
 }
 
 namespace {

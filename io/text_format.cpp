@@ -10,15 +10,13 @@ std::string figure(double v, const char* spec) {
   const std::string sp = spec;
   const bool fixed =
       sp.size() >= 2 && sp[sp.size() - 1] == '}' && (sp[sp.size() - 2] == 'f' || sp[sp.size() - 2] == 'F');
-  return fmt::format(fmt::runtime(fixed && std::fabs(v) >= 1e9 ? "{:.6g}" : spec), v);
-}
-
-std::string cell(double v, const char* spec) {
-  if (!std::isfinite(v)) return "—";
-  std::string s = figure(v, spec);
-  if (s[0] == '-' && s.find_first_of("123456789", 1) == std::string::npos) s.erase(0, 1);
+  std::string s = fmt::format(fmt::runtime(fixed && std::fabs(v) >= 1e9 ? "{:.6g}" : spec), v);
+  // A value that rounds to zero carries no sign: "0.00000", not "-0.00000" (round-off below the last digit).
+  if (std::isfinite(v) && s[0] == '-' && s.find_first_of("123456789", 1) == std::string::npos) s.erase(0, 1);
   return s;
 }
+
+std::string cell(double v, const char* spec) { return std::isfinite(v) ? figure(v, spec) : "—"; }
 
 std::string ms(double seconds) {
   return seconds < 1.0 ? fmt::format("{:.3g} ms", seconds * 1e3) : fmt::format("{:.3g} s", seconds);

@@ -5,11 +5,11 @@
 namespace magnus {
 
 /// fmt spec applied to v, except that a fixed-point spec ("{:.5f}") of |v| >= 1e9 gives "{:.6g}" instead:
-/// no figure runs to hundreds of digits (1e290 prints as 1e+290, not 291 digits and 5 decimals).
+/// no figure runs to hundreds of digits (1e290 prints as 1e+290, not 291 digits and 5 decimals); and no sign
+/// on a value that rounds to zero ("0.000", not "-0.000" or "-0").
 std::string figure(double v, const char* spec);
 
-/// A table cell: figure(v, spec); "—" for a non-finite (undefined) value; no sign on a value that
-/// rounds to zero ("0.000", not "-0.000").
+/// A table cell: figure(v, spec); "—" for a non-finite (undefined) value.
 std::string cell(double v, const char* spec);
 
 /// A duration: "12.3 ms" below one second, else "1.23 s".
