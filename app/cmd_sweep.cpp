@@ -36,6 +36,15 @@ struct SweepOptions {
   std::string stability = "eigenvalues";
 };
 
+/// Before solving: the outputs are writable, none overwrites the case or another output, and only the CSV
+/// may be "-" (standard output). Throws one line naming the path.
+void check_outputs(const SweepOptions& o) {
+  check_distinct_paths({o.case_path}, {o.csv, o.output, o.plot});
+  check_writable(o.csv);
+  check_file_writable(o.output, "the HDF5 sweep file");
+  check_file_writable(o.plot, "the PNG plot");
+}
+
 /// "K/N" with 1 ≤ K ≤ N (whole numbers); throws std::invalid_argument with one line.
 std::pair<int, int> parse_shard(const std::string& text) {
   const size_t slash = text.find('/');
@@ -70,10 +79,7 @@ void command_ns_sweep(const SweepOptions& o, const Case& c, const SweepRange& al
     throw std::runtime_error("--json and --csv -: both would go to standard output; name a file for one");
   if (!o.quiet && !o.json && is_stdout(o.csv))
     throw std::runtime_error("--csv -: add -q (the table also goes to standard output)");
-  check_distinct_paths({o.case_path}, {o.csv, o.output, o.plot});
-  check_writable(o.csv);
-  check_file_writable(o.output, "the HDF5 sweep file");
-  check_file_writable(o.plot, "the PNG plot");
+  check_outputs(o);
   const PlotSize size = o.size.empty() ? PlotSize{} : parse_plot_size(o.size);
   if (!o.plot.empty() && std::all_of(mo.alphas.begin(), mo.alphas.end(), [](double a) { return a == 0.0; }))
     throw std::runtime_error(fmt::format(
@@ -160,10 +166,7 @@ void command_sweep(const SweepOptions& o) {
   if (o.json && is_stdout(o.csv))
     throw std::runtime_error("--json and --csv -: both would go to standard output; name a file for one");
   // Fail before solving, not after.
-  check_distinct_paths({o.case_path}, {o.csv, o.output, o.plot});
-  check_writable(o.csv);
-  check_file_writable(o.output, "the HDF5 sweep file");
-  check_file_writable(o.plot, "the PNG plot");
+  check_outputs(o);
   const SweepResult s =
       by_spin ? sweep_spin_ratio(c, range.values, o.threads) : sweep_circulation(c, range.values, o.threads);
 

@@ -213,8 +213,7 @@ Comparison compare_results(const std::vector<std::string>& paths) {
                    : "lift, drag, errors\n";
   for (const auto& [label, cells] : value_rows) row(label, cells);
 
-  // CSV: one row per file; with navier-stokes files, whether each is partial (1), complete (0) or potential
-  // ("").
+  // CSV: one row per file; with navier-stokes files, a column partial: 1, 0, or "" for a potential file.
   std::string& c = out.csv;
   c += any_viscous ? "file,title,partial" : "file,title";
   for (size_t k : differ)

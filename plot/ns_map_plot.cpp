@@ -4,14 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <map>
+#include <stdexcept>
 
 namespace magnus {
 
 void plot_ns_map(const NsMap& m, const std::string& png, PlotSize size) {
-  const bool any = std::any_of(m.points.begin(), m.points.end(), [](const NsMapPoint& p) { return std::isfinite(p.ratio); });
-  if (!any)
+  if (std::none_of(m.points.begin(), m.points.end(), [](const NsMapPoint& p) { return std::isfinite(p.ratio); }))
     throw std::runtime_error(fmt::format(
         "{}: nothing to draw: S/(2πρa^2) = C_L/C_L,ideal is undefined at every point of this map ({})", png,
         std::all_of(m.alphas.begin(), m.alphas.end(), [](double a) { return a == 0.0; })
@@ -22,7 +21,6 @@ void plot_ns_map(const NsMap& m, const std::string& png, PlotSize size) {
                                  Colour::orange, Colour::teal,  Colour::brown, Colour::magenta,
                                  Colour::olive,  Colour::black, Colour::grey};
   std::map<int, PointSet> rows;
-  std::vector<PointSet> averaged;
   for (const auto& p : m.points) {
     if (!std::isfinite(p.ratio)) continue;
     PointSet& s = rows[by_re ? 0 : p.row];

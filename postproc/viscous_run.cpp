@@ -312,8 +312,7 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
     if (p.dt > limit)
       throw std::invalid_argument(fmt::format(
           "time.dt = {:g} ({}) is above {:.4g} {}, the stability limit {} on this grid (CFL {:g}): leave it "
-          "out "
-          "or lower it",
+          "out or lower it",
           c.time.dt, time_unit_name(sc), limit / unit, time_unit_name(sc),
           resume
               ? "of the state it resumes from"
