@@ -292,9 +292,9 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
   // A checkpoint already past time.end has nothing left to march: refused, so that it is kept.
   if (resume && c.time.end * unit < resume->state.t * (1.0 - 1e-12))
     throw std::invalid_argument(
-        fmt::format("time.end = {:.6g} D/U is before the checkpoint's time t = {:.6g} D/U: give a later "
+        fmt::format("time.end = {:.6g} {} is before the checkpoint's time t = {:.6g} {}: give a later "
                     "time.end to go on from the checkpoint, or run without --resume",
-                    c.time.end, resume->state.t / unit));
+                    c.time.end, time_unit_name(sc), resume->state.t / unit, time_unit_name(sc)));
   NsState start;
   if (resume) {
     start = resume->state;
