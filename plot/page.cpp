@@ -14,6 +14,9 @@
 #include <mutex>
 #include <stdexcept>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include "io/atomic_file.hpp"
 
 namespace magnus {
@@ -69,7 +72,7 @@ std::mutex& plplot_mutex() {
 }
 
 [[noreturn]] void fail(const std::string& png, const std::string& why) {
-  throw std::runtime_error("plot: cannot write " + png + ": " + why);
+  throw std::runtime_error("plot: cannot write '" + png + "': " + why);
 }
 
 bool have_device(const char* name) {
@@ -104,6 +107,35 @@ std::string check_png(const std::string& path, PlotSize size) {
   if (std::memcmp(bytes.data() + bytes.size() - 12, iend, 12) != 0)
     return "the PNG is truncated (disk full?)";
   return {};
+}
+
+/// The PNG's stream: PLplot writes (and closes) it through stdio, which would drop a write error
+/// (a full disk) unseen; this stream's writes go to the file descriptor and keep the first errno.
+struct PngSink {
+  int fd = -1;
+  int error = 0;  ///< the first errno of a failed write or close (0: none)
+};
+
+ssize_t sink_write(void* cookie, const char* buf, size_t n) {
+  auto* s = static_cast<PngSink*>(cookie);
+  size_t done = 0;
+  while (done < n) {
+    const ssize_t w = ::write(s->fd, buf + done, n - done);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) {
+      if (!s->error) s->error = w < 0 ? errno : ENOSPC;
+      return -1;
+    }
+    done += size_t(w);
+  }
+  return ssize_t(n);
+}
+
+int sink_close(void* cookie) {
+  auto* s = static_cast<PngSink*>(cookie);
+  if (s->fd >= 0 && ::close(s->fd) != 0 && !s->error) s->error = errno;
+  s->fd = -1;
+  return s->error ? -1 : 0;
 }
 
 /// Page size in pixels of the page being drawn, and its body text height in pixels.
@@ -182,8 +214,14 @@ void render_png(const std::string& png, PlotSize size, const std::function<void(
   }
   const std::string& tmp = out->temp();
   // PLplot takes the FILE* over (and closes it) once plinit has run.
-  FILE* file = std::fopen(tmp.c_str(), "wb");
-  if (!file) fail(png, std::strerror(errno));
+  PngSink sink;
+  sink.fd = ::open(tmp.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  if (sink.fd < 0) fail(png, std::strerror(errno));
+  FILE* file = fopencookie(&sink, "wb", {nullptr, sink_write, nullptr, sink_close});
+  if (!file) {
+    ::close(sink.fd);
+    fail(png, std::strerror(errno));
+  }
   bool file_owned = true;
   try {
     // An unknown device would make plinit prompt on stdin: check first.
@@ -212,6 +250,7 @@ void render_png(const std::string& png, PlotSize size, const std::function<void(
       draw(pls);
       if (errcode) fail(png, std::string("PLplot: ") + errmsg);
     }  // ~plstream: end of page, the PNG is written and the file closed
+    if (sink.error) fail(png, std::strerror(sink.error));  // e.g. "No space left on device"
     const std::string bad = check_png(tmp, size);
     if (!bad.empty()) fail(png, bad);
     out->commit();

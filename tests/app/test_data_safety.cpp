@@ -210,6 +210,29 @@ TEST_CASE("a full disk gives one line naming the file, no partial output, the ea
   REQUIRE(names_in(dir) == std::vector<std::string>{"r.h5", "r.xmf"});
 }
 
+TEST_CASE("a full disk under magnus plot names the system's error, no PNG or temporary left",
+          "[app][safety][plot]") {
+  const std::string dir = test::temp_dir("safety-full-plot");
+  earlier_result(dir + "/r.h5", dir);
+  fs::create_directories(dir + "/pics");
+  // A 900x700 picture is some 50 KB or more: fail its writes after 4 KB and 24 KB.
+  for (const rlim_t limit : {rlim_t(4) << 10, rlim_t(24) << 10}) {
+    const Outcome o = run_magnus({"plot", dir + "/r.h5", "-o", dir + "/pics", "--size", "900x700"}, dir, limit);
+    CAPTURE(limit, o.err);
+    REQUIRE(o.exited);
+    REQUIRE(o.status == 1);
+    REQUIRE(lines(o.err) == 1);
+    CHECK(o.err.find("cannot write '" + dir + "/pics/r_streamlines.png': File too large") != std::string::npos);
+    CHECK(o.err.find("PLplot produced no PNG") == std::string::npos);
+    CHECK(fs::is_empty(dir + "/pics"));
+  }
+  // Without the limit the same command writes them.
+  const Outcome ok = run_magnus({"plot", dir + "/r.h5", "-o", dir + "/pics", "--size", "900x700"}, dir);
+  CAPTURE(ok.err);
+  REQUIRE(ok.status == 0);
+  CHECK(fs::file_size(dir + "/pics/r_streamlines.png") > (rlim_t(24) << 10));
+}
+
 TEST_CASE("an unwritable output place gives one line naming the file, before solving", "[app][safety]") {
   // Tests may run as root, for whom permission bits do not stop a write: use places no one can write.
   const std::string dir = test::temp_dir("safety-unwritable");
