@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "plot/axis_scale.hpp"
 #include "plot/page.hpp"
 
 namespace magnus {
@@ -21,8 +22,9 @@ PlotFrame plot_curves(const CurvePage& pg, const std::vector<LineCurve>& lines,
                       const std::vector<PointSet>& points, const std::string& png, PlotSize size) {
   using namespace page;
   const bool lx = pg.log_x, ly = pg.log_y;
-  auto tx = [lx](double v) { return lx ? std::log10(v) : v; };
-  auto ty = [ly](double v) { return ly ? std::log10(v) : v; };
+  double sx = 1.0, sy = 1.0;  // a linear axis shows v·sx (v·sy): its power of ten is in its label
+  auto tx = [lx, &sx](double v) { return lx ? std::log10(v) : v * sx; };
+  auto ty = [ly, &sy](double v) { return ly ? std::log10(v) : v * sy; };
   double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo, ylo = xlo, yhi = -xlo;
   auto take = [&](const CurvePoint& p) {
     if (!usable(p, lx, ly)) return;
@@ -53,6 +55,19 @@ PlotFrame plot_curves(const CurvePage& pg, const std::vector<LineCurve>& lines,
     y0 = p.first;
     y1 = p.second;
   }
+  const int ex = lx ? 0 : axis_scale::exponent(x0, x1), ey = ly ? 0 : axis_scale::exponent(y0, y1);
+  sx = std::pow(10.0, -ex);
+  sy = std::pow(10.0, -ey);
+  x0 *= sx, x1 *= sx, y0 *= sy, y1 *= sy;
+  const std::string xlabel = axis_scale::label(pg.xlabel, ex), ylabel = axis_scale::label(pg.ylabel, ey);
+  auto scaled = [&](const std::vector<CurvePoint>& pts) {
+    std::vector<CurvePoint> out = pts;
+    for (auto& p : out) {
+      if (!lx) p.x *= sx;
+      if (!ly) p.y *= sy;
+    }
+    return out;
+  };
 
   std::vector<LegendEntry> legend;
   for (const auto& l : lines)
@@ -93,7 +108,7 @@ PlotFrame plot_curves(const CurvePage& pg, const std::vector<LineCurve>& lines,
     pls.vpor(left, right, bottom, top);
     pls.wind(x0, x1, y0, y1);
     pls.col0(kLightGrey);
-    pls.box(lx ? "gl" : "g", pg.x_tick, pg.x_subticks, ly ? "gl" : "g", 0.0, 0);
+    pls.box(lx ? "gl" : "g", pg.x_tick * sx, pg.x_subticks, ly ? "gl" : "g", 0.0, 0);
     if (pg.zero_line && !ly && y0 < 0.0 && y1 > 0.0) {
       pls.col0(kDarkGrey);
       pls.join(x0, 0.0, x1, 0.0);
@@ -127,12 +142,18 @@ PlotFrame plot_curves(const CurvePage& pg, const std::vector<LineCurve>& lines,
         pls.width(1.0);
       }
       set_text(pls, 0.55);
-      markers(pls, s.points, kMarkers[s.marker % std::size(kMarkers)], pen(s.colour), lx, ly);
+      markers(pls, scaled(s.points), kMarkers[s.marker % std::size(kMarkers)], pen(s.colour), lx, ly);
     }
     set_text(pls);
-    frame_axes(pls, lx ? "bcnstl" : "bcnst", ly ? "bcnstvl" : "bcnstv", plplot_text(pg.xlabel),
-               plplot_text(pg.ylabel), plplot_text(pg.title), pg.x_tick, pg.x_subticks);
+    frame_axes(pls, lx ? "bcnstl" : "bcnst", ly ? "bcnstvl" : "bcnstv", plplot_text(xlabel),
+               plplot_text(ylabel), plplot_text(pg.title), pg.x_tick * sx, pg.x_subticks);
     frame = frame_of(pls, size);
+    // The window in the data's units (px, py take data values), with the scales the labels show.
+    frame.x0 /= sx, frame.x1 /= sx, frame.y0 /= sy, frame.y1 /= sy;
+    frame.x_exponent = ex;
+    frame.y_exponent = ey;
+    frame.xlabel = xlabel;
+    frame.ylabel = ylabel;
     if (!legend.empty()) {
       set_text(pls, 0.8);
       std::vector<double> r;

@@ -7,6 +7,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "plot/axis_scale.hpp"
 #include "plot/page.hpp"
 
 namespace magnus {
@@ -275,13 +276,18 @@ PlotFrame plot_contour_field(const ContourFieldPicture& pic, const std::string& 
     set_text(pls, 0.85);
     const double bx = 0.04, bw = 0.04, bh = 0.80;
     const char* axis_opts[] = {"bcvtm"};
-    const std::string label = plplot_text(pic.bar_label);
+    // The bar's numbers in a power of ten of their own (in its label) when they are small or large.
+    const int eb = axis_scale::exponent(lo, hi);
+    const std::string bar_label = axis_scale::label(pic.bar_label, eb);
+    const std::string label = plplot_text(bar_label);
+    std::vector<PLFLT> shown = edges;
+    for (auto& e : shown) e *= std::pow(10.0, -eb);
     const char* labels[] = {label.c_str()};
     PLINT label_opts[] = {PL_COLORBAR_LABEL_TOP};
     PLFLT ticks[] = {0.0};
     PLINT sub_ticks[] = {0};
     PLINT n_values[] = {PLINT(edges.size())};
-    const PLFLT* values[] = {edges.data()};
+    const PLFLT* values[] = {shown.data()};
     PLFLT cw = 0.0, ch = 0.0;
     pls.colorbar(&cw, &ch, PL_COLORBAR_SHADE, PL_POSITION_RIGHT | PL_POSITION_OUTSIDE | PL_POSITION_VIEWPORT,
                  bx, 0.0, bw, bh, kWhite, kBlack, 1, 0, 0.0, 0, 0.0, 1, label_opts, labels, 1, axis_opts,
@@ -291,6 +297,8 @@ PlotFrame plot_contour_field(const ContourFieldPicture& pic, const std::string& 
         to_pixels(size, vx1 + bx * dx, vx1 + (bx + bw) * dx, ymid - 0.5 * bh * dy, ymid + 0.5 * bh * dy);
     frame.bar_lo = lo;
     frame.bar_hi = hi;
+    frame.bar_exponent = eb;
+    frame.bar_label = bar_label;
   });
   return frame;
 }

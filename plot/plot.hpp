@@ -33,8 +33,8 @@ struct PixelRect {
   bool empty() const { return !(x1 > x0 && y1 > y0); }
 };
 
-/// Where a picture was drawn: the plot box, the window (axis units) it shows, and the boxes of the
-/// legend and the colour bar (empty when there is none).
+/// Where a picture was drawn: the plot box, the window it shows (in the data's units, whatever power of
+/// ten the axis labels show it in), and the boxes of the legend and the colour bar (empty when none).
 struct PlotFrame {
   PixelRect box;                          ///< the plot box (its frame lines)
   double x0 = 0, x1 = 0, y0 = 0, y1 = 0;  ///< axis range shown in the box (log10 on a log axis)
@@ -42,6 +42,9 @@ struct PlotFrame {
   PixelRect colour_bar;                   ///< the colour bar's shaded strip
   double bar_lo = 0, bar_hi = 0;          ///< the values at the bottom and top of the colour bar
   std::vector<double> levels;             ///< contour levels drawn (field plots)
+  /// The axes and the colour bar show value·10^−k: the powers of ten written into their labels (0: none).
+  int x_exponent = 0, y_exponent = 0, bar_exponent = 0;
+  std::string xlabel, ylabel, bar_label;  ///< the labels as drawn (plplot_text markup input)
   /// Pixel column of axis value x (inside the box when x0 ≤ x ≤ x1).
   double px(double x) const { return box.x0 + (x - x0) / (x1 - x0) * (box.x1 - box.x0); }
   /// Pixel row of axis value y.

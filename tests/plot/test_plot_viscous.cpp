@@ -160,3 +160,67 @@ TEST_CASE("magnus plot of a navier-stokes file: vorticity, forces, shear and the
   }
   CHECK(o.skipped.empty());
 }
+
+TEST_CASE("a wall shear stress of hundredths of a pascal: its scale in the label, none from PLplot",
+          "[plot][viscous]") {
+  FlowResult r = test::viscous_result_by_hand(1.0, 64, 16, 0);
+  // Re = 100 in water: τ_w from −0.022 to 0.018 Pa.
+  for (size_t j = 0; j < r.surface.theta.size(); ++j)
+    r.surface.shear_stress[j] = 0.02 * std::sin(r.surface.theta[j]) - 0.002;
+  const CurveFigure fig = shear_stress_figure(r);
+  const std::string dir = test::temp_dir("plot-shear-scale");
+  const PlotFrame f = plot_curves(fig.page, fig.lines, fig.points, dir + "/s.png", {900, 700});
+  CHECK(f.y_exponent == -3);
+  CHECK(f.x_exponent == 0);
+  CHECK(f.ylabel == "τ_w = μ(ζ_w − 2ω) (10^{-3} Pa)");
+  // The window is in pascals (px, py take the data), its numbers shown in mPa: tens, not hundredths.
+  CHECK(f.y0 <= -0.022);
+  CHECK(f.y1 >= 0.018);
+  CHECK(f.y1 < 0.03);
+  const Image img = test::read_png(dir + "/s.png");
+  auto blue = [&](int x, int y) { return img.blue(x, y); };
+  CHECK(img.near(f.px(90.0), f.py(0.018), 3, blue));
+  CHECK(img.near(f.px(270.0), f.py(-0.022), 3, blue));
+  CHECK(!img.near(f.px(90.0), f.py(-0.022), 3, blue));
+  // PLplot writes its own "(×10^-2)" above the box, left of the title: nothing may be drawn there.
+  int ink = 0;
+  for (int y = 0; y < int(f.box.y0) - 10; ++y)
+    for (int x = 0; x < int(f.box.x0) - 2; ++x) ink += img.dark(x, y);
+  CHECK(ink == 0);
+}
+
+TEST_CASE("axis scales: small and large numbers in a power of ten written into the label", "[plot]") {
+  const std::string dir = test::temp_dir("plot-axis-scale");
+  CurvePage page;
+  page.title = "scales";
+  page.xlabel = "distance (m)";
+  page.ylabel = "C_L, C_D (on ½ρU^2·D)";
+  LineCurve line{"", {}, Colour::blue, LineStyle::solid, 2.0};
+  for (int k = 0; k <= 20; ++k) line.points.push_back({2e5 * k / 20.0, 3e-6 * std::sin(k / 3.0)});
+  const PlotFrame f = plot_curves(page, {line}, {}, dir + "/c.png", {800, 600});
+  CHECK(f.x_exponent == 3);
+  CHECK(f.y_exponent == -6);
+  CHECK(f.xlabel == "distance (10^{3} m)");
+  CHECK(f.ylabel == "C_L, C_D (on ½ρU^2·D) (×10^{-6})");
+  CHECK(f.x1 == Approx(2e5 * 1.03).epsilon(1e-6));
+  const Image img = test::read_png(dir + "/c.png");
+  const CurvePoint p = line.points[7];
+  CHECK(img.near(f.px(p.x), f.py(p.y), 3, [&](int x, int y) { return img.blue(x, y); }));
+  // Ordinary numbers keep their labels.
+  for (auto& q : line.points) q.y *= 1e6;
+  const PlotFrame g = plot_curves(page, {line}, {}, dir + "/d.png", {800, 600});
+  CHECK(g.y_exponent == 0);
+  CHECK(g.ylabel == page.ylabel);
+}
+
+TEST_CASE("the vorticity's colour bar takes a power of ten of its own", "[plot][viscous]") {
+  FlowResult r = test::viscous_result_by_hand(1.0, 32, 16, 0);
+  for (auto& z : r.fields.vorticity) z *= 1e-4;
+  const std::string dir = test::temp_dir("plot-bar-scale");
+  const ContourFieldPicture pic = vorticity_picture(r);
+  const PlotFrame f = plot_contour_field(pic, dir + "/v.png", {900, 700});
+  CHECK(f.bar_hi == Approx(pic.limit));
+  CHECK(f.bar_exponent == 3 * int(std::floor(std::floor(std::log10(pic.limit)) / 3.0)));
+  CHECK(f.bar_exponent < 0);
+  CHECK(f.bar_label == "ζ (10^{" + std::to_string(f.bar_exponent) + "} 1/s)");
+}
