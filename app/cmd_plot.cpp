@@ -1,4 +1,4 @@
-// magnus plot FILE [-o DIR] [--size WxH] [-q]
+// magnus plot FILE [-o DIR] [--size WxH] [--window X0:X1,Y0:Y1] [-q]
 #include <memory>
 
 #include "app/commands.hpp"
@@ -8,7 +8,7 @@ namespace magnus {
 
 void add_plot_command(CLI::App& app) {
   struct Options {
-    std::string file, dir, size;
+    std::string file, dir, size, window;
     bool quiet = false;
   };
   auto o = std::make_shared<Options>();
@@ -20,8 +20,11 @@ void add_plot_command(CLI::App& app) {
       ->required();
   plot->add_option("-o,--output-dir", o->dir, "directory for the PNGs (default: beside the result)");
   plot->add_option("--size", o->size, "PNG size WxH in pixels (default 1000x800)");
+  plot->add_option("--window", o->window,
+                   "the field pictures' window X0:X1,Y0:Y1 in units of the radius, wind frame (e.g. -5:25,-6:6; "
+                   "default: ±4 around the body, or -5:25,-6:6 down the wake of an unsteady navier-stokes result)");
   plot->add_flag("-q,--quiet", o->quiet, "do not list the files written");
-  plot->callback([o] { command_plot(o->file, o->dir, o->size, o->quiet); });
+  plot->callback([o] { command_plot(o->file, o->dir, o->size, o->window, o->quiet); });
 }
 
 }  // namespace magnus

@@ -57,11 +57,11 @@ struct PolarPatch {
   const PLFLT* const* z() const { return zrow.data(); }
   void* pltr_data() { return &grid; }
 
-  /// Range of the field over the nodes inside the square |x|, |y| ≤ w.
-  std::pair<double, double> range_in(double w) const {
+  /// Range of the field over the nodes inside the window.
+  std::pair<double, double> range_in(const PlotWindow& w) const {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (size_t q = 0; q < zs.size(); ++q)
-      if (std::fabs(xs[q]) <= w && std::fabs(ys[q]) <= w && std::isfinite(zs[q])) {
+      if (w.contains(xs[q], ys[q]) && std::isfinite(zs[q])) {
         lo = std::min(lo, zs[q]);
         hi = std::max(hi, zs[q]);
       }
@@ -108,18 +108,24 @@ void diverging_cmap1(plstream& pls) {
   pls.scmap1l(true, 5, pos, r, g, b, nullptr);
 }
 
-/// The centred square box: top 4 lines for the title, bottom `bottom_lines` for tick labels and the x
-/// label (and `extra_bottom`, a page fraction, for a legend below), side margins at least `side`
-/// (page fraction) each. Sets the viewport and window.
-void square_box(plstream& pls, PlotSize size, double w, double bottom_lines, double extra_bottom,
+/// The window's box, centred, with equal scales on both axes: top 4 lines for the title, bottom
+/// `bottom_lines` for tick labels and the x label (and `extra_bottom`, a page fraction, for a legend
+/// below), side margins at least `side` (page fraction) each. Sets the viewport and window.
+void window_box(plstream& pls, PlotSize size, const PlotWindow& w, double bottom_lines, double extra_bottom,
                 double side) {
   const double ly = line_fraction_y(pls);
   const double top = 1.0 - 4.0 * ly, bottom = bottom_lines * ly + extra_bottom;
-  const double W = size.width, H = size.height;
-  const double side_px = std::max(1.0, std::min((top - bottom) * H, W * (1.0 - 2.0 * side)));
+  const double W = size.width, H = size.height, aspect = (w.x1 - w.x0) / (w.y1 - w.y0);
+  const double room_w = std::max(1.0, W * (1.0 - 2.0 * side)), room_h = std::max(1.0, (top - bottom) * H);
+  const double box_w = std::min(room_w, room_h * aspect), box_h = box_w / aspect;
   const double cx = 0.5, cy = 0.5 * (top + bottom);
-  pls.vpor(cx - 0.5 * side_px / W, cx + 0.5 * side_px / W, cy - 0.5 * side_px / H, cy + 0.5 * side_px / H);
-  pls.wind(-w, w, -w, w);
+  pls.vpor(cx - 0.5 * box_w / W, cx + 0.5 * box_w / W, cy - 0.5 * box_h / H, cy + 0.5 * box_h / H);
+  pls.wind(w.x0, w.x1, w.y0, w.y1);
+}
+
+/// The distance from the origin to the window's farthest corner (axis units).
+double reach(const PlotWindow& w) {
+  return std::hypot(std::max(std::fabs(w.x0), std::fabs(w.x1)), std::max(std::fabs(w.y0), std::fabs(w.y1)));
 }
 
 void check_field(const PolarField& f, const char* what) {
@@ -132,8 +138,9 @@ void check_field(const PolarField& f, const char* what) {
 PlotFrame plot_streamlines(const StreamlinePicture& pic, const std::string& png, PlotSize size) {
   check_field(pic.psi, "psi");
   const FieldView& v = pic.view;
-  const double w = v.half_width, unit = v.unit;
-  const PolarField f = refine_polar_field(pic.psi, w * std::sqrt(2.0) * unit);
+  const PlotWindow& w = v.window;
+  const double unit = v.unit;
+  const PolarField f = refine_polar_field(pic.psi, reach(w) * unit);
   const int i_view = int(f.r.size()) - 1;
   PolarPatch all(f, unit, 0, i_view);
 
@@ -185,7 +192,8 @@ PlotFrame plot_streamlines(const StreamlinePicture& pic, const std::string& png,
     auto [lw, lh] = legend_size(pls, legend, 1);
     set_text(pls);
     // Beside the box when the page leaves room right of the centred square, else below it.
-    const double box_px = (1.0 - 8.5 * ly) * size.height;
+    const double aspect = (w.x1 - w.x0) / (w.y1 - w.y0);
+    const double box_px = std::min((1.0 - 8.5 * ly) * size.height * aspect, size.width * (1.0 - 14.0 * lx));
     const double room = 0.5 * (1.0 - box_px / size.width) - 3.0 * lx;
     const bool beside = lw <= room;
     int columns = 1;
@@ -195,7 +203,7 @@ PlotFrame plot_streamlines(const StreamlinePicture& pic, const std::string& png,
       std::tie(lw, lh) = legend_size(pls, legend, columns);
       set_text(pls);
     }
-    square_box(pls, size, w, 4.5, beside ? 0.0 : lh + 0.5 * ly, 7.0 * lx);
+    window_box(pls, size, w, 4.5, beside ? 0.0 : lh + 0.5 * ly, 7.0 * lx);
     contour(pls, all, regular, kBlue, 1.2);
     if (pic.has_saddle) {
       contour(pls, *outer, open_inner, kBlue, 1.2);
@@ -203,7 +211,7 @@ PlotFrame plot_streamlines(const StreamlinePicture& pic, const std::string& png,
     }
     contour(pls, all, dividing, kBlack, 2.4);
     disc(pls, 0.0, 0.0, v.body_radius, kGrey, kBlack, 2.0);
-    const double dot = w / 60.0;
+    const double dot = std::min(w.x1 - w.x0, w.y1 - w.y0) / 120.0;
     for (const auto& s : pic.exact_points) disc(pls, s.x, s.y, 2.0 * dot, -1, kBlack, 1.5);
     for (const auto& s : pic.numeric_points) disc(pls, s.x, s.y, dot, kRed, kBlack, 1.0);
     frame_axes(pls, "bcnst", "bcnstv", plplot_text(v.xlabel), plplot_text(v.ylabel), plplot_text(v.title));
@@ -225,8 +233,9 @@ PlotFrame plot_streamlines(const StreamlinePicture& pic, const std::string& png,
 PlotFrame plot_contour_field(const ContourFieldPicture& pic, const std::string& png, PlotSize size) {
   check_field(pic.field, "contour");
   const FieldView& v = pic.view;
-  const double w = v.half_width, unit = v.unit;
-  const PolarField f = refine_polar_field(pic.field, w * std::sqrt(2.0) * unit);
+  const PlotWindow& w = v.window;
+  const double unit = v.unit;
+  const PolarField f = refine_polar_field(pic.field, reach(w) * unit);
   PolarPatch patch(f, unit, 0, int(f.r.size()) - 1);
   auto [lo, hi] = patch.range_in(w);
   const double data_lo = lo, data_hi = hi;
@@ -239,7 +248,8 @@ PlotFrame plot_contour_field(const ContourFieldPicture& pic, const std::string& 
     lo -= 0.5;
     hi += 0.5;
   }
-  const int n_shades = 40;
+  // A diverging map: an odd number of shades, the middle one (white) straddling 0.
+  const int n_shades = pic.diverging ? kDivergingShades : 40;
   std::vector<PLFLT> edges(n_shades + 1);
   for (int k = 0; k <= n_shades; ++k) edges[k] = lo + (hi - lo) * k / n_shades;
   const double eps = 1e-9 * (hi - lo);  // so that the extreme nodes are filled too
@@ -255,16 +265,17 @@ PlotFrame plot_contour_field(const ContourFieldPicture& pic, const std::string& 
     else
       sequential_cmap1(pls);
     // Right of the box: the bar (7% of the box) and its numbers (~6 characters).
-    square_box(pls, size, w, pic.footnote.empty() ? 4.5 : 6.0, 0.0, 8.0 * lx);
+    window_box(pls, size, w, pic.footnote.empty() ? 4.5 : 6.0, 0.0, 8.0 * lx);
     PLFLT vx0 = 0, vx1 = 0, vy0 = 0, vy1 = 0;
     pls.gvpd(vx0, vx1, vy0, vy1);
     pls.psty(0);
-    pls.shades(patch.z(), patch.nx, patch.ny, nullptr, -w, w, -w, w, fill_edges.data(),
+    pls.shades(patch.z(), patch.nx, patch.ny, nullptr, w.x0, w.x1, w.y0, w.y1, fill_edges.data(),
                PLINT(fill_edges.size()), 1.0, 0, 0.0, plcallback::fill, false, plcallback::tr2,
                patch.pltr_data());
     if (pic.zero_contour && lo < 0.0 && hi > 0.0) contour(pls, patch, {0.0}, kBlack, 1.0, 2);
     disc(pls, 0.0, 0.0, v.body_radius, kGrey, kBlack, 2.0);
-    for (const auto& s : pic.points) disc(pls, s.x, s.y, w / 70.0, kRed, kBlack, 1.0);
+    const double dot = std::min(w.x1 - w.x0, w.y1 - w.y0) / 140.0;
+    for (const auto& s : pic.points) disc(pls, s.x, s.y, dot, kRed, kBlack, 1.0);
     frame_axes(pls, "bcnst", "bcnstv", plplot_text(v.xlabel), plplot_text(v.ylabel), plplot_text(v.title));
     frame = frame_of(pls, size);
     if (!pic.footnote.empty()) {
@@ -274,7 +285,8 @@ PlotFrame plot_contour_field(const ContourFieldPicture& pic, const std::string& 
     }
     // Colour bar right of the box, as tall as 80% of it, with its label on top.
     set_text(pls, 0.85);
-    const double bx = 0.04, bw = 0.04, bh = 0.80;
+    // Gap and width of two body lines each (fractions of the box's width: a wide window's box is wide).
+    const double bx = 2.0 * lx / (vx1 - vx0), bw = 2.0 * lx / (vx1 - vx0), bh = 0.80;
     const char* axis_opts[] = {"bcvtm"};
     // The bar's numbers in a power of ten of their own (in its label) when they are small or large.
     const int eb = axis_scale::exponent(lo, hi);

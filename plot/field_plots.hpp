@@ -1,6 +1,6 @@
 #pragma once
 // Field plots on the polar grid: streamlines (ψ contours) and a filled-contour field with its colour
-// bar. The square window is centred on the page with equal scales on both axes; axes are in a length
+// bar. The window (a rectangle) is centred on the page with equal scales on both axes; axes are in a length
 // unit chosen by the caller (e.g. the radius: x/a), so that no axis needs an exponent.
 #include <string>
 #include <vector>
@@ -10,12 +10,22 @@
 
 namespace magnus {
 
-/// The square view of a field plot; lengths in axis units (a field's r is divided by `unit`).
+/// A rectangle of the plane in axis units: x0 ≤ x ≤ x1, y0 ≤ y ≤ y1.
+struct PlotWindow {
+  double x0 = -4.0, x1 = 4.0, y0 = -4.0, y1 = 4.0;
+  /// The square |x|, |y| ≤ w.
+  static PlotWindow square(double w) { return {-w, w, -w, w}; }
+  /// True when (x, y) is inside (edges included).
+  bool contains(double x, double y) const { return x >= x0 && x <= x1 && y >= y0 && y <= y1; }
+};
+
+/// The view of a field plot; lengths in axis units (a field's r is divided by `unit`). The box shows the
+/// window with equal scales on both axes.
 struct FieldView {
   std::string title;  ///< plplot_text markup
   std::string xlabel = "x/a", ylabel = "y/a";
   double unit = 1.0;         ///< one axis unit in the field's length unit (the radius: axes in x/a)
-  double half_width = 4.0;   ///< window |x|, |y| ≤ half_width (axis units)
+  PlotWindow window;         ///< what the box shows (axis units)
   double body_radius = 1.0;  ///< the body, a grey disc at the origin (axis units)
 };
 
@@ -50,6 +60,10 @@ struct ContourFieldPicture {
   bool diverging = false;
   double limit = 0.0;  ///< diverging: the colour range ±limit; 0: ±max|value| inside the window
 };
+
+/// Shades of a diverging map over ±limit: an odd number, so that the middle shade, |value| < limit/41,
+/// has the zero colour (white) and round-off (ζ ~ 1e-9 in a free stream) is not coloured by its sign.
+constexpr int kDivergingShades = 41;
 
 /// The field as filled contours whose colour range is the field's range inside the window (no
 /// clipping), or ±limit with a diverging map, with a labelled colour bar spanning it. Returns where it drew

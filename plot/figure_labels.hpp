@@ -46,11 +46,12 @@ inline std::string case_title(const std::string& title) {
   return literal_text(title.empty() ? std::string("Spinning cylinder") : title);
 }
 
-inline FieldView view_of(const FlowResult& r, const std::string& what) {
+inline FieldView view_of(const FlowResult& r, const std::string& what,
+                         const std::optional<PlotWindow>& window) {
   FieldView v;
   v.title = case_title(r.c.title) + ": " + what + ", " + flow_label(r);
   v.unit = r.grid.a;
-  v.half_width = view_half_width(r);
+  v.window = window_for(r, window);
   v.body_radius = 1.0;
   return v;
 }

@@ -44,27 +44,18 @@ CurvePoint in_units(const StagnationPoint& s, double a) {
   return {s.r / a * std::cos(s.theta), s.r / a * std::sin(s.theta)};
 }
 
-bool inside(const CurvePoint& p, double w) { return std::fabs(p.x) <= w && std::fabs(p.y) <= w; }
+bool inside(const CurvePoint& p, const PlotWindow& w) { return w.contains(p.x, p.y); }
 
 }  // namespace
 
-double view_half_width(const FlowResult& r) {
-  const double a = r.grid.a, R = r.grid.outer_radius() / a;
-  double w = std::min(R, 4.0);
-  for (const auto* set : {&r.stagnation, &r.stagnation_exact})
-    for (const auto& s : *set)
-      if (!s.on_surface) w = std::max(w, std::min(R, 1.2 * s.r / a));
-  return w;
-}
-
-StreamlinePicture streamline_picture(const FlowResult& r) {
+StreamlinePicture streamline_picture(const FlowResult& r, const std::optional<PlotWindow>& window) {
   const PolarGrid& g = r.grid;
   if (r.fields.psi.size() != size_t(g.nodes()) || g.n_r < 2 || g.n_theta < 4)
     throw std::runtime_error("plot: the result has no psi field");
   StreamlinePicture p;
-  p.view = view_of(r, "streamlines");
+  p.view = view_of(r, "streamlines", window);
   p.psi = polar(g, r.fields.psi);
-  const double w = p.view.half_width;
+  const PlotWindow& w = p.view.window;
   for (const auto& s : r.stagnation) {
     const CurvePoint q = in_units(s, g.a);
     if (inside(q, w)) {
@@ -88,18 +79,18 @@ StreamlinePicture streamline_picture(const FlowResult& r) {
   return p;
 }
 
-ContourFieldPicture cp_picture(const FlowResult& r) {
+ContourFieldPicture cp_picture(const FlowResult& r, const std::optional<PlotWindow>& window) {
   const PolarGrid& g = r.grid;
   if (r.fields.cp.empty()) throw std::runtime_error("plot: the result has no cp field");
   if (r.fields.cp.size() != size_t(g.nodes()))
     throw std::runtime_error("plot: the cp field does not match the grid");
   ContourFieldPicture p;
-  p.view = view_of(r, "pressure coefficient");
+  p.view = view_of(r, "pressure coefficient", window);
   p.field = polar(g, r.fields.cp);
   p.bar_label = "Cp";
   for (const auto& s : r.stagnation) {
     const CurvePoint q = in_units(s, g.a);
-    if (inside(q, p.view.half_width)) p.points.push_back(q);
+    if (inside(q, p.view.window)) p.points.push_back(q);
   }
   p.footnote =
       r.viscous ? "dashed: Cp = 0" : "dashed: Cp = 0 (|u| = U);  red dots: stagnation points (Cp = 1)";
@@ -305,7 +296,8 @@ std::string output_base(const std::string& path, const std::string& dir_in) {
 
 }  // namespace
 
-PlotOutcome plot_result_file(const std::string& path, const std::string& dir, PlotSize size) {
+PlotOutcome plot_result_file(const std::string& path, const std::string& dir, PlotSize size,
+                             const std::optional<PlotWindow>& window) {
   PlotOutcome out;
   // A sweep file draws C_L(α) (or C_L(Γ)); anything else goes to the result reader and its messages.
   bool sweep = false, ns_map = false;
@@ -339,13 +331,14 @@ PlotOutcome plot_result_file(const std::string& path, const std::string& dir, Pl
     return out;
   }
   const FlowResult r = read_result(path);
+  window_for(r, window);  // a window off the grid is refused before any directory or file is made
   const std::string base = output_base(path, dir);
   const double U = r.c.scene.speed;
   if (r.fields.psi.empty()) {
     out.skipped.push_back(
         fmt::format("streamlines skipped: '{}' has no /fields/psi (see output.fields)", path));
   } else {
-    plot_streamlines(streamline_picture(r), base + "_streamlines.png", size);
+    plot_streamlines(streamline_picture(r, window), base + "_streamlines.png", size);
     out.written.push_back(base + "_streamlines.png");
   }
   if (r.fields.cp.empty()) {
@@ -353,7 +346,7 @@ PlotOutcome plot_result_file(const std::string& path, const std::string& dir, Pl
         U > 0.0 ? fmt::format("Cp field skipped: '{}' has no /fields/cp (see output.fields)", path)
                 : std::string("Cp field skipped: Cp is undefined when U = 0"));
   } else {
-    plot_contour_field(cp_picture(r), base + "_cp.png", size);
+    plot_contour_field(cp_picture(r, window), base + "_cp.png", size);
     out.written.push_back(base + "_cp.png");
   }
   if (r.surface.cp.empty() || !(U > 0.0)) {
@@ -369,7 +362,7 @@ PlotOutcome plot_result_file(const std::string& path, const std::string& dir, Pl
       out.skipped.push_back(
           fmt::format("vorticity skipped: '{}' has no /fields/vorticity (see output.fields)", path));
     } else {
-      plot_contour_field(vorticity_picture(r), base + "_vorticity.png", size);
+      plot_contour_field(vorticity_picture(r, window), base + "_vorticity.png", size);
       out.written.push_back(base + "_vorticity.png");
     }
     if (r.viscous->history.empty()) {
@@ -396,9 +389,12 @@ PlotOutcome plot_result_file(const std::string& path, const std::string& dir, Pl
   return out;
 }
 
-void command_plot(const std::string& path, const std::string& dir, const std::string& size, bool quiet) {
+void command_plot(const std::string& path, const std::string& dir, const std::string& size,
+                  const std::string& window, bool quiet) {
   const PlotSize sz = size.empty() ? PlotSize{} : parse_plot_size(size);
-  const PlotOutcome o = plot_result_file(path, dir, sz);
+  std::optional<PlotWindow> win;
+  if (!window.empty()) win = parse_plot_window(window);
+  const PlotOutcome o = plot_result_file(path, dir, sz, win);
   for (const auto& s : o.skipped) std::fprintf(stderr, "magnus: note: %s\n", s.c_str());
   if (!quiet)
     for (const auto& w : o.written) std::printf("%s\n", w.c_str());

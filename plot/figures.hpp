@@ -3,6 +3,7 @@
 // surface Cp) or of a sweep file (C_L against α or Γ), rebuilt from the HDF5 alone. This is where the
 // physics meets the plots: the exact curves, the models and the windows are built here from physics/
 // and handed to the plot functions, which only draw.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,18 +30,32 @@ struct CurveFigure {
 /// a free stagnation point at r_s.
 double view_half_width(const FlowResult& r);
 
+/// The default window of a result's field pictures (units of a, wind frame): the square of
+/// view_half_width; for an unsteady navier-stokes result the wake, x/a in [−5, 25] and y/a in [−6, 6]
+/// (each clipped to R/a).
+PlotWindow view_window(const FlowResult& r);
+
+/// "X0:X1,Y0:Y1" in units of the radius (e.g. -5:25,-6:6): finite, X0 < X1, Y0 < Y1, within ±10⁶, width
+/// over height 1/20 to 20. Throws std::invalid_argument with one line.
+PlotWindow parse_plot_window(const std::string& text);
+
+/// The window asked for (checked to reach the grid, r < R; std::invalid_argument otherwise), or the
+/// default view_window.
+PlotWindow window_for(const FlowResult& r, const std::optional<PlotWindow>& asked);
+
 /// Streamlines of a result in x/a, y/a: ψ, the numeric and exact stagnation points inside the window
 /// (a point outside it becomes a legend note), the separatrix through a free stagnation point.
-StreamlinePicture streamline_picture(const FlowResult& r);
+StreamlinePicture streamline_picture(const FlowResult& r, const std::optional<PlotWindow>& window = {});
 
 /// The Cp field of a result in x/a, y/a, colours over the field's range in the window. Throws
 /// std::runtime_error when the result has no Cp field.
-ContourFieldPicture cp_picture(const FlowResult& r);
+ContourFieldPicture cp_picture(const FlowResult& r, const std::optional<PlotWindow>& window = {});
 
 /// The vorticity field of a navier-stokes result in x/a, y/a: a diverging map over symmetric limits (±the
 /// 98th percentile of |ζ| in the window, so that the wake is not washed out by the wall's peak; beyond it
-/// the end colours), the body drawn. Throws std::runtime_error when the result has no vorticity field.
-ContourFieldPicture vorticity_picture(const FlowResult& r);
+/// the end colours; |ζ| below limit/41 is white, the zero colour), the body drawn. Throws
+/// std::runtime_error when the result has no vorticity field.
+ContourFieldPicture vorticity_picture(const FlowResult& r, const std::optional<PlotWindow>& window = {});
 
 /// C_L(t) and C_D(t) of a navier-stokes result's force history against t in D/U, with their means (over
 /// the last period) and potential flow's C_L for the same scene. Throws std::runtime_error when the
@@ -88,9 +103,13 @@ struct PlotOutcome {
 /// _vorticity.png, _forces.png: C_L, C_D against t, and _shear.png); a sweep file: dir/<stem>_cl.png
 /// (stem: the file name without its extension; dir "" means the file's directory). A picture whose data
 /// the file lacks is skipped; throws if nothing can be drawn.
-PlotOutcome plot_result_file(const std::string& path, const std::string& dir, PlotSize size);
+/// `window`: the field pictures' window (units of a), default view_window.
+PlotOutcome plot_result_file(const std::string& path, const std::string& dir, PlotSize size,
+                             const std::optional<PlotWindow>& window = {});
 
-/// `magnus plot`: plot_result_file, the skipped pictures noted on stderr, the written ones on stdout.
-void command_plot(const std::string& path, const std::string& dir, const std::string& size, bool quiet);
+/// `magnus plot`: plot_result_file, the skipped pictures noted on stderr, the written ones on stdout;
+/// window "" is the default (else parse_plot_window).
+void command_plot(const std::string& path, const std::string& dir, const std::string& size,
+                  const std::string& window, bool quiet);
 
 }  // namespace magnus

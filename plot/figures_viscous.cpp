@@ -12,24 +12,24 @@ namespace magnus {
 
 using namespace figure_labels;
 
-ContourFieldPicture vorticity_picture(const FlowResult& r) {
+ContourFieldPicture vorticity_picture(const FlowResult& r, const std::optional<PlotWindow>& window) {
   const PolarGrid& g = r.grid;
   if (r.fields.vorticity.empty()) throw std::runtime_error("plot: the result has no vorticity field");
   if (r.fields.vorticity.size() != size_t(g.nodes()))
     throw std::runtime_error("plot: the vorticity field does not match the grid");
   ContourFieldPicture p;
-  p.view = view_of(r, "vorticity");
+  p.view = view_of(r, "vorticity", window);
   p.field = polar(g, r.fields.vorticity);
   p.bar_label = "ζ (1/s)";
   p.zero_contour = false;
   p.diverging = true;
   // The wall's thin layer holds the largest |ζ|; colours over its peak would leave the wake white.
-  const double w = p.view.half_width * g.a;
+  const PlotWindow& w = p.view.window;
   std::vector<double> mags;
   for (int i = 0; i < g.n_r; ++i)
     for (int j = 0; j < g.n_theta; ++j) {
-      const double x = g.r[i] * std::cos(g.theta[j]), y = g.r[i] * std::sin(g.theta[j]);
-      if (std::fabs(x) <= w && std::fabs(y) <= w)
+      const double x = g.r[i] / g.a * std::cos(g.theta[j]), y = g.r[i] / g.a * std::sin(g.theta[j]);
+      if (w.contains(x, y))
         mags.push_back(std::fabs(r.fields.vorticity[size_t(i) * g.n_theta + j]));
     }
   std::sort(mags.begin(), mags.end());

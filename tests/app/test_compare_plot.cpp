@@ -258,3 +258,42 @@ TEST_CASE("magnus plot draws a sweep file as C_L against α, or against Γ for a
   CHECK(magnus_cmd({"plot", dir + "/c.h5"}, dir).status == 0);
   CHECK(test::png_size(dir + "/c_cl.png").first == 1000);
 }
+
+TEST_CASE("magnus plot --window: the field pictures show it, bad values refused in one line, no files",
+          "[app][plot]") {
+  const std::string dir = test::temp_dir("plot-window");
+  std::ofstream(dir + "/case.toml") << "[cylinder]\nradius = 0.1\nspin = 100.0\n[flow]\nspeed = "
+                                       "10.0\n[grid]\nn_theta = 32\n";
+  REQUIRE(magnus_cmd({"run", dir + "/case.toml", "-o", dir + "/r.h5", "-q"}, dir).status == 0);
+  const Outcome o =
+      magnus_cmd({"plot", dir + "/r.h5", "-o", dir + "/w", "--window", "-2:10,-3:3", "--size", "900x600"}, dir);
+  CAPTURE(o.err);
+  REQUIRE(o.status == 0);
+  // The box is 12 by 6 radii with equal scales: twice as wide as high.
+  const test::Image img = test::read_png(dir + "/w/r_cp.png");
+  // The field's box: the longest run of coloured (not grey) pixels across and down.
+  auto coloured = [&](int x, int y) {
+    const int r = img.at(x, y, 0), g = img.at(x, y, 1), b = img.at(x, y, 2);
+    return std::max({r, g, b}) - std::min({r, g, b}) > 40;
+  };
+  auto longest = [&](bool across) {
+    int best = 0;
+    for (int k = 0; k < (across ? img.height : img.width); ++k)
+      for (int m = 0, run = 0; m < (across ? img.width : img.height); ++m) {
+        run = (across ? coloured(m, k) : coloured(k, m)) ? run + 1 : 0;
+        best = std::max(best, run);
+      }
+    return best;
+  };
+  const int w = longest(true), h = longest(false);
+  REQUIRE(h > 100);
+  CHECK(double(w) / double(h) == Approx(2.0).epsilon(0.05));
+  for (const char* bad : {"-2:10", "10:-2,-3:3", "x:1,2:3", "-2:10,-3:3,4", "30:40,-3:3"}) {
+    const Outcome b = magnus_cmd({"plot", dir + "/r.h5", "-o", dir + "/bad", "--window", bad}, dir);
+    CAPTURE(bad, b.err);
+    CHECK(b.status != 0);
+    CHECK(lines(b.err) == 1);
+    CHECK(b.err.find("--window") != std::string::npos);
+    CHECK(!fs::exists(dir + "/bad"));
+  }
+}

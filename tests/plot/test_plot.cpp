@@ -218,7 +218,8 @@ TEST_CASE("a free stagnation point far out widens the window (α = 10)", "[plot]
   const std::string dir = test::temp_dir("plot-alpha10");
   const StreamlinePicture pic = streamline_picture(r);
   CHECK(pic.notes.empty());
-  CHECK(pic.view.half_width == Approx(std::min(20.0, 1.2 * rs)).epsilon(2e-3));
+  CHECK(pic.view.window.x1 == Approx(std::min(20.0, 1.2 * rs)).epsilon(2e-3));
+  CHECK(pic.view.window.y0 == Approx(-pic.view.window.x1));
   const PlotFrame f = plot_streamlines(pic, dir + "/s.png", {800, 800});
   const Image img = test::read_png(dir + "/s.png");
   CHECK(marks_at(img, f, {{0.0, rs}}, &Image::red));

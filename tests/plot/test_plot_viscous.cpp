@@ -224,3 +224,100 @@ TEST_CASE("the vorticity's colour bar takes a power of ten of its own", "[plot][
   CHECK(f.bar_exponent < 0);
   CHECK(f.bar_label == "ζ (10^{" + std::to_string(f.bar_exponent) + "} 1/s)");
 }
+
+TEST_CASE("the plot window: parsed in one line, checked against the grid, the default follows an unsteady wake",
+          "[plot][viscous]") {
+  const PlotWindow w = parse_plot_window("-5:25,-6:6");
+  CHECK(w.x0 == -5.0);
+  CHECK(w.x1 == 25.0);
+  CHECK(w.y0 == -6.0);
+  CHECK(w.y1 == 6.0);
+  CHECK(parse_plot_window("-1.5e0:2,0:0.5").y1 == 0.5);
+  for (const char* bad : {"", "1:2", "-5:25,-6", "-5:25,-6:6,1", "5:-5,-6:6", "-5:25,6:6", "a:b,c:d",
+                          "nan:1,0:1", "-5:25;-6:6", "0:1e7,0:1e6", "0:100,0:1", "-5:25,-6:6 "}) {
+    INFO(bad);
+    try {
+      parse_plot_window(bad);
+      FAIL("accepted");
+    } catch (const std::invalid_argument& e) {
+      const std::string what = e.what();
+      CHECK(what.rfind("--window '" + std::string(bad) + "': ", 0) == 0);
+      CHECK(what.find('\n') == std::string::npos);
+    }
+  }
+  FlowResult r = test::viscous_result_by_hand(1.0, 32, 16, 0);  // R = 20a, shedding
+  const PlotWindow d = view_window(r);
+  CHECK(d.x0 == -5.0);
+  CHECK(d.x1 == 20.0);  // 25a, clipped to R
+  CHECK(d.y0 == -6.0);
+  CHECK(d.y1 == 6.0);
+  REQUIRE_THROWS_AS(window_for(r, PlotWindow{21, 30, -1, 1}), std::invalid_argument);
+  REQUIRE_THROWS_AS(window_for(r, PlotWindow{15, 30, 15, 20}), std::invalid_argument);  // corner at 21.2a
+  CHECK(window_for(r, PlotWindow{10, 30, -1, 1}).x1 == 30.0);
+  r.viscous->steady = true;
+  CHECK(view_window(r).x1 == 4.0);
+  CHECK(view_window(r).y0 == -4.0);
+}
+
+TEST_CASE("the vorticity down the wake: a wide window shows it with equal scales", "[plot][viscous]") {
+  FlowResult r = test::viscous_result_by_hand(1.0, 64, 32, 0);
+  // Two shear layers down the wake: ζ < 0 above the axis, ζ > 0 below, out to x = 14a.
+  for (int i = 0; i < r.grid.n_r; ++i)
+    for (int j = 0; j < r.grid.n_theta; ++j) {
+      const double rr = r.grid.r[i] / r.grid.a, x = rr * std::cos(r.grid.theta[j]), y = rr * std::sin(r.grid.theta[j]);
+      r.fields.vorticity[size_t(i) * r.grid.n_theta + j] = x > 0.0 ? -5.0 * y * std::exp(-y * y / 4.0) : 0.0;
+    }
+  const std::string dir = test::temp_dir("plot-wake-window");
+  const ContourFieldPicture pic = vorticity_picture(r, PlotWindow{-5, 15, -4, 4});
+  const PlotFrame f = plot_contour_field(pic, dir + "/v.png", {1000, 800});
+  CHECK(f.x0 == -5.0);
+  CHECK(f.x1 == 15.0);
+  CHECK(f.y0 == -4.0);
+  CHECK(f.y1 == 4.0);
+  // Equal scales: the box is 20/8 as wide as it is high.
+  CHECK((f.box.x1 - f.box.x0) / (f.box.y1 - f.box.y0) == Approx(20.0 / 8.0).epsilon(0.01));
+  // The bar and its numbers stay on the page.
+  CHECK(f.colour_bar.x1 < 1000 - 30);
+  const Image img = test::read_png(dir + "/v.png");
+  // The wake behind x = 4a (the old window's edge) is coloured where the field says.
+  int checked = 0, right = 0;
+  for (int i = 0; i < r.grid.n_r; ++i)
+    for (int j = 0; j < r.grid.n_theta; ++j) {
+      const double rr = r.grid.r[i] / r.grid.a, th = r.grid.theta[j];
+      const double x = rr * std::cos(th), y = rr * std::sin(th);
+      if (x < 5.0 || x > 14.5 || std::fabs(y) > 3.8) continue;
+      const double z = r.fields.vorticity[size_t(i) * r.grid.n_theta + j];
+      if (std::fabs(z) < 0.2 * pic.limit) continue;
+      ++checked;
+      right += z > 0 ? reddish(img, f.px(x), f.py(y)) : bluish(img, f.px(x), f.py(y));
+    }
+  CHECK(checked > 5);
+  CHECK(right >= 0.9 * checked);
+}
+
+TEST_CASE("round-off vorticity in the free stream has the zero colour, not a tint of its sign",
+          "[plot][viscous]") {
+  FlowResult r = test::viscous_result_by_hand(1.0, 64, 32, 0);
+  const PolarGrid& g = r.grid;
+  // Real vorticity near the body; beyond r = 3a only round-off of alternating sign.
+  for (int i = 0; i < g.n_r; ++i)
+    for (int j = 0; j < g.n_theta; ++j)
+      if (g.r[i] > 3.0 * g.a) r.fields.vorticity[size_t(i) * g.n_theta + j] = (i + j) % 2 ? 3e-9 : -3e-9;
+  r.viscous->steady = true;  // the ±4a window
+  const std::string dir = test::temp_dir("plot-roundoff");
+  const ContourFieldPicture pic = vorticity_picture(r);
+  REQUIRE(pic.limit > 1e-3);
+  const PlotFrame f = plot_contour_field(pic, dir + "/v.png", {900, 700});
+  const Image img = test::read_png(dir + "/v.png");
+  int neutral = 0, tinted = 0;
+  for (double x = -3.8; x <= 3.8; x += 0.1)
+    for (double y : {-3.7, -3.5, 3.5, 3.7}) {
+      const int px = int(f.px(x)), py = int(f.py(y));
+      const int cr = img.at(px, py, 0), cg = img.at(px, py, 1), cb = img.at(px, py, 2);
+      const bool grey = std::abs(cr - cb) <= 3 && std::abs(cr - cg) <= 3 && cr > 235;
+      neutral += grey;
+      tinted += !grey;
+    }
+  CHECK(neutral > 200);
+  CHECK(tinted == 0);
+}
