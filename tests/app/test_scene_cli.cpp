@@ -161,3 +161,32 @@ TEST_CASE("potential flow's summary: the Reynolds number and the inviscid bound 
   CHECK(of.out.find("viscous reference: none within") != std::string::npos);
   CHECK(of.out.find("Reynolds") == std::string::npos);  // no viscosity given: no Re
 }
+
+TEST_CASE("run --set on a scene key replaces the case title, other keys and --set title keep it",
+          "[app][scene]") {
+  const std::string dir = test::temp_dir("scene-retitle");
+  const std::string c = std::string(MAGNUS_SOURCE_DIR) + "/cases/spin_ratio_1.toml";
+  auto first_line = [](const std::string& s) { return s.substr(0, s.find('\n')); };
+  const auto o = test::magnus_cmd(
+      {"run", c, "-o", dir + "/r.h5", "--set", "cylinder.spin=0", "--set", "grid.n_theta=32"}, dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  CHECK(first_line(o.out).find("Potential flow, spin_ratio_1.toml with --set cylinder.spin=0") !=
+        std::string::npos);
+  CHECK(o.out.find("spin ratio 1") == std::string::npos);
+  CHECK(o.out.find("grid.n_theta") == std::string::npos);  // only the scene's keys are named
+  const ResultFile f(dir + "/r.h5");
+  CHECK(f.attr_string("/", "title") == "Potential flow, spin_ratio_1.toml with --set cylinder.spin=0");
+  CHECK(read_result(dir + "/r.h5").c.title == f.attr_string("/", "title"));
+  // Only a grid key: the title stays.
+  const auto g = test::magnus_cmd({"run", c, "-o", dir + "/g.h5", "--set", "grid.n_theta=32"}, dir);
+  REQUIRE(g.status == 0);
+  CHECK(first_line(g.out).find("Spinning cylinder, spin ratio 1") != std::string::npos);
+  // A title of one's own is kept.
+  const auto t = test::magnus_cmd({"run", c, "-o", dir + "/t.h5", "--set", "cylinder.spin=0", "--set",
+                                   "title=\"still\"", "--set", "grid.n_theta=32"},
+                                  dir);
+  INFO(t.err);
+  REQUIRE(t.status == 0);
+  CHECK(first_line(t.out).find("— still") != std::string::npos);
+}
