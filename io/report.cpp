@@ -93,9 +93,10 @@ std::string summary_text(const FlowResult& r, const std::string& output_path) {
                              ms(r.timing.assemble_s), ms(r.timing.factor_s), ms(r.timing.solve_s),
                              ms(r.timing.postproc_s), ms(r.timing.total_s)));
   s += "\n";
-  line("lift F_y", fmt::format("{} N/m   (Kutta–Joukowski −ρUΓ = {} N/m)", num(f.lift, "{:.10g}"),
+  // Lift and drag in the flow's frame (across and along the freestream): the direction leaves them unchanged.
+  line("lift", fmt::format("{} N/m across the freestream   (Kutta–Joukowski −ρUΓ = {} N/m)", num(f.lift, "{:.10g}"),
                                num(f.lift_kutta_joukowski, "{:.10g}")));
-  line("drag F_x", fmt::format("{} N/m   (d'Alembert: 0)", num(f.drag, "{:.3g}")));
+  line("drag", fmt::format("{} N/m along the freestream   (d'Alembert: 0)", num(f.drag, "{:.3g}")));
   if (f.cl) {
     const double kj = *f.cl_kutta_joukowski, seed = *f.cl_seed_estimate;
     line("C_L", fmt::format("numeric {}   Kutta–Joukowski {}   seed estimate {}{}", num(*f.cl, "{:.10g}"),

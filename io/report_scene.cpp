@@ -75,11 +75,16 @@ std::string scene_lines(const FlowResult& r) {
   const SceneForces f = scene_forces(r);
   const char* per = r.viscous ? " (means)" : "";
   std::string s;
-  if (sc.direction_deg != 0.0)
+  if (sc.direction_deg != 0.0) {
     s += line("direction",
               fmt::format("freestream towards {} (CCW from +x); x, y, u_x, u_y in this world frame, θ from "
                           "the freestream",
                           deg(sc.direction_deg)));
+    // Lift and drag are in the flow's frame; the world's components of the same force beside them.
+    const WorldForce w = world_force(f.drag, f.lift, sc.direction_deg);
+    s += line("", fmt::format("force in the world frame: F_x = {} N/m, F_y = {} N/m{}", num(w.x, "{:.6g}"),
+                              num(w.y, "{:.6g}"), per));
+  }
   if (f.thrust)
     s += line("course", fmt::format("{}: thrust {} N/m (ahead +), side force {} N/m (to port +){}",
                                     deg(*sc.course_deg), num(*f.thrust, "{:.8g}"), num(*f.side, "{:.6g}"), per));

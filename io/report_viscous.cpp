@@ -106,9 +106,9 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
     row("St = fD/U",
         v.strouhal ? fmt_opt(v.strouhal, "{:.5f}") : (v.steady ? "steady (no shedding)" : "no period found"),
         "— (no wake)");
-    row("lift F_y", fmt::format("{} N/m {}", num(v.lift_mean, "{:.6g}"), kind),
+    row("lift", fmt::format("{} N/m {}, across the flow", num(v.lift_mean, "{:.6g}"), kind),
         fmt::format("{} N/m (−ρUΓ)", num(r.forces.lift_kutta_joukowski, "{:.6g}")));
-    row("drag F_x", fmt::format("{} N/m {}", num(v.drag_mean, "{:.6g}"), kind), "0 N/m");
+    row("drag", fmt::format("{} N/m {}, along the flow", num(v.drag_mean, "{:.6g}"), kind), "0 N/m");
     row("Magnus S", fmt::format("{} kg/m", fmt_opt(r.forces.magnus_S, "{:.6g}")),
         fmt::format("2πρa² = {} kg/m", fmt_opt(r.forces.magnus_S_exact, "{:.6g}")));
     line("S/(2πρa²)",

@@ -108,22 +108,22 @@ std::vector<AttrSpec> make_attributes() {
           }),
 
       row(num(
-              F, "lift", "N/m", "lift F_y per unit span, numeric",
+              F, "lift", "N/m", "lift per unit span (across the freestream), numeric",
               [](const FlowResult& r) { return opt(r.forces.lift); },
               [](FlowResult& r, double v) { r.forces.lift = v; }),
-          "lift F_y (N/m)", "lift_N_m", "{:.10g}"),
+          "lift (N/m)", "lift_N_m", "{:.10g}"),
       row(num(
-              F, "drag", "N/m", "drag F_x per unit span, numeric",
+              F, "drag", "N/m", "drag per unit span (along the freestream), numeric",
               [](const FlowResult& r) { return opt(r.forces.drag); },
               [](FlowResult& r, double v) { r.forces.drag = v; }),
-          "drag F_x (N/m)", "drag_N_m", "{:.3g}"),
+          "drag (N/m)", "drag_N_m", "{:.3g}"),
       row(num(
-              F, "cl", "1", "lift coefficient F_y/(½ρU²·2a) (undefined when U = 0)",
+              F, "cl", "1", "lift coefficient L/(½ρU²·2a), L across the freestream (undefined when U = 0)",
               [](const FlowResult& r) { return r.forces.cl; },
               [](FlowResult& r, double v) { r.forces.cl = v; }),
           "C_L numeric", "cl", "{:.10g}"),
       row(num(
-              F, "cd", "1", "drag coefficient F_x/(½ρU²·2a) (undefined when U = 0)",
+              F, "cd", "1", "drag coefficient D/(½ρU²·2a), D along the freestream (undefined when U = 0)",
               [](const FlowResult& r) { return r.forces.cd; },
               [](FlowResult& r, double v) { r.forces.cd = v; }),
           "C_D", "cd", "{:.3e}"),

@@ -239,9 +239,9 @@ void write_sweep_file(const SweepResult& s, H5Writer& w) {
   column(
       "circulation", [](const SweepRow& r) { return r.circulation; }, "m^2/s", "circulation Γ");
   column(
-      "lift", [](const SweepRow& r) { return r.lift; }, "N/m", "lift F_y per unit span, numeric");
+      "lift", [](const SweepRow& r) { return r.lift; }, "N/m", "lift per unit span (across the freestream), numeric");
   column(
-      "drag", [](const SweepRow& r) { return r.drag; }, "N/m", "drag F_x per unit span, numeric");
+      "drag", [](const SweepRow& r) { return r.drag; }, "N/m", "drag per unit span (along the freestream), numeric");
   column(
       "cl", [](const SweepRow& r) { return r.cl; }, "1", "lift coefficient, numeric");
   column(

@@ -29,8 +29,8 @@ const std::vector<Column>& columns() {
   static const std::vector<Column> table = {
       {"alpha", "1", "spin ratio aω/U (circulation sweep: Γ/(2πaU))", [](const SweepRow& r) { return r.alpha; }},
       {"circulation", "m^2/s", "circulation Γ", [](const SweepRow& r) { return r.circulation; }},
-      {"lift", "N/m", "lift F_y per unit span, numeric", [](const SweepRow& r) { return r.lift; }},
-      {"drag", "N/m", "drag F_x per unit span, numeric", [](const SweepRow& r) { return r.drag; }},
+      {"lift", "N/m", "lift per unit span (across the freestream), numeric", [](const SweepRow& r) { return r.lift; }},
+      {"drag", "N/m", "drag per unit span (along the freestream), numeric", [](const SweepRow& r) { return r.drag; }},
       {"cl", "1", "lift coefficient, numeric", [](const SweepRow& r) { return r.cl; }},
       {"cl_kutta_joukowski", "1", "Kutta–Joukowski −Γ/(Ua)", [](const SweepRow& r) { return r.cl_kj; }},
       {"cl_seed_estimate", "1", "seed estimate −4aω/U", [](const SweepRow& r) { return r.cl_seed; }},

@@ -116,7 +116,7 @@ TEST_CASE("magnus compare reads back exactly what magnus run wrote", "[app][comp
   CAPTURE(o.err);
   REQUIRE(o.status == 0);
   for (const char* s :
-       {"lift F_y (N/m)", "C_L Kutta–Joukowski", "C_L seed estimate", "C_D", "error C_L rel", "n_theta"})
+       {"lift (N/m)", "C_L Kutta–Joukowski", "C_L seed estimate", "C_D", "error C_L rel", "n_theta"})
     CHECK(o.out.find(s) != std::string::npos);
   CHECK(slurp(dir + "/cmp.csv") == compare_results({files[0], files[1]}).csv);
   std::ofstream(dir + "/foreign.h5") << "not HDF5";

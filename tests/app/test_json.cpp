@@ -103,6 +103,7 @@ const std::map<std::string, std::vector<std::string>> kSummaryToJson = {
      {"/parameters/radius", "/parameters/spin", "/parameters/rpm", "/parameters/speed", "/parameters/spin_ratio",
       "/parameters/density"}},
     {"direction", {"/parameters/direction"}},
+    {"direction+", {"/parameters/direction"}},  // the world's F_x, F_y: lift and drag turned by it
     {"course", {"/parameters/course", "/forces/thrust", "/forces/side_force"}},
     {"span",
      {"/parameters/span", "/forces/lift_total", "/forces/drag_total", "/forces/thrust_total",
@@ -111,8 +112,8 @@ const std::map<std::string, std::vector<std::string>> kSummaryToJson = {
     {"grid",
      {"/parameters/n_theta", "/parameters/n_r", "/derived/nodes", "/parameters/spacing",
       "/parameters/outer_radius", "/parameters/outer_radius_requested"}},
-    {"lift F_y", {"/forces/lift_kutta_joukowski"}},
-    {"drag F_x", {"/forces"}},
+    {"lift", {"/forces/lift_kutta_joukowski"}},
+    {"drag", {"/forces"}},
     {"C_L", {"/forces/cl_seed_estimate"}},
     {"C_D", {"/forces"}},
     {"Magnus S", {"/forces/magnus_S", "/forces/magnus_S_exact"}},
@@ -164,16 +165,16 @@ const std::map<std::string, std::vector<std::string>> kSummaryToJson = {
 
 /// Model-specific figures of labels both summaries share.
 const std::map<std::string, std::vector<std::string>> kPotentialOnly = {
-    {"lift F_y", {"/forces/lift"}},
-    {"drag F_x", {"/forces/drag"}},
+    {"lift", {"/forces/lift"}},
+    {"drag", {"/forces/drag"}},
     {"C_L", {"/forces/cl", "/forces/cl_kutta_joukowski"}},
     {"C_D", {"/forces/cd"}},
     {"grid", {"/parameters/far_field"}},
     {"grid+", {"/derived/grid_choice"}},
 };
 const std::map<std::string, std::vector<std::string>> kViscousOnly = {
-    {"lift F_y", {"/forces/lift_mean"}},
-    {"drag F_x", {"/forces/drag_mean"}},
+    {"lift", {"/forces/lift_mean"}},
+    {"drag", {"/forces/drag_mean"}},
     {"C_L", {"/forces/cl_mean", "/forces/cl_amplitude", "/forces/cl_ideal"}},
     {"C_D", {"/forces/cd_mean"}},
     {"grid+", {"/derived/wall_cells"}},

@@ -162,6 +162,35 @@ TEST_CASE("potential flow's summary: the Reynolds number and the inviscid bound 
   CHECK(of.out.find("Reynolds") == std::string::npos);  // no viscosity given: no Re
 }
 
+TEST_CASE("flow.direction 90°: lift and drag labelled by the flow's frame, the world's F_x, F_y beside",
+          "[app][scene]") {
+  const std::string dir = test::temp_dir("scene-direction-labels");
+  const std::string c = write(dir + "/b.toml", scene("direction = 90.0\n"));
+  const auto o = test::magnus_cmd({"run", c, "-o", dir + "/b.h5"}, dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  const std::string lift = test::line_of(o.out, "lift "), drag = test::line_of(o.out, "drag ");
+  CHECK(lift.find("across the freestream") != std::string::npos);
+  CHECK(drag.find("along the freestream") != std::string::npos);
+  CHECK(o.out.find("F_y") == o.out.find("F_y = "));  // F_y only as the world component
+  CHECK(o.out.find("lift F_y") == std::string::npos);
+  CHECK(o.out.find("drag F_x") == std::string::npos);
+  const double L = std::stod(lift.substr(15)), D = std::stod(drag.substr(15));
+  CHECK(L == Approx(-76.96).epsilon(2e-3));  // −ρUΓ across the freestream, whatever its direction
+  // β = 90°: F_x = D cos β − L sin β = −L, F_y = D sin β + L cos β = D.
+  const size_t at = o.out.find("force in the world frame: F_x = ");
+  REQUIRE(at != std::string::npos);
+  const std::string world = o.out.substr(at, o.out.find('\n', at) - at);
+  const double Fx = std::stod(world.substr(world.find("F_x = ") + 6));
+  const double Fy = std::stod(world.substr(world.find("F_y = ") + 6));
+  CHECK(Fx == Approx(-L).epsilon(1e-5));
+  CHECK(Fy == Approx(D).margin(1e-6 * std::fabs(L)));
+  // Unturned: no world line (the frames agree).
+  const auto a = test::magnus_cmd({"run", write(dir + "/a.toml", scene("")), "-o", dir + "/a.h5"}, dir);
+  REQUIRE(a.status == 0);
+  CHECK(a.out.find("world frame") == std::string::npos);
+}
+
 TEST_CASE("run --set on a scene key replaces the case title, other keys and --set title keep it",
           "[app][scene]") {
   const std::string dir = test::temp_dir("scene-retitle");
