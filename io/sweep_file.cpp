@@ -190,6 +190,8 @@ void write_sweep_file(const SweepResult& s, H5Writer& w) {
     w.attr_with_units(p, "speed", c.scene.speed, "m/s");
     w.attr_with_units(p, "density", c.scene.density, "kg/m^3");
     w.attr_with_units(p, "pressure_inf", c.scene.pressure_inf, "Pa");
+    // The scene's Re for the overlays of `magnus plot` (potential flow itself does not use ν).
+    if (c.scene.viscosity > 0.0) w.attr_with_units(p, "viscosity", c.scene.viscosity, "m^2/s");
     w.attr(p, "circulation_model", c.scene.circulation_given ? "given" : "spin");
     if (!by_spin) w.attr_with_units(p, "spin", c.scene.spin, "rad/s");
     w.attr_with_units(p, "outer_radius", g.outer_radius() / g.a, "1");

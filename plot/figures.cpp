@@ -225,10 +225,16 @@ CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference, c
       f.lines.push_back(vline);
     }
   }
+  // The scene's Re (0: no viscosity, no Re): reference data measured at another Re are left out.
+  const double re = s.base.viscosity > 0.0 && U > 0.0 ? s.base.reynolds() : 0.0;
   if (reference && !by_gamma) {
     int k = 0;
     const Colour colours[] = {Colour::teal, Colour::purple, Colour::brown, Colour::olive, Colour::magenta};
     for (const auto& d : reference->datasets) {
+      if (re > 0.0 && !(d.reynolds >= re / 3.0 && d.reynolds <= 3.0 * re)) {
+        ++k;
+        continue;
+      }
       PointSet ps;
       ps.label = literal_text(d.label);
       ps.colour = colours[k % 5];
@@ -240,7 +246,7 @@ CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference, c
     }
   }
   if (rotor && !by_gamma)
-    add_rotor_overlays(f, *rotor, s.base.viscosity > 0.0 && U > 0.0 ? s.base.reynolds() : 0.0, xlo, xhi);
+    add_rotor_overlays(f, *rotor, re, xlo, xhi);
   PointSet numeric{"numeric (potential flow)", {}, Colour::red, 0, false};
   for (size_t k = 0; k < s.x.size() && k < s.cl.size(); ++k) numeric.points.push_back({s.x[k], s.cl[k]});
   f.points.push_back(std::move(numeric));
@@ -264,7 +270,7 @@ LiftSweep read_lift_sweep(const std::string& path) {
   if (!(s.base.radius > 0.0) || !(s.base.speed > 0.0))
     throw std::runtime_error(fmt::format("'{}': /parameters radius and speed must be positive", path));
   s.base.spin = param("spin", 0.0);
-  s.base.viscosity = param("viscosity", 0.0);  // not written today: no Re, every rotor dataset drawn
+  s.base.viscosity = param("viscosity", 0.0);  // older files: no Re, every overlay drawn
   s.base.circulation_given = s.by_circulation;
   s.title = f.has_attr("/", "title") ? f.attr_string("/", "title") : std::string();
   s.n_theta = int(param("n_theta", 0.0));

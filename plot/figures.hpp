@@ -83,7 +83,8 @@ struct LiftSweep {
 
 /// C_L against α (or Γ): numeric points, Kutta–Joukowski, the seed estimate (−4α; in a circulation sweep
 /// the constant −4aω/U of the fixed spin, omitted when ω = 0), Prandtl's bound |C_L| = 4π where the
-/// stagnation points merge, and the reference data (spin sweeps only; may be null). Spin sweeps also draw
+/// stagnation points merge, and the viscous reference data (spin sweeps only; may be null) whose Re is
+/// within a factor 3 of the scene's (all of them when it has no Re; each label names its Re). Spin sweeps also draw
 /// the rotor-sail data (may be null) that fit the scene's Re = U·2a/ν (base.viscosity > 0; without a
 /// viscosity there is no Re and all are drawn): see add_rotor_overlays.
 CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference,

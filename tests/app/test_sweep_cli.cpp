@@ -9,7 +9,9 @@
 #include <sstream>
 
 #include "io/hdf5_io.hpp"
+#include "io/reference_file.hpp"
 #include "io/sweep_file.hpp"
+#include "plot/figures.hpp"
 #include "support.hpp"
 
 using namespace magnus;
@@ -142,4 +144,29 @@ TEST_CASE("magnus sweep --spin-ratio: the case needs no spin key of its own", "[
     REQUIRE(cl[k] == Approx(-2 * M_PI * alpha[k]).epsilon(3e-3).margin(1e-12));
   // A run of the same file still needs it: only the sweep supplies the spin.
   REQUIRE(magnus_cmd({"run", case_path, "-o", dir + "/r.h5"}, dir).status != 0);
+}
+
+TEST_CASE("a sweep file keeps the case's viscosity: plotted again, overlays only of its Re", "[app][sweep][cli]") {
+  const std::string dir = test::temp_dir("sweep-viscosity");
+  const std::string rotor = std::string(MAGNUS_SOURCE_DIR) + "/cases/rotor_sail.toml";
+  const Outcome o = magnus_cmd(
+      {"sweep", rotor, "--spin-ratio", "0:2:1", "-o", dir + "/s.h5", "--set", "grid.n_theta=32"}, dir);
+  CAPTURE(o.err);
+  REQUIRE(o.status == 0);
+  const LiftSweep s = read_lift_sweep(dir + "/s.h5");
+  CHECK(s.base.viscosity == 1.5e-5);
+  CHECK(s.base.reynolds() == Approx(4e6));
+  const ViscousReference ref = load_viscous_reference(viscous_reference_path());
+  const CurveFigure f = lift_figure(s, &ref, shipped_rotor_data());
+  for (const auto& p : f.points) CHECK(p.label.find("Re = 100") == std::string::npos);
+  // A case without a viscosity stores none (no Re): every table is drawn.
+  const std::string plain = dir + "/plain.toml";
+  std::ofstream(plain) << "[cylinder]\nradius = 0.1\n[flow]\nspeed = 10.0\n[grid]\nn_theta = 32\n";
+  REQUIRE(magnus_cmd({"sweep", plain, "--spin-ratio", "0:2:1", "-o", dir + "/p.h5"}, dir).status == 0);
+  const ResultFile pf(dir + "/p.h5", {"magnus-sweep"});
+  CHECK(!pf.has_attr("/parameters", "viscosity"));
+  int drawn = 0;
+  for (const auto& p : lift_figure(read_lift_sweep(dir + "/p.h5"), &ref, nullptr).points)
+    drawn += p.label.find("Re = 100") != std::string::npos;
+  CHECK(drawn == int(ref.datasets.size()));
 }

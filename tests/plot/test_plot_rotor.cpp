@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "io/reference_file.hpp"
 #include "io/rotor_data.hpp"
 #include "plot/figures.hpp"
 #include "plot/figures_rotor.hpp"
@@ -94,4 +95,22 @@ TEST_CASE("lift figure: rotor data drawn when their Re fits the scene's, all whe
   };
   CHECK(inked_near(2.0, -5.93));
   CHECK(inked_near(4.0, -10.77));
+}
+
+TEST_CASE("lift figure: the Re = 100 viscous reference only beside a scene of its Re", "[plot]") {
+  const ViscousReference ref = load_viscous_reference(viscous_reference_path());
+  REQUIRE(ref.datasets.size() >= 2);
+  for (const auto& d : ref.datasets) REQUIRE(d.reynolds == 100.0);
+  // The rotor sail: Re = 12·5/1.5e-5 = 4·10^6, far from 100: no Re = 100 points.
+  const CurveFigure rotor = lift_figure(rotor_sweep(1.5e-5), &ref, nullptr);
+  CHECK(count_label(rotor, "Re = 100") == 0);
+  // Re = 12·5/0.6 = 100: both tables, each naming its Re.
+  const CurveFigure re100 = lift_figure(rotor_sweep(0.6), &ref, nullptr);
+  CHECK(count_label(re100, "Re = 100") == int(ref.datasets.size()));
+  // Re = 250 is within a factor 3 of 100; Re = 400 is not.
+  CHECK(count_label(lift_figure(rotor_sweep(12.0 * 5.0 / 250.0), &ref, nullptr), "Re = 100") ==
+        int(ref.datasets.size()));
+  CHECK(count_label(lift_figure(rotor_sweep(12.0 * 5.0 / 400.0), &ref, nullptr), "Re = 100") == 0);
+  // No viscosity, no Re: all of them, labelled with their Re.
+  CHECK(count_label(lift_figure(rotor_sweep(0.0), &ref, nullptr), "Re = 100") == int(ref.datasets.size()));
 }
