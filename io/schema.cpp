@@ -160,7 +160,7 @@ std::vector<AttrSpec> make_attributes() {
           [](const FlowResult& r) { return opt(r.forces.circulation_measured); },
           [](FlowResult& r, double v) { r.forces.circulation_measured = v; }),
       num(
-          F, "magnus_S", "kg/m", "Magnus coefficient S = −F_y/(Uω) (undefined when U = 0 or ω = 0)",
+          F, "magnus_S", "kg/m", "Magnus coefficient S = −L/(Uω), L the lift (undefined when U = 0 or ω = 0)",
           [](const FlowResult& r) { return r.forces.magnus_S; },
           [](FlowResult& r, double v) { r.forces.magnus_S = v; }),
       num(
@@ -180,7 +180,7 @@ std::vector<AttrSpec> make_attributes() {
               [](FlowResult& r, double v) { r.errors.cp_surface_max_abs = v; }),
           "error Cp surface max abs", "cp_surface_max_abs", "{:.3e}"),
       row(num(
-              E, "cl_rel", "1", "|F_y − F_y,KJ| / |F_y,KJ|; when Γ = 0, |F_y|/(ρU²a) (undefined when U = 0)",
+              E, "cl_rel", "1", "|L − L_KJ| / |L_KJ| (L the lift); when Γ = 0, |L|/(ρU²a) (undefined when U = 0)",
               [](const FlowResult& r) { return r.errors.cl_rel; },
               [](FlowResult& r, double v) { r.errors.cl_rel = v; }),
           "error C_L rel", "cl_rel", "{:.3e}"),

@@ -141,7 +141,7 @@ CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference, c
   f.page.title = fmt::format("{}: lift against {} (potential flow{})", case_title(s.title),
                              by_gamma ? "circulation" : "spin ratio", grid);
   f.page.xlabel = by_gamma ? "circulation Γ (m^2/s)" : "spin ratio α = aω/U";
-  f.page.ylabel = "lift coefficient C_L = F_y / (½ρU^2·2a)";
+  f.page.ylabel = "lift coefficient C_L = L/(½ρU^2·2a), lift L ⊥ U";
   double xlo = 0.0, xhi = 0.0;
   bool any = false;
   for (double x : s.x)

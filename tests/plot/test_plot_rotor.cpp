@@ -114,3 +114,10 @@ TEST_CASE("lift figure: the Re = 100 viscous reference only beside a scene of it
   // No viscosity, no Re: all of them, labelled with their Re.
   CHECK(count_label(lift_figure(rotor_sweep(0.0), &ref, nullptr), "Re = 100") == int(ref.datasets.size()));
 }
+
+TEST_CASE("lift figure: C_L is labelled by the flow's frame, not by a world axis", "[plot]") {
+  // With flow.direction = 90 the lift points along −x: "F_y" would name the wrong force.
+  const CurveFigure f = lift_figure(rotor_sweep(1.5e-5), nullptr, nullptr);
+  CHECK(f.page.ylabel.find("F_y") == std::string::npos);
+  CHECK(f.page.ylabel.find("lift L ⊥ U") != std::string::npos);
+}
