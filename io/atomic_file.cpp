@@ -3,7 +3,6 @@
 #include <dirent.h>
 #include <fcntl.h>
 #include <fmt/core.h>
-#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -12,6 +11,8 @@
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
+
+#include "io/output_lock.hpp"
 
 namespace magnus {
 
@@ -31,26 +32,33 @@ const char* special_kind(const struct stat& st) {
   return "";
 }
 
-/// Removes temporary files of earlier writers of target (".NAME.tmp-PID" beside it) whose process is gone:
-/// a writer killed with SIGKILL cannot remove its own. A live PID (another writer) is left alone.
+/// Removes temporary files of earlier writers of target (".NAME.tmp-PID[-N]" beside it) that no writer
+/// holds: a writer locks its temporary for as long as it lives (try_lock_file), and the kernel drops the
+/// lock of a killed one, which cannot remove its own. A PID says nothing here: in another PID namespace
+/// (a container, unshare) a live writer's PID looks dead.
 void remove_stale_temps(const std::string& target) {
   const std::string dir = dir_of(target), prefix = "." + base_of(target) + ".tmp-";
   DIR* d = ::opendir(dir.c_str());
   if (!d) return;
-  std::vector<std::string> stale;
+  std::vector<std::string> found;
   while (const dirent* e = ::readdir(d)) {
     const std::string name = e->d_name;
     if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
-    const std::string pid = name.substr(prefix.size());
-    if (pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) continue;
-    const long p = std::stol(pid);
-    if (p > 0 && p != long(::getpid()) && ::kill(pid_t(p), 0) != 0 && errno == ESRCH) stale.push_back(name);
+    const std::string tail = name.substr(prefix.size());
+    if (tail.size() <= 16 && tail.find_first_not_of("0123456789-") == std::string::npos)
+      found.push_back(name);
   }
   ::closedir(d);
-  for (const auto& name : stale) {
-    struct stat st;
+  for (const auto& name : found) {
     const std::string full = dir + "/" + name;
-    if (::lstat(full.c_str(), &st) == 0 && S_ISREG(st.st_mode)) std::remove(full.c_str());
+    struct stat st, at;
+    if (::lstat(full.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
+    const int fd = ::open(full.c_str(), O_RDWR | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) continue;
+    if (try_lock_file(fd) && ::fstat(fd, &at) == 0 && ::lstat(full.c_str(), &st) == 0 &&
+        at.st_ino == st.st_ino && at.st_dev == st.st_dev)
+      ::unlink(full.c_str());
+    ::close(fd);
   }
 }
 
@@ -136,18 +144,25 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path), target_(output_ta
   const std::string stem = dir_of(target_) + "/." + base_of(target_) + ".tmp-" + std::to_string(::getpid());
   for (int attempt = 0; attempt < 100; ++attempt) {
     temp_ = attempt ? stem + "-" + std::to_string(attempt) : stem;
-    const int fd = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd >= 0) {
-      ::close(fd);
+    const int fd = ::open(temp_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0 && errno != EEXIST) fail(path, std::strerror(errno));
+    if (fd < 0) continue;
+    // Locked while this object lives: the sweep of another writer leaves it alone. A sweep that got to it
+    // between the open and the lock may have removed it: then another name.
+    struct stat a, b;
+    if (try_lock_file(fd) && ::fstat(fd, &a) == 0 && ::lstat(temp_.c_str(), &b) == 0 &&
+        a.st_ino == b.st_ino && a.st_dev == b.st_dev) {
+      lock_fd_ = fd;
       return;
     }
-    if (errno != EEXIST) fail(path, std::strerror(errno));
+    ::close(fd);
   }
   fail(path, "no free temporary name beside it");
 }
 
 AtomicFile::~AtomicFile() {
   if (!committed_) ::unlink(temp_.c_str());
+  if (lock_fd_ >= 0) ::close(lock_fd_);
 }
 
 void AtomicFile::commit() {
@@ -156,6 +171,8 @@ void AtomicFile::commit() {
   if (::lstat(target_.c_str(), &st) == 0 && *special_kind(st)) fail(path_, special_kind(st));
   if (std::rename(temp_.c_str(), target_.c_str()) != 0) fail(path_, std::strerror(errno));
   committed_ = true;
+  ::close(lock_fd_);
+  lock_fd_ = -1;
 }
 
 void write_text(AtomicFile& f, const std::string& text) {

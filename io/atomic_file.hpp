@@ -26,9 +26,10 @@ void check_file_writable(const std::string& path, const char* what);
 /// "" and "-" are skipped.
 void check_distinct_paths(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs);
 
-/// A file being written under a temporary name beside its target (".NAME.tmp-PID", created exclusively),
-/// renamed onto the target by commit(); removed on destruction if never committed. Temporaries that
-/// killed writers of the same target left behind are removed first.
+/// A file being written under a temporary name beside its target (".NAME.tmp-PID", created exclusively and
+/// locked until committed), renamed onto the target by commit(); removed on destruction if never
+/// committed. Temporaries that killed writers of the same target left behind (no lock held) are removed
+/// first.
 class AtomicFile {
  public:
   explicit AtomicFile(const std::string& path);
@@ -45,6 +46,7 @@ class AtomicFile {
  private:
   std::string path_, target_, temp_;
   bool committed_ = false;
+  int lock_fd_ = -1;  ///< holds the temporary's lock (try_lock_file)
 };
 
 /// Write text to the temporary file of f (the file is then complete but not yet committed). Throws one line.

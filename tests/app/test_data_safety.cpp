@@ -21,6 +21,7 @@
 #include <thread>
 
 #include "io/inspect.hpp"
+#include "io/output_lock.hpp"
 #include "io/report.hpp"
 #include "support.hpp"
 
@@ -177,12 +178,21 @@ TEST_CASE("SIGKILL while writing leaves the earlier result intact and no partial
   earlier_result(out, dir);
   REQUIRE(temp_files(dir).empty());
   REQUIRE(names_in(dir) == std::vector<std::string>{"r.h5", "r.xmf"});
-  // ...but never those of a writer that is still running (here: this test process).
-  const std::string live = dir + "/.r.h5.tmp-" + std::to_string(::getpid());
+  // ...but never those of a writer that is still running, which holds a lock on its temporary (here: this
+  // test process). Its PID says nothing: one from another PID namespace (a container) looks dead here.
+  const std::string live = dir + "/.r.h5.tmp-999999999";
   spit(live, "in progress");
+  const int fd = ::open(live.c_str(), O_RDWR | O_CLOEXEC);
+  REQUIRE(fd >= 0);
+  REQUIRE(try_lock_file(fd));
   earlier_result(out, dir);
-  REQUIRE(fs::exists(live));
-  fs::remove(live);
+  REQUIRE(slurp(live) == "in progress");
+  ::close(fd);  // the writer is gone: its temporary is stale, whatever PID it names (here a live one)
+  const std::string mine = dir + "/.r.h5.tmp-" + std::to_string(::getpid());
+  fs::rename(live, mine);
+  earlier_result(out, dir);
+  REQUIRE_FALSE(fs::exists(mine));
+  REQUIRE(names_in(dir) == std::vector<std::string>{"r.h5", "r.xmf"});
 }
 
 TEST_CASE("a full disk gives one line naming the file, no partial output, the earlier result intact",
