@@ -18,10 +18,15 @@ std::optional<size_t> free_bytes_for(const std::string& path);
 /// Throws std::runtime_error (one line: the estimate and the free space) if `needed` exceeds `free_bytes`.
 void check_disk_space(const std::string& path, size_t needed, size_t free_bytes);
 
-/// The free-space check for a run's output: the estimate for the case's resolved grid against
-/// free_bytes_for(path). The environment variable MAGNUS_TEST_FREE_BYTES, when set, replaces the measured
-/// free space (the tests use it to check the refusal deterministically; it can only make the check stricter
-/// or looser, never skip it).
+/// Bytes of a run's files at their largest. Potential flow: the result, estimated_output_bytes on the
+/// case's grid. Navier-stokes, on the grid as built (n_r of square cells when grid.n_r is 0), each dataset
+/// in whole HDF5 chunks: the result (its fields, output.snapshots × (ψ, ζ), the force history of at most
+/// time.end/Δt₀ samples, Δt₀ the start's time step, the smallest of the run) plus the checkpoint beside
+/// it (ψ, ζ and the advection term, the snapshots, the history), both of which exist when the result is
+/// written.
+size_t estimated_run_bytes(const Case& c);
+
+/// The free-space check for a run's output: estimated_run_bytes against free_bytes_for(path).
 void check_output_space(const Case& c, const std::string& path);
 
 }  // namespace magnus
