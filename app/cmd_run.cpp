@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 
 #include "app/commands.hpp"
 #include "app/run_viscous.hpp"
@@ -13,6 +14,7 @@
 #include "io/hdf5_io.hpp"
 #include "io/inspect.hpp"
 #include "io/json_output.hpp"
+#include "io/output_lock.hpp"
 #include "io/output_size.hpp"
 #include "io/report.hpp"
 #include "io/result_reader.hpp"
@@ -59,16 +61,28 @@ void command_run(const std::string& case_path, const std::string& output,
   check_distinct_paths({case_path}, {c.output.file, xdmf_path(c.output.file)});
   check_file_writable(c.output.file, "the HDF5 result");
   check_writable(xdmf_path(c.output.file));
+  // For the length of the run: a second run to the same output (or checkpoint) is refused, naming this one.
+  const OutputLock lock(c.output.file);
+  std::optional<OutputLock> checkpoint_lock;
   if (c.model == FlowModel::navier_stokes) {
     if (max_bytes > 0)
       throw std::runtime_error(
-          "--max-memory: only checked for potential flow (a navier-stokes run at the default grid needs about "
+          "--max-memory: only checked for potential flow (a navier-stokes run at the default grid needs "
+          "about "
           "35 MB; its Newton and stability solves are measured in the README)");
-    check_writable(checkpoint_path(c.output.file));
+    const std::string ckpt = checkpoint_path(c.output.file);
+    check_writable(ckpt);
+    checkpoint_lock.emplace(ckpt);  // another output may have the same checkpoint (r.h5, r.hdf)
+    if (!resume) {                  // a run from rest overwrites only a checkpoint of its own scene
+      const std::string foreign = foreign_checkpoint(ckpt, c);
+      if (!foreign.empty()) throw std::runtime_error(foreign);
+    }
     check_output_space(c, c.output.file);
-    const FlowResult r = run_viscous_case(c, resume, quiet || json, threads);
+    int stopped_by = 0;
+    const FlowResult r = run_viscous_case(c, case_path, resume, quiet || json, threads, &stopped_by);
     // The JSON shows what the summary shows: the result in memory, as the file holds it.
     if (json) std::fputs(json_text(result_json(r, c.output.file)).c_str(), stdout);
+    if (stopped_by) throw Interrupted{stopped_by};
     return;
   }
   if (resume) throw std::runtime_error("--resume: only a navier-stokes case has checkpoints to resume from");
@@ -121,8 +135,9 @@ void add_run_command(CLI::App& app) {
                 "print one JSON object instead of the summary: every figure with its units ({\"value\": V, "
                 "\"units\": U}, null where undefined); see docs/scripting.md")
       ->excludes(quiet);
-  run->add_flag("--resume", o->resume,
-                "navier-stokes: go on from the case's checkpoint (OUTPUT.checkpoint.h5) instead of from rest");
+  run->add_flag(
+      "--resume", o->resume,
+      "navier-stokes: go on from the case's checkpoint (OUTPUT.checkpoint.h5) instead of from rest");
   run->add_option(
       "--tolerance", o->tolerance,
       "target relative C_L error, 1e-14 to 0.1: choose the smallest grid and stencil (supersedes the "

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "app/run_viscous.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -31,6 +32,9 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
+  } catch (const magnus::Interrupted& e) {
+    std::fflush(stdout);
+    return 128 + e.signal;  // a run cut short by a signal: its partial result and checkpoint are written
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "magnus: %s (see magnus --help)\n", e.what());
     return 2;

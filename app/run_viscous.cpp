@@ -6,7 +6,6 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
-#include <cstdlib>
 #include <memory>
 #include <optional>
 
@@ -18,11 +17,11 @@ namespace magnus {
 
 namespace {
 
-volatile std::sig_atomic_t g_interrupted = 0;
+volatile std::sig_atomic_t g_stop_signal = 0;  // the signal that asked the march to stop (0: none)
 
-extern "C" void on_sigint(int) {
-  g_interrupted = 1;
-  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the program at once
+extern "C" void on_stop_signal(int sig) {
+  g_stop_signal = sig;
+  std::signal(sig, SIG_DFL);  // a second one ends the program at once
 }
 
 /// Before the march: Ctrl-C ends the program at once, as by default (also where the shell started it with
@@ -32,14 +31,20 @@ extern "C" void on_sigint_now(int) {
   std::raise(SIGINT);
 }
 
-/// Ctrl-C stops the run at the next step (a partial result is written) while this lives.
+/// SIGINT (Ctrl-C) and SIGTERM (schedulers, kill) stop the march at the next step while this lives: a
+/// partial result and a checkpoint are then written.
 struct InterruptGuard {
   InterruptGuard() {
-    g_interrupted = 0;
-    previous = std::signal(SIGINT, on_sigint);
+    g_stop_signal = 0;
+    previous_int = std::signal(SIGINT, on_stop_signal);
+    previous_term = std::signal(SIGTERM, on_stop_signal);
   }
-  ~InterruptGuard() { std::signal(SIGINT, previous); }
-  void (*previous)(int) = SIG_DFL;
+  ~InterruptGuard() {
+    std::signal(SIGINT, previous_int);
+    std::signal(SIGTERM, previous_term);
+  }
+  void (*previous_int)(int) = SIG_DFL;
+  void (*previous_term)(int) = SIG_DFL;
 };
 
 std::string clock_text(double seconds) {
@@ -48,60 +53,116 @@ std::string clock_text(double seconds) {
                    : fmt::format("{}:{:02d}", s / 60, s % 60);
 }
 
+/// The progress line of the march on stderr: t, the forces, steps/s and the time left.
+struct Progress {
+  const Case& c;
+  double unit, t0;
+  std::chrono::steady_clock::time_point clock0 = std::chrono::steady_clock::now(), last = clock0;
+  long steps = 0;
+  bool printed = false;
+
+  void step(const NsState& s, const ViscousForces& f) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last <= std::chrono::milliseconds(250)) return;
+    last = now;
+    const double el = std::chrono::duration<double>(now - clock0).count();
+    const double rate = el > 0.0 ? (s.t - t0) / el : 0.0;  // simulated s per wall s
+    const std::string coeffs = f.C_L ? fmt::format("C_L = {:+.4f}  C_D = {:.4f}", *f.C_L, *f.C_D)
+                                     : fmt::format("M = {:+.4g} N·m/m", f.M);
+    std::fprintf(stderr, "\r\033[K  t = %.1f %s of %.0f  %s  %.0f steps/s  ETA ≤ %s   ", s.t / unit,
+                 time_unit_name(c.scene), c.time.end, coeffs.c_str(), double(steps) / std::max(el, 1e-9),
+                 rate > 0.0 ? clock_text((c.time.end * unit - s.t) / rate).c_str() : "?");
+    std::fflush(stderr);
+    printed = true;
+  }
+};
+
+/// An argument as the shell reads it back (quoted when it holds anything but plain characters).
+std::string shell_word(const std::string& w) {
+  if (!w.empty() &&
+      w.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.,/=+:@%") ==
+          std::string::npos)
+    return w;
+  std::string q = "'";
+  for (char ch : w) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return q + "'";
+}
+
 }  // namespace
 
-FlowResult run_viscous_case(const Case& c, bool resume, bool quiet, int threads) {
+std::string resume_command(const std::string& case_path, const std::string& output) {
+  return fmt::format("magnus run {} -o {} --resume", shell_word(case_path), shell_word(output));
+}
+
+namespace {
+
+/// The summary on stdout (unless quiet; a partial result's names its checkpoint and the command that goes
+/// on), and for a run stopped by signal `sig` (else 0) one line on stderr saying so.
+void report_run(const FlowResult& r, const Case& c, const std::string& case_path, bool quiet, int sig) {
+  const std::string& out = c.output.file;
+  if (!quiet) {
+    std::string text = summary_text(r, out);
+    if (r.viscous->partial)
+      text += fmt::format("{:<15}{} — go on with: {}\n", "checkpoint", checkpoint_path(out),
+                          resume_command(case_path, out));
+    std::fputs(text.c_str(), stdout);
+  }
+  if (sig)
+    std::fprintf(stderr, "magnus: interrupted by %s at t = %.4g %s: a partial result; go on with: %s\n",
+                 sig == SIGTERM ? "SIGTERM" : "SIGINT", r.viscous->t / r.viscous->time_unit,
+                 time_unit_name(c.scene), resume_command(case_path, out).c_str());
+}
+
+}  // namespace
+
+FlowResult run_viscous_case(const Case& c, const std::string& case_path, bool resume, bool quiet, int threads,
+                            int* stopped_by) {
   const std::string ckpt = checkpoint_path(c.output.file);
   std::unique_ptr<Checkpoint> start;
   if (resume) start = std::make_unique<Checkpoint>(read_checkpoint(ckpt, c));
 
   const double unit = 2.0 * c.scene.radius / c.scene.reference_speed();
-  const double t_end = c.time.end * unit;
-  const bool progress = !quiet && isatty(STDERR_FILENO);
-  const auto clock0 = std::chrono::steady_clock::now();
-  auto last_print = clock0;
-  const double t0 = start ? start->state.t : 0.0;
-  long steps = 0;
-  bool printed = false;
-  // For the tests of --resume: kill the process outright (no clean-up) once t reaches this, in D/U.
-  const char* kill_at = std::getenv("MAGNUS_TEST_KILL_AT");
-  const double t_kill = kill_at ? std::atof(kill_at) * unit : -1.0;
+  Progress progress{c, unit, start ? start->state.t : 0.0};
+  const bool show = !quiet && isatty(STDERR_FILENO);
 
-  // Ctrl-C stops the march at the next step with a partial result; before the march (the Newton solve and
-  // stability test of time.mode "steady" or "auto") nothing is computed yet that a result could keep, so
-  // there Ctrl-C ends the program at once: the handler is installed with the first step.
+  // SIGINT and SIGTERM stop the march at the next step with a partial result; before the march (the Newton
+  // solve and stability test of time.mode "steady" or "auto") nothing is computed yet that a result could
+  // keep, so there they end the program at once: the handlers are installed with the first step.
   std::optional<InterruptGuard> guard;
   ViscousHooks hooks;
   hooks.on_step = [&](const NsState& s, const ViscousForces& f) {
     if (!guard) guard.emplace();
-    ++steps;
-    if (t_kill >= 0.0 && s.t >= t_kill) std::raise(SIGKILL);
-    if (progress) {
-      const auto now = std::chrono::steady_clock::now();
-      if (now - last_print > std::chrono::milliseconds(250)) {
-        last_print = now;
-        const double el = std::chrono::duration<double>(now - clock0).count();
-        const double rate = el > 0.0 ? (s.t - t0) / el : 0.0;  // simulated s per wall s
-        const std::string coeffs = f.C_L ? fmt::format("C_L = {:+.4f}  C_D = {:.4f}", *f.C_L, *f.C_D)
-                                         : fmt::format("M = {:+.4g} N·m/m", f.M);
-        std::fprintf(stderr, "\r\033[K  t = %.1f %s of %.0f  %s  %.0f steps/s  ETA ≤ %s   ", s.t / unit,
-                     time_unit_name(c.scene), c.time.end, coeffs.c_str(), double(steps) / std::max(el, 1e-9),
-                     rate > 0.0 ? clock_text((t_end - s.t) / rate).c_str() : "?");
-        std::fflush(stderr);
-        printed = true;
-      }
-    }
-    return g_interrupted == 0;
+    ++progress.steps;
+    if (show) progress.step(s, f);
+    return g_stop_signal == 0;
   };
-  hooks.on_checkpoint = [&](const Checkpoint& cp) { write_checkpoint(ckpt, c, cp); };
+  // The checkpoint this run may remove once its result is complete: the one it resumed from or wrote, never
+  // another run's. One that cannot be written (a full disk) is a warning: the run goes on, the last good
+  // checkpoint stays.
+  bool own_checkpoint = resume;
+  std::string last_failure;  // warned once for each new reason
+  hooks.on_checkpoint = [&](const Checkpoint& cp) {
+    try {
+      write_checkpoint(ckpt, c, cp);
+      own_checkpoint = true;
+      last_failure.clear();
+    } catch (const std::exception& e) {
+      if (e.what() == last_failure) return;
+      last_failure = e.what();
+      std::fprintf(stderr, "%smagnus: warning: no checkpoint at t = %.4g %s (%s); the run goes on%s\n",
+                   progress.printed ? "\n" : "", cp.state.t / unit, time_unit_name(c.scene), e.what(),
+                   own_checkpoint ? ", the previous checkpoint stays" : "");
+    }
+  };
 
-  if (progress && !start && c.time.mode != TimeMode::unsteady) {
-    std::fputs(c.time.mode == TimeMode::steady
-                   ? "  solving the steady equations by Newton's method (Ctrl-C stops) …"
-                   : "  auto: looking for a stable steady state (Newton's method, eigenvalues; Ctrl-C stops) …",
-               stderr);
+  if (show && !start && c.time.mode != TimeMode::unsteady) {
+    std::fputs(
+        c.time.mode == TimeMode::steady
+            ? "  solving the steady equations by Newton's method (Ctrl-C stops) …"
+            : "  auto: looking for a stable steady state (Newton's method, eigenvalues; Ctrl-C stops) …",
+        stderr);
     std::fflush(stderr);
-    printed = true;
+    progress.printed = true;
   }
   FlowResult r;
   void (*before_march)(int) = std::signal(SIGINT, on_sigint_now);
@@ -110,17 +171,19 @@ FlowResult run_viscous_case(const Case& c, bool resume, bool quiet, int threads)
   } catch (...) {
     guard.reset();
     std::signal(SIGINT, before_march);
-    if (printed) std::fputs("\n", stderr);
+    if (progress.printed) std::fputs("\n", stderr);
     throw;
   }
   guard.reset();
   std::signal(SIGINT, before_march);
-  if (printed) std::fputs("\n", stderr);
+  if (progress.printed) std::fputs("\n", stderr);
   write_result(r, c.output.file, c.output.compression);
   // Complete: the checkpoint has served. Interrupted: run_viscous checkpointed the last state, so
   // --resume goes on from there.
-  if (!r.viscous->partial) std::remove(ckpt.c_str());
-  if (!quiet) std::fputs(summary_text(r, c.output.file).c_str(), stdout);
+  if (!r.viscous->partial && own_checkpoint) std::remove(ckpt.c_str());
+  const int sig = r.viscous->partial ? int(g_stop_signal) : 0;
+  if (stopped_by) *stopped_by = sig;
+  report_run(r, c, case_path, quiet, sig);
   return r;
 }
 

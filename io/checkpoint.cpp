@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
@@ -74,8 +75,7 @@ std::string identity_mismatch(const std::string& path, const std::string& stored
   for (const IdentityEntry& t : there)
     if (!find(here, t.key)) add(t.key, t.value, "undefined");
   if (diff.empty()) return "";
-  return fmt::format("checkpoint '{}' is from another scene: {}; remove it or run without --resume", path,
-                     diff);
+  return fmt::format("checkpoint '{}' is from another scene: {}", path, diff);
 }
 
 }  // namespace
@@ -125,6 +125,7 @@ void write_checkpoint(const std::string& path, const Case& c, const Checkpoint& 
     w.attr_with_units(st, "Gamma_R", s.Gamma_R, "m^2/s");
     w.attr_with_units(st, "Gamma_flux_prev", s.Gamma_flux_prev, "m^2/s^2");
     w.attr_with_units(st, "dt_prev", s.dt_prev, "s");
+    w.attr(st, "steps", cp.steps);
     w.dataset(st, "psi", {s.psi.size()}, s.psi.data(), "m^2/s", "stream function ψ");
     w.dataset(st, "zeta", {s.zeta.size()}, s.zeta.data(), "1/s", "vorticity ζ");
     w.dataset(st, "N_prev", {s.N_prev.size()}, s.N_prev.data(), "m^2/s^2", "advection of the previous step");
@@ -155,7 +156,10 @@ Checkpoint read_checkpoint(const std::string& path, const Case& c) {
     throw std::runtime_error(fmt::format("--resume: {}", e.what()));
   }
   const std::string mismatch = identity_mismatch(path, f->attr_string("/", "key"), c);
-  if (!mismatch.empty()) throw std::runtime_error(mismatch);
+  if (!mismatch.empty()) {
+    const bool old_magnus = mismatch.find("does not record") != std::string::npos;
+    throw std::runtime_error(old_magnus ? mismatch : mismatch + "; remove it or run without --resume");
+  }
   // Every value is checked as it is read: a non-finite one is refused naming where it is.
   auto non_finite = [&path](const std::string& name) {
     return std::runtime_error(fmt::format("checkpoint '{}': {} holds a non-finite value", path, name));
@@ -177,6 +181,7 @@ Checkpoint read_checkpoint(const std::string& path, const Case& c) {
   s.Gamma_R = number("Gamma_R");
   s.Gamma_flux_prev = number("Gamma_flux_prev");
   s.dt_prev = number("dt_prev");
+  cp.steps = f->has_attr("/state", "steps") ? std::max(0L, f->attr_int("/state", "steps")) : 0L;
   s.psi = array("/state/psi");
   s.zeta = array("/state/zeta");
   s.N_prev = array("/state/N_prev");
@@ -201,6 +206,21 @@ Checkpoint read_checkpoint(const std::string& path, const Case& c) {
                             {psi.begin() + long(k * n), psi.begin() + long((k + 1) * n)},
                             {zeta.begin() + long(k * n), zeta.begin() + long((k + 1) * n)}});
   return cp;
+}
+
+std::string foreign_checkpoint(const std::string& path, const Case& c) {
+  std::string stored;
+  try {
+    const ResultFile f(path, std::vector<std::string>{kFormat});
+    stored = f.attr_string("/", "key");
+  } catch (const std::exception&) {
+    return "";  // none, or not a checkpoint that can say whose it is
+  }
+  const std::string mismatch = identity_mismatch(path, stored, c);
+  if (mismatch.empty()) return "";
+  return mismatch +
+         "; a run from rest would overwrite it: resume that scene (--resume), remove it, or give "
+         "another -o";
 }
 
 }  // namespace magnus

@@ -29,6 +29,11 @@ std::string checkpoint_key(const Case& c);
 /// Write cp for case c to path atomically (temporary name, then rename).
 void write_checkpoint(const std::string& path, const Case& c, const Checkpoint& cp);
 
+/// For a run from rest of case c: "" when the checkpoint at path may be overwritten (there is none, it is
+/// unreadable, or it is c's scene); else one line saying whose it is (each parameter that differs) and
+/// that the run would overwrite it.
+std::string foreign_checkpoint(const std::string& path, const Case& c);
+
 /// Read the checkpoint at path for case c. Throws std::runtime_error in one line when it is missing,
 /// damaged, holds a non-finite value (naming the dataset or attribute), or belongs to another scene or grid
 /// (naming each parameter that differs, with its value there and here).

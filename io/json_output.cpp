@@ -145,8 +145,8 @@ Json potential_derived(const FlowResult& r, Json& j) {
       q["reynolds"] = quantity(n->reynolds, "1");
       q["alpha"] = quantity(n->alpha, "1");
       q["cl"] = quantity(n->cl, "1");
-      q["cl_over_ideal"] =
-          quantity(n->alpha != 0.0 ? std::optional<double>(n->cl / (-2.0 * M_PI * n->alpha)) : std::nullopt, "1");
+      q["cl_over_ideal"] = quantity(
+          n->alpha != 0.0 ? std::optional<double>(n->cl / (-2.0 * M_PI * n->alpha)) : std::nullopt, "1");
       q["label"] = n->label;
       q["source"] = n->source;
     }
@@ -173,7 +173,8 @@ Json viscous_derived(const FlowResult& r) {
   d["t_convective"] = quantity(unit ? std::optional<double>(v.t / v.time_unit) : std::nullopt, "1");
   d["dt_convective"] = quantity(unit ? std::optional<double>(v.dt / v.time_unit) : std::nullopt, "1");
   d["steps_per_second"] = quantity(
-      r.timing.solve_s > 0.0 ? std::optional<double>(double(v.steps) / r.timing.solve_s) : std::nullopt,
+      r.timing.solve_s > 0.0 ? std::optional<double>(double(v.steps - v.steps_resumed) / r.timing.solve_s)
+                             : std::nullopt,
       "1/s");
   d["three_dimensional"] = v.reynolds && above_laminar_range(*v.reynolds);
   d["viscous_length_beyond_grid"] = v.reynolds && viscous_length_beyond_grid(g, *v.reynolds);

@@ -74,15 +74,17 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
                          cells < kWallCellsResolved ? num(cells, "{:.2g}") : num(cells, "{:.1f}"), grade));
   }
   const double unit = v.time_unit;
-  const double steps_per_s = r.timing.solve_s > 0.0 ? double(v.steps) / r.timing.solve_s : 0.0;
+  const long steps_here = v.steps - v.steps_resumed;  // this run's
+  const double steps_per_s = r.timing.solve_s > 0.0 ? double(steps_here) / r.timing.solve_s : 0.0;
   if (v.newton)
     line("run", fmt::format("steady state by Newton's method, {} ({:.0f} ms)", wall(r.timing.total_s),
                             1e3 * r.timing.total_s));
   else
-    line("run",
-         fmt::format("t = {} s = {} {}, {} steps of Δt = {} s ({} {}), {} ({:.0f} steps/s)", num(v.t),
-                     num(v.t / unit, "{:.5g}"), time_unit_name(sc), v.steps, num(v.dt, "{:.4g}"),
-                     num(v.dt / unit, "{:.4g}"), time_unit_name(sc), wall(r.timing.total_s), steps_per_s));
+    line("run", fmt::format("t = {} s = {} {}, {} steps{} of Δt = {} s ({} {}), {} ({:.0f} steps/s)",
+                            num(v.t), num(v.t / unit, "{:.5g}"), time_unit_name(sc), v.steps,
+                            v.steps_resumed > 0 ? fmt::format(" ({} before --resume)", v.steps_resumed) : "",
+                            num(v.dt, "{:.4g}"), num(v.dt / unit, "{:.4g}"), time_unit_name(sc),
+                            wall(r.timing.total_s), steps_per_s));
   line("", fmt::format("stopped: {}{}", v.status, v.partial ? " — a PARTIAL result (the file says so)" : ""));
   if (!v.converged && !v.partial)
     line("", "not converged: the means below are the last period's (or the last step's); raise time.end");

@@ -72,7 +72,7 @@ std::vector<AttrSpec> viscous_attributes() {
       vnum(T, "dt", "s", "last time step", &ViscousPart::dt),
       only(Models::viscous,
            integer(
-               T, "steps", "time steps taken",
+               T, "steps", "time steps from rest (a resumed run: with those before --resume)",
                [](const FlowResult& r) { return r.viscous ? opt(double(r.viscous->steps)) : std::nullopt; },
                [](FlowResult& r, double v) { vis(r).steps = long(v); })),
   };

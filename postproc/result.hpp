@@ -42,7 +42,8 @@ struct ViscousPart {
   bool partial = false;                  ///< interrupted (Ctrl-C) or stopped on an error before the end
   double t = 0.0;                        ///< the time reached, s
   double dt = 0.0;                       ///< the last time step, s
-  long steps = 0;
+  long steps = 0;                        ///< time steps from rest, over every run it resumed
+  long steps_resumed = 0;                ///< of steps, those the checkpoint it resumed from had taken
   double Gamma_R = 0.0;                  ///< circulation on the outer ring r = R, m²/s
   ViscousForces last;                    ///< forces at the last step (pressure and friction parts)
   std::optional<double> cl_mean, cd_mean, cm_mean, cl_amplitude, cd_amplitude;

@@ -171,6 +171,7 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
     UnsteadyResult rc = run_unsteady(pc, oc, std::move(sc));
     res.coarse_steps = rc.steps;
     res.steps += rc.steps;
+    if (o.steps_taken) *o.steps_taken = res.steps;
     res.times += rc.times;
     if (rc.ok && rc.state.t < o.t_end) {
       NsState s;
@@ -240,6 +241,7 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
       advance(*op, cur, nxt, &res.times);
       std::swap(cur, nxt);
       ++res.steps;
+      if (o.steps_taken) *o.steps_taken = res.steps;
       go_on = sample(cur);
       if (cur.t < t_min || res.steps % 50 != 0) continue;
       // Steady: forces flat over the window (on ½ρU_ref²D; torque on ½ρU_ref²D²).
@@ -277,7 +279,7 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
     }
   } catch (const std::exception& e) {
     res.ok = false;
-    res.message = e.what();
+    res.message = res.error = e.what();
   }
   if (!go_on) {
     res.interrupted = true;

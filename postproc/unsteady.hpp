@@ -31,6 +31,8 @@ struct UnsteadyOptions {
   /// Called after every step (a progress line, a checkpoint, a snapshot); may be empty. Returning false
   /// stops the run there (Ctrl-C): the result is then marked interrupted.
   std::function<bool(const NsState&, const ViscousForces&)> on_step;
+  /// If set: kept equal to the steps taken so far (both grids), for on_step to read.
+  long* steps_taken = nullptr;
 };
 
 /// One sample of the force history.
@@ -55,6 +57,7 @@ struct UnsteadyResult {
   bool ok = true;                                         ///< false: stopped on an error (see message)
   bool interrupted = false;                               ///< on_step asked to stop (a partial result)
   std::string message;                                    ///< why it stopped; a clamped Δt; an error
+  std::string error;                                      ///< the error alone when !ok (else "")
   double period = 0.0;                                    ///< shedding period (C_L maxima), s
   double St = 0.0;                                        ///< Strouhal number D/(U·period)
   double C_L_mean = 0.0, C_D_mean = 0.0, C_M_mean = 0.0;  ///< over the last period (or last sample)

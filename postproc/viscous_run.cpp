@@ -339,6 +339,9 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
   double next_ckpt = start.t + ckpt_every;
   // The hooks' copy of the history (a checkpoint needs it; run_unsteady keeps its own for the analysis).
   std::vector<ForceSample> seen = history;
+  const long steps_before = resume ? resume->steps : 0;
+  long steps = 0;
+  o.steps_taken = &steps;
   o.on_step = [&](const NsState& s, const ViscousForces& f) {
     if (seen.empty() || s.t > seen.back().t) seen.push_back(force_sample(s.t, f));
     if (c.output.snapshots > 0 && s.t >= next_snap - 1e-9 * snap_every) {
@@ -347,17 +350,20 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
       next_snap = s.t + snap_every;
     }
     if (hooks.on_checkpoint && ckpt_every > 0.0 && s.t >= next_ckpt) {
-      hooks.on_checkpoint({s, seen, {snaps.begin(), snaps.end()}});
+      hooks.on_checkpoint({s, seen, {snaps.begin(), snaps.end()}, steps_before + steps});
       next_ckpt = s.t + ckpt_every;
     }
     return !hooks.on_step || hooks.on_step(s, f);
   };
   UnsteadyResult run = run_unsteady(p, o, std::move(start), std::move(history));
+  // An error is the error alone: why the run marched belongs to the status of a result, not to a failure.
+  if (!run.ok) throw std::runtime_error(run.error);  // the last checkpoint stays as it was
   run.message = choice.why + run.message;
-  if (!run.ok) throw std::runtime_error(run.message);  // the last checkpoint stays as it was
   if (run.interrupted && hooks.on_checkpoint)
-    hooks.on_checkpoint({run.state, run.history, {snaps.begin(), snaps.end()}});
+    hooks.on_checkpoint({run.state, run.history, {snaps.begin(), snaps.end()}, steps_before + run.steps});
   FlowResult r = viscous_result(c, p, run, {snaps.begin(), snaps.end()});
+  r.viscous->steps += steps_before;  // the total from rest; the summary's rate counts this run's alone
+  r.viscous->steps_resumed = steps_before;
   if (choice.eigenvalue) {
     r.viscous->eigenvalue_real = choice.eigenvalue->real();
     r.viscous->eigenvalue_imag = choice.eigenvalue->imag();

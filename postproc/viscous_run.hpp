@@ -21,6 +21,7 @@ struct Checkpoint {
   NsState state;
   std::vector<ForceSample> history;
   std::vector<Snapshot> snapshots;
+  long steps = 0;  ///< time steps from rest to state, over every run before (0 if the file does not say)
 };
 
 /// What a viscous run tells its caller while it runs (each may be empty).

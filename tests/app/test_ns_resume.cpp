@@ -1,6 +1,7 @@
 // magnus run --resume on navier-stokes cases, from checkpoints that real runs left behind (killed outright
-// by MAGNUS_TEST_KILL_AT): a time.end before the checkpoint, output.snapshots, a changed scene, and a state
-// that turns non-finite. Each refusal is one line, writes no result and keeps the checkpoint as it was.
+// with SIGKILL by the test once they had checkpointed): a time.end before the checkpoint, output.snapshots,
+// a changed scene, and a state that turns non-finite. Each refusal is one line, writes no result and keeps
+// the checkpoint as it was. A run from rest never overwrites nor removes another scene's checkpoint.
 // Coarse grids: each run takes well under a second.
 #include <fmt/core.h>
 #include <catch2/catch.hpp>
@@ -12,6 +13,8 @@
 #include "io/case_file.hpp"
 #include "io/checkpoint.hpp"
 #include "io/result_reader.hpp"
+#include "postproc/viscous_run.hpp"
+#include "run_child.hpp"
 #include "support.hpp"
 
 using namespace magnus;
@@ -31,14 +34,18 @@ std::string resume_case(const std::string& dir, double t_end, const std::string&
   return path;
 }
 
-/// Run the case to dir/r.h5 and kill it outright at t_kill D/U: its last checkpoint, read back.
-Checkpoint killed_at(const std::string& dir, const std::string& c, double t_kill) {
-  const std::string cmd = fmt::format("MAGNUS_TEST_KILL_AT={} '{}' run '{}' -o '{}/r.h5' >/dev/null 2>&1",
-                                      t_kill, MAGNUS_EXE, c, dir);
-  const int raw = std::system(cmd.c_str());
-  REQUIRE((WIFSIGNALED(raw) || (WIFEXITED(raw) && WEXITSTATUS(raw) == 128 + SIGKILL)));  // the shell's 137
+/// Run the case to dir/r.h5 and kill it outright (SIGKILL from here) once it has checkpointed a time
+/// t ≥ t_min D/U: its last checkpoint, read back.
+Checkpoint killed_after(const std::string& dir, const std::string& c, double t_min) {
+  const test::Running run = test::start_magnus({"run", c, "-o", dir + "/r.h5"}, dir);
+  test::signal_after_checkpoint(run, checkpoint_path(dir + "/r.h5"), t_min, SIGKILL);
+  const test::Ended e = test::wait_magnus(run);
+  REQUIRE_FALSE(e.exited);
+  REQUIRE(e.status == SIGKILL);
   REQUIRE_FALSE(fs::exists(dir + "/r.h5"));
-  return read_checkpoint(checkpoint_path(dir + "/r.h5"), load_case(c, {}));
+  const Checkpoint cp = read_checkpoint(checkpoint_path(dir + "/r.h5"), load_case(c, {}));
+  REQUIRE(cp.state.t >= t_min);
+  return cp;
 }
 
 /// magnus run CASE -o dir/r.h5 --resume with the --set overrides.
@@ -67,9 +74,7 @@ TEST_CASE("navier-stokes --resume: a time.end before the checkpoint's time is re
           "[app][ns][resume]") {
   const std::string dir = test::temp_dir("ns-resume-end");
   const std::string c = resume_case(dir, 12);
-  const Checkpoint cp = killed_at(dir, c, 5);
-  REQUIRE(cp.state.t > 4.0);
-  REQUIRE(cp.state.t < 5.0);
+  const Checkpoint cp = killed_after(dir, c, 4);
   const std::string ckpt = checkpoint_path(dir + "/r.h5"), bytes = test::slurp(ckpt);
   require_refused(resume(dir, c, {"time.end=2"}),
                   fmt::format("time.end = 2 D/U is before the checkpoint's time t = {:.6g} D/U", cp.state.t),
@@ -80,27 +85,30 @@ TEST_CASE("navier-stokes --resume: time.end at the checkpoint's time takes no st
           "[app][ns][resume]") {
   const std::string dir = test::temp_dir("ns-resume-same-end");
   const std::string c = resume_case(dir, 12);
-  const Checkpoint cp = killed_at(dir, c, 5);
+  const Checkpoint cp = killed_after(dir, c, 4);
+  REQUIRE(cp.steps > 100);  // from rest: Δt ≈ 0.03 D/U
   const std::string ckpt = checkpoint_path(dir + "/r.h5");
   // The run line is the marched run's (t, 0 steps), not the one of a steady state by Newton's method.
   const auto o = resume(dir, c, {fmt::format("time.end={}", cp.state.t)});
   INFO(o.err);
   REQUIRE(o.status == 0);
   CHECK(o.out.find("Newton") == std::string::npos);
-  CHECK(o.out.find(" 0 steps of Δt") != std::string::npos);
+  // The steps count from rest: those before the checkpoint, none of them this run's.
+  CHECK(o.out.find(fmt::format(" {} steps ({} before --resume) of Δt", cp.steps, cp.steps)) !=
+        std::string::npos);
   CHECK(o.out.find("stopped: reached t_end") != std::string::npos);
   const FlowResult r = read_result(dir + "/r.h5");
   CHECK(r.viscous->t == cp.state.t);
-  CHECK(r.viscous->steps == 0);
+  CHECK(r.viscous->steps == cp.steps);
   CHECK_FALSE(fs::exists(ckpt));
 }
 
 TEST_CASE("navier-stokes --resume: a checkpoint of another scene is refused naming what differs, and kept",
           "[app][ns][resume]") {
   const std::string dir = test::temp_dir("ns-resume-scene");
-  const std::string c = resume_case(dir, 6);
-  const Checkpoint cp = killed_at(dir, c, 3);
-  REQUIRE(cp.state.t > 2.0);
+  const std::string c = resume_case(dir, 12);
+  const Checkpoint cp = killed_after(dir, c, 2);
+  REQUIRE(cp.state.t < 12.0);
   const std::string ckpt = checkpoint_path(dir + "/r.h5"), bytes = test::slurp(ckpt);
   const std::string where = "checkpoint '" + ckpt + "' is from another scene: ";
   require_refused(
@@ -117,7 +125,7 @@ TEST_CASE("navier-stokes --resume: a checkpoint of another scene is refused nami
   const auto o = resume(dir, c, {});
   INFO(o.err);
   REQUIRE(o.status == 0);
-  CHECK(read_result(dir + "/r.h5").viscous->t == Approx(6.0));
+  CHECK(read_result(dir + "/r.h5").viscous->t == Approx(12.0));
   CHECK_FALSE(fs::exists(ckpt));
 }
 
@@ -125,7 +133,7 @@ TEST_CASE("navier-stokes --resume: output.snapshots trims the checkpoint's snaps
           "[app][ns][resume]") {
   const std::string dir = test::temp_dir("ns-resume-snap");
   const std::string c = resume_case(dir, 12, "[output]\nsnapshots = 20\nsnapshot_interval = 0.05\n");
-  const Checkpoint cp = killed_at(dir, c, 3);
+  const Checkpoint cp = killed_after(dir, c, 2);
   REQUIRE(cp.snapshots.size() == 20);
   const std::string ckpt = checkpoint_path(dir + "/r.h5");
   fs::copy_file(ckpt, dir + "/saved.h5");
@@ -158,8 +166,9 @@ TEST_CASE("navier-stokes --resume: output.snapshots trims the checkpoint's snaps
 TEST_CASE("navier-stokes --resume: a state that turns non-finite stops in one line, the checkpoint kept",
           "[app][ns][resume]") {
   const std::string dir = test::temp_dir("ns-resume-blowup");
-  const std::string c = resume_case(dir, 6);
-  Checkpoint cp = killed_at(dir, c, 3);
+  const std::string c = resume_case(dir, 12);
+  Checkpoint cp = killed_after(dir, c, 2);
+  REQUIRE(cp.state.t < 12.0);
   // A huge but finite vorticity in the middle of the grid (away from the wall, where the forces are taken):
   // the checkpoint reads, and the first step's right-hand side overflows (1e300 would not: the step would
   // go through and the next one stop on its CFL number instead).
@@ -178,4 +187,47 @@ TEST_CASE("navier-stokes --resume: a state that turns non-finite stops in one li
   CHECK(t_fail > cp.state.t);
   CHECK(t_fail < cp.state.t + 0.1);
   for (const char* bad : {"nan", "inf"}) CHECK(o.err.find(bad) == std::string::npos);
+}
+
+TEST_CASE(
+    "navier-stokes run from rest: another scene's checkpoint is refused and kept, its own stays unless "
+    "it wrote it",
+    "[app][ns][resume]") {
+  const std::string dir = test::temp_dir("ns-resume-foreign");
+  const std::string c = resume_case(dir, 12);
+  const Checkpoint cp = killed_after(dir, c, 2);
+  REQUIRE(cp.state.t < 12.0);
+  const std::string ckpt = checkpoint_path(dir + "/r.h5"), bytes = test::slurp(ckpt);
+  // Another scene to the same output without --resume: refused before solving, naming whose it is.
+  require_refused(
+      test::magnus_cmd({"run", c, "-o", dir + "/r.h5", "--set", "flow.reynolds=80"}, dir),
+      "magnus: error: checkpoint '" + ckpt +
+          "' is from another scene: flow.viscosity 0.01 there, 0.0125 here; flow.reynolds 100 there, "
+          "80 here; a run from rest would overwrite it: resume that scene (--resume), remove it, or "
+          "give another -o\n",
+      dir, bytes);
+  // The same scene from rest, ending before it writes a checkpoint of its own: complete, and the checkpoint
+  // it did not write stays, byte for byte.
+  const auto fresh = test::magnus_cmd({"run", c, "-o", dir + "/r.h5", "--set", "time.end=1", "-q"}, dir);
+  INFO(fresh.err);
+  REQUIRE(fresh.status == 0);
+  REQUIRE(read_result(dir + "/r.h5").viscous->t == Approx(1.0));
+  REQUIRE(test::slurp(ckpt) == bytes);
+  // ...and still goes on from where the killed run stopped.
+  const auto o = resume(dir, c, {});
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  CHECK(read_result(dir + "/r.h5").viscous->t == Approx(12.0));
+  CHECK_FALSE(fs::exists(ckpt));
+}
+
+TEST_CASE("navier-stokes: a failure during the march is the error alone, not why the run marched",
+          "[app][ns][resume]") {
+  const std::string dir = test::temp_dir("ns-resume-error");
+  const Case c = load_case(resume_case(dir, 3), {});  // time.mode "auto" at Re 100: it marches at once
+  ViscousHooks hooks;
+  hooks.on_checkpoint = [](const Checkpoint&) {
+    throw std::runtime_error("cannot write 'r.checkpoint.h5': No space left on device");
+  };
+  CHECK_THROWS_WITH(run_viscous(c, hooks), "cannot write 'r.checkpoint.h5': No space left on device");
 }

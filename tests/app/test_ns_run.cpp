@@ -9,6 +9,7 @@
 #include "io/checkpoint.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/result_reader.hpp"
+#include "run_child.hpp"
 #include "support.hpp"
 
 using namespace magnus;
@@ -126,8 +127,8 @@ TEST_CASE("navier-stokes run: Ctrl-C writes a partial result and a checkpoint, -
       ns_case(100, 1, 100000, "mode = \"unsteady\"\nmean_tolerance = 1e-12\ncheckpoint_interval = 1.0\n"));
   const std::string ckpt = checkpoint_path(dir + "/r.h5");
   // SIGINT once the first checkpoint (t = 1 D/U) exists, so the run is stepping whatever the machine's load
-  // (a fixed delay raced the start-up on a busy machine); it stops at the next step. The status of the
-  // shell is the run's.
+  // (a fixed delay raced the start-up on a busy machine); it stops at the next step, writes its partial
+  // result and checkpoint and exits 130 (128 + SIGINT), as a shell reports Ctrl-C.
   const std::string cmd =
       "'" + std::string(MAGNUS_EXE) + "' run '" + c + "' -o '" + dir + "/r.h5' >'" + dir + "/out.txt' 2>'" +
       dir + "/err.txt' & pid=$!; i=0; while [ ! -e '" + ckpt +
@@ -135,12 +136,16 @@ TEST_CASE("navier-stokes run: Ctrl-C writes a partial result and a checkpoint, -
   const int raw = std::system(cmd.c_str());
   INFO(test::slurp(dir + "/err.txt"));
   REQUIRE(WIFEXITED(raw));
-  REQUIRE(WEXITSTATUS(raw) == 0);
+  REQUIRE(WEXITSTATUS(raw) == 130);
   const FlowResult part = read_result(dir + "/r.h5");
   REQUIRE(part.viscous->partial);
   REQUIRE(part.viscous->status.find("interrupted") != std::string::npos);
   REQUIRE(ResultFile(dir + "/r.h5").attr_int("/", "partial") == 1);
   REQUIRE(test::slurp(dir + "/out.txt").find("PARTIAL") != std::string::npos);
+  // The summary names the checkpoint and the command that goes on from it.
+  REQUIRE(test::slurp(dir + "/out.txt")
+              .find("checkpoint     " + ckpt + " — go on with: magnus run " + c + " -o " + dir +
+                    "/r.h5 --resume\n") != std::string::npos);
   REQUIRE(exists(ckpt));
   const double t_stop = part.viscous->t;
   REQUIRE(t_stop > 1.0);
@@ -166,19 +171,19 @@ TEST_CASE(
   const std::string c = write_case(dir, ns_case(100, 1, 12, "checkpoint_interval = 2.0\n"));
   const auto whole = test::magnus_cmd({"run", c, "-o", dir + "/whole.h5"}, dir);
   REQUIRE(whole.status == 0);
-  // SIGKILL at t = 7 D/U (MAGNUS_TEST_KILL_AT: the run kills itself there, no clean-up of any kind).
-  const std::string cmd = "MAGNUS_TEST_KILL_AT=7 '" + std::string(MAGNUS_EXE) + "' run '" + c + "' -o '" +
-                          dir + "/k.h5' >/dev/null 2>&1";
-  const int raw = std::system(cmd.c_str());
-  REQUIRE(WIFSIGNALED(raw) | (WIFEXITED(raw) && WEXITSTATUS(raw) != 0));
-  REQUIRE_FALSE(exists(dir + "/k.h5"));  // nothing half-written
+  // SIGKILL from here as soon as a checkpoint at t ≥ 4 D/U is there: no clean-up of any kind.
   const std::string ckpt = checkpoint_path(dir + "/k.h5");
+  const test::Running run = test::start_magnus({"run", c, "-o", dir + "/k.h5"}, dir);
+  test::signal_after_checkpoint(run, ckpt, 4.0, SIGKILL);
+  const test::Ended killed = test::wait_magnus(run);
+  REQUIRE_FALSE(killed.exited);
+  REQUIRE(killed.status == SIGKILL);
+  REQUIRE_FALSE(exists(dir + "/k.h5"));  // nothing half-written
   REQUIRE(exists(ckpt));
-  // At most one checkpoint interval (2 D/U) is lost.
   const FlowResult whole_r = read_result(dir + "/whole.h5");
   const Checkpoint cp = read_checkpoint(ckpt, load_case(c, {}));
-  REQUIRE(cp.state.t >= 7.0 - 2.0);
-  REQUIRE(cp.state.t < 7.0);
+  REQUIRE(cp.state.t >= 4.0);
+  REQUIRE(cp.state.t < 12.0);
   const auto o = test::magnus_cmd({"run", c, "-o", dir + "/k.h5", "--resume"}, dir);
   INFO(o.err);
   REQUIRE(o.status == 0);
