@@ -182,3 +182,37 @@ TEST_CASE("a navier-stokes run whose result and checkpoint need more than the fr
   CHECK_FALSE(fs::exists(dir + "/r.h5"));
   CHECK_FALSE(fs::exists(checkpoint_path(dir + "/r.h5")));
 }
+
+TEST_CASE("navier-stokes run: concurrent runs to one output leave a result and .xmf of the same run",
+          "[app][ns][signals]") {
+  const std::string dir = test::temp_dir("ns-signals-concurrent");
+  const std::string c = signal_case(dir, 3.2, "[output]\nsnapshot_interval = 0.1\n"), out = dir + "/r.h5";
+  for (int trial = 0; trial < 3; ++trial) {
+    // Four runs at once, each keeping another number of snapshots (4 … 7): each completes, or is refused
+    // in one line because another holds the output.
+    std::vector<test::Running> runs;
+    for (int k = 0; k < 4; ++k)
+      runs.push_back(
+          test::start_magnus({"run", c, "-o", out, "-q", "--set", fmt::format("output.snapshots={}", 4 + k)},
+                             dir, fmt::format("run{}", k)));
+    int done = 0;
+    for (const test::Running& r : runs) {
+      const test::Ended e = test::wait_magnus(r);
+      INFO(e.err);
+      REQUIRE(e.exited);
+      if (e.status == 0) {
+        ++done;
+        continue;
+      }
+      CHECK(e.status == 1);
+      CHECK(test::lines(e.err) == 1);
+      CHECK(e.err.find("another magnus run (PID ") != std::string::npos);
+    }
+    REQUIRE(done >= 1);
+    // The sidecar lists exactly the snapshots the file holds.
+    const std::string xmf = test::slurp(dir + "/r.xmf");
+    size_t times = 0;
+    for (size_t at = xmf.find("<Time "); at != std::string::npos; at = xmf.find("<Time ", at + 1)) ++times;
+    CHECK(times == read_result(out).viscous->snapshots.size());
+  }
+}
