@@ -26,9 +26,9 @@ std::optional<size_t> free_bytes_for(const std::string& path) {
   return size_t(s.f_bavail) * size_t(s.f_frsize);
 }
 
-void check_disk_space(const std::string& path, size_t needed, size_t free_bytes) {
+void check_disk_space(const std::string& path, size_t needed, size_t free_bytes, const char* what) {
   if (needed > free_bytes)
-    throw std::runtime_error(fmt::format("{}: the result needs about {}, but only {} is free there", path,
+    throw std::runtime_error(fmt::format("{}: {} about {}, but only {} is free there", path, what,
                                          format_bytes(needed), format_bytes(free_bytes)));
 }
 
@@ -80,7 +80,9 @@ size_t estimated_run_bytes(const Case& c) {
 
 void check_output_space(const Case& c, const std::string& path) {
   if (const std::optional<size_t> free_bytes = free_bytes_for(path))
-    check_disk_space(path, estimated_run_bytes(c), *free_bytes);
+    check_disk_space(
+        path, estimated_run_bytes(c), *free_bytes,
+        c.model == FlowModel::navier_stokes ? "the result and its checkpoint need" : "the result needs");
 }
 
 }  // namespace magnus

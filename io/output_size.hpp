@@ -15,8 +15,10 @@ size_t estimated_output_bytes(long n_r, long n_theta, int fields);
 /// unknown.
 std::optional<size_t> free_bytes_for(const std::string& path);
 
-/// Throws std::runtime_error (one line: the estimate and the free space) if `needed` exceeds `free_bytes`.
-void check_disk_space(const std::string& path, size_t needed, size_t free_bytes);
+/// Throws std::runtime_error (one line: the estimate and the free space) if `needed` exceeds `free_bytes`;
+/// `what` names what needs it ("the result needs", "the result and its checkpoint need").
+void check_disk_space(const std::string& path, size_t needed, size_t free_bytes,
+                      const char* what = "the result needs");
 
 /// Bytes of a run's files at their largest. Potential flow: the result, estimated_output_bytes on the
 /// case's grid. Navier-stokes, on the grid as built (n_r of square cells when grid.n_r is 0), each dataset

@@ -177,7 +177,9 @@ TEST_CASE("a navier-stokes run whose result and checkpoint need more than the fr
   }
   const auto o = test::magnus_cmd({"run", c, "-o", dir + "/r.h5", "--set", sets[0]}, dir);
   CHECK(o.status == 1);
-  CHECK(o.err.rfind("magnus: error: " + dir + "/r.h5: the result needs about " + format_bytes(need), 0) == 0);
+  CHECK(o.err.rfind(
+            "magnus: error: " + dir + "/r.h5: the result and its checkpoint need about " + format_bytes(need),
+            0) == 0);
   CHECK(test::lines(o.err) == 1);
   CHECK_FALSE(fs::exists(dir + "/r.h5"));
   CHECK_FALSE(fs::exists(checkpoint_path(dir + "/r.h5")));
