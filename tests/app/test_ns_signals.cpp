@@ -218,3 +218,39 @@ TEST_CASE("navier-stokes run: concurrent runs to one output leave a result and .
     CHECK(times == read_result(out).viscous->snapshots.size());
   }
 }
+
+TEST_CASE("navier-stokes run: SIGKILL while a checkpoint is written leaves the previous one byte for byte",
+          "[app][ns][signals]") {
+  const std::string dir = test::temp_dir("ns-signals-kill-ckpt");
+  // n_θ = 192 and 100 snapshots: a checkpoint of about 35 MB, long enough to be caught while written.
+  const std::string c = signal_case(dir, 100000, "[output]\nsnapshots = 100\nsnapshot_interval = 0.01\n");
+  const std::string out = dir + "/r.h5", ckpt = checkpoint_path(out);
+  int killed_mid_write = 0;
+  for (int trial = 0; trial < 3; ++trial) {
+    const test::Running run = test::start_magnus({"run", c, "-o", out, "--set", "grid.n_theta=192"}, dir);
+    test::signal_after_checkpoint(run, ckpt, 0.0, 0);
+    const std::string before = test::slurp(ckpt);
+    const double t_before = test::checkpoint_time(ckpt);
+    // The next checkpoint's temporary, once 1 MB of it is written.
+    const std::string tmp = dir + "/.r.checkpoint.h5.tmp-" + std::to_string(run.pid);
+    bool seen = false;
+    for (int k = 0; k < 120000 && !seen; ++k) {
+      std::error_code ec;
+      seen = fs::file_size(tmp, ec) >= (uintmax_t(1) << 20) && !ec;
+      if (!seen) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    REQUIRE(seen);
+    REQUIRE(::kill(run.pid, SIGKILL) == 0);
+    const test::Ended e = test::wait_magnus(run);
+    REQUIRE_FALSE(e.exited);
+    REQUIRE_FALSE(fs::exists(out));
+    if (test::slurp(ckpt) == before) {
+      ++killed_mid_write;
+    } else {
+      // It finished between the look and the kill: then the new checkpoint is complete, and later.
+      REQUIRE(test::checkpoint_time(ckpt) > t_before);
+    }
+    fs::remove(ckpt);  // the next trial from rest
+  }
+  CHECK(killed_mid_write >= 2);
+}
