@@ -67,8 +67,7 @@ void command_run(const std::string& case_path, const std::string& output,
   if (c.model == FlowModel::navier_stokes) {
     if (max_bytes > 0)
       throw std::runtime_error(
-          "--max-memory: only checked for potential flow (a navier-stokes run at the default grid needs "
-          "about "
+          "--max-memory: only checked for potential flow (a navier-stokes run at the default grid needs about "
           "35 MB; its Newton and stability solves are measured in the README)");
     const std::string ckpt = checkpoint_path(c.output.file);
     check_writable(ckpt);
@@ -135,9 +134,8 @@ void add_run_command(CLI::App& app) {
                 "print one JSON object instead of the summary: every figure with its units ({\"value\": V, "
                 "\"units\": U}, null where undefined); see docs/scripting.md")
       ->excludes(quiet);
-  run->add_flag(
-      "--resume", o->resume,
-      "navier-stokes: go on from the case's checkpoint (OUTPUT.checkpoint.h5) instead of from rest");
+  run->add_flag("--resume", o->resume,
+                "navier-stokes: go on from the case's checkpoint (OUTPUT.checkpoint.h5) instead of from rest");
   run->add_option(
       "--tolerance", o->tolerance,
       "target relative C_L error, 1e-14 to 0.1: choose the smallest grid and stencil (supersedes the "

@@ -218,6 +218,11 @@ std::string foreign_checkpoint(const std::string& path, const Case& c) {
   }
   const std::string mismatch = identity_mismatch(path, stored, c);
   if (mismatch.empty()) return "";
+  if (mismatch.find("does not record") != std::string::npos)  // an older magnus's: whose it is is unknown
+    return fmt::format(
+        "checkpoint '{}' does not record its scene fully (an older magnus wrote it); a run from rest would "
+        "overwrite it: remove it or give another -o",
+        path);
   return mismatch +
          "; a run from rest would overwrite it: resume that scene (--resume), remove it, or give "
          "another -o";

@@ -145,8 +145,8 @@ Json potential_derived(const FlowResult& r, Json& j) {
       q["reynolds"] = quantity(n->reynolds, "1");
       q["alpha"] = quantity(n->alpha, "1");
       q["cl"] = quantity(n->cl, "1");
-      q["cl_over_ideal"] = quantity(
-          n->alpha != 0.0 ? std::optional<double>(n->cl / (-2.0 * M_PI * n->alpha)) : std::nullopt, "1");
+      q["cl_over_ideal"] =
+          quantity(n->alpha != 0.0 ? std::optional<double>(n->cl / (-2.0 * M_PI * n->alpha)) : std::nullopt, "1");
       q["label"] = n->label;
       q["source"] = n->source;
     }
