@@ -32,16 +32,17 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
                                 e.source().begin.column, unshield(e.description())));
   }
   reject_unknown_keys(t, origin);
+  std::vector<std::string> overridden;  // a bad value given with --set is blamed on --set
   for (const auto& o : overrides) {
     // A tolerance on the command line supersedes the file's grid and stencil.
     if (o.rfind("grid.tolerance=", 0) == 0) {
       if (auto* g = t.get_as<toml::table>("grid")) g->erase("n_theta"), g->erase("n_r");
       if (auto* s = t.get_as<toml::table>("solver")) s->erase("stencil");
     }
-    apply_override(t, o);
+    overridden.push_back(apply_override(t, o));
   }
 
-  const Reader r(t, origin);
+  const Reader r(t, origin, overridden);
   Case c;
   auto positive = [](double v) { return v > 0.0; };
   auto any = [](double) { return true; };
@@ -238,7 +239,7 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
         if (field_of_model(n, c.model)) list += (list.empty() ? "" : ", ") + n;
       r.fail("output.fields",
              fmt::format("{} field \"{}\" (fields of {} flow: {})",
-                         std::find(names.begin(), names.end(), f) == names.end() ? "unknown" : "no such", f,
+                         std::find(names.begin(), names.end(), f) == names.end() ? "unknown" : "no such", cut_input(f),
                          to_string(c.model), list));
     }
   }

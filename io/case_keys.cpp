@@ -24,6 +24,13 @@ const std::map<std::string, std::vector<std::string>>& case_key_table() {
   return s;
 }
 
+std::string cut_input(const std::string& s, size_t max) {
+  size_t chars = 0, i = 0;
+  for (; i < s.size(); ++i)
+    if ((static_cast<unsigned char>(s[i]) & 0xC0) != 0x80 && chars++ == max) break;
+  return i < s.size() ? s.substr(0, i) + "…" : s;
+}
+
 size_t edit_distance(const std::string& a, const std::string& b) {
   std::vector<size_t> prev(b.size() + 1), cur(b.size() + 1);
   for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;

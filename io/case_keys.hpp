@@ -13,6 +13,9 @@ const std::map<std::string, std::vector<std::string>>& case_key_table();
 /// "section.key" ("key" at the top level).
 std::string key_name(const std::string& section, const std::string& key);
 
+/// User input as quoted in a message: at most `max` characters (whole UTF-8 characters), then "…" when cut.
+std::string cut_input(const std::string& s, size_t max = 60);
+
 /// Levenshtein distance between a and b (insertions, deletions, substitutions).
 size_t edit_distance(const std::string& a, const std::string& b);
 

@@ -27,7 +27,7 @@ void reject_unknown_keys(const toml::table& t, const std::string& origin) {
         std::string near;
         for (const auto& [name, keys] : s)
           if (!name.empty() && edit_distance(name, key) <= 2) near = name;
-        throw CaseError(fmt::format("{}: unknown section [{}]{}", origin, key,
+        throw CaseError(fmt::format("{}: unknown section [{}]{}", origin, cut_input(key),
                                     near.empty() ? "" : fmt::format(" (did you mean [{}]?)", near)));
       }
       for (auto&& [k2, v2] : *v.as_table()) {
@@ -35,34 +35,36 @@ void reject_unknown_keys(const toml::table& t, const std::string& origin) {
         const auto& keys = sec->second;
         if (std::find(keys.begin(), keys.end(), key2) == keys.end()) {
           throw CaseError(
-              fmt::format("{}: unknown key {}.{}{}", origin, key, key2, unknown_key_hint(key + "." + key2)));
+              fmt::format("{}: unknown key {}{}", origin, cut_input(key + "." + key2),
+                          unknown_key_hint(key + "." + key2)));
         }
         (void)v2;
       }
     } else if (key != "title") {
-      throw CaseError(fmt::format("{}: unknown key {}{}", origin, key, unknown_key_hint(key)));
+      throw CaseError(fmt::format("{}: unknown key {}{}", origin, cut_input(key), unknown_key_hint(key)));
     }
   }
 }
 
-void apply_override(toml::table& t, const std::string& spec) {
+std::string apply_override(toml::table& t, const std::string& spec) {
   const auto eq = spec.find('=');
   const std::string path = eq == std::string::npos ? "" : trim(spec.substr(0, eq));
-  if (path.empty()) throw CaseError(fmt::format("--set {}: expected section.key=value", spec));
+  if (path.empty()) throw CaseError(fmt::format("--set {}: expected section.key=value", cut_input(spec)));
   const std::string text = trim(spec.substr(eq + 1));  // spaces around '=' and the key are allowed
-  if (text.empty()) throw CaseError(fmt::format("--set {}: no value", spec));
+  if (text.empty()) throw CaseError(fmt::format("--set {}: no value", cut_input(spec)));
   const auto dot = path.find('.');
   const std::string section = dot == std::string::npos ? "" : path.substr(0, dot);
   const std::string key = dot == std::string::npos ? path : path.substr(dot + 1);
   const auto& keys = case_keys();
   if (std::find(keys.begin(), keys.end(), path) == keys.end()) {
-    throw CaseError(fmt::format("--set {}: unknown key {}{}", spec, path, unknown_key_hint(path)));
+    throw CaseError(fmt::format("--set {}: unknown key {}{}", cut_input(spec), cut_input(path),
+                                unknown_key_hint(path)));
   }
   toml::table* target = &t;
   if (!section.empty()) {
     if (!t.contains(section)) t.insert(section, toml::table{});
     target = t.get_as<toml::table>(section);
-    if (!target) throw CaseError(fmt::format("--set {}: {} is not a table in the case", spec, section));
+    if (!target) throw CaseError(fmt::format("--set {}: {} is not a table in the case", cut_input(spec), section));
   }
   // An override of one of a mutually exclusive group replaces the others of its group.
   if (section == "cylinder" && (key == "spin" || key == "spin_ratio" || key == "rpm"))
@@ -70,15 +72,16 @@ void apply_override(toml::table& t, const std::string& spec) {
   if (section == "flow" && (key == "viscosity" || key == "reynolds"))
     for (const char* k : {"viscosity", "reynolds"}) target->erase(k);
   try {
-    toml::table parsed = parse_toml("v = " + text, "--set " + spec);
+    toml::table parsed = parse_toml("v = " + text, "--set " + cut_input(spec));
     target->insert_or_assign(key, parsed["v"]);
   } catch (const toml::parse_error&) {
     // A bare word is a string; like every TOML string it must be UTF-8.
     for (size_t i = 0, len = 0; i < text.size(); i += len)
       if (decode_utf8(text, i, &len) == 0 && static_cast<unsigned char>(text[i]) >= 0x80)
-        throw CaseError(fmt::format("--set {}: the value is not valid UTF-8", spec));
+        throw CaseError(fmt::format("--set {}: the value is not valid UTF-8", cut_input(spec)));
     target->insert_or_assign(key, text);
   }
+  return path;
 }
 
 

@@ -6,6 +6,7 @@
 #include <toml++/toml.h>
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <string>
 #include <vector>
@@ -18,9 +19,13 @@ namespace magnus::case_reader {
 /// Reads typed values from the parsed table, naming origin and key in every error.
 class Reader {
  public:
-  Reader(const toml::table& t, std::string origin) : t_(t), origin_(std::move(origin)) {}
+  /// overridden: the "section.key"s whose values came from --set (a bad one is blamed on --set, not the file).
+  Reader(const toml::table& t, std::string origin, std::vector<std::string> overridden = {})
+      : t_(t), origin_(std::move(origin)), overridden_(std::move(overridden)) {}
 
   [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    if (std::find(overridden_.begin(), overridden_.end(), key) != overridden_.end())
+      throw CaseError(fmt::format("--set {}: {}", key, what));
     throw CaseError(fmt::format("{}: {}: {}", origin_, key, what));
   }
 
@@ -47,8 +52,15 @@ class Reader {
     else
       fail(key_name(section, key), fmt::format("expected a number, got {}", type_name(*n)));
     if (!std::isfinite(v)) fail(key_name(section, key), fmt::format("must be finite, got {}", v));
-    if (!ok(v)) fail(key_name(section, key), fmt::format("{} is out of range: must be {}", v, range));
+    if (!ok(v)) fail(key_name(section, key), fmt::format("{} is out of range: must be {}", refused(v, ok), range));
     return v;
+  }
+
+  /// A refused value as quoted: 6 significant digits, or as many as it takes to show that it is out of
+  /// range (100.00000000000001 against "<= 100"; 1e-300 stays 1e-300).
+  static std::string refused(double v, const std::function<bool(double)>& ok) {
+    const std::string short_text = fmt::format("{:.6g}", v);
+    return ok(std::strtod(short_text.c_str(), nullptr)) ? fmt::format("{}", v) : short_text;
   }
 
   long integer(const std::string& section, const std::string& key, long fallback,
@@ -72,7 +84,7 @@ class Reader {
     if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), v) == allowed.end()) {
       std::string list;
       for (const auto& a : allowed) list += (list.empty() ? "\"" : ", \"") + a + "\"";
-      fail(key_name(section, key), fmt::format("\"{}\" is not one of {}", v, list));
+      fail(key_name(section, key), fmt::format("\"{}\" is not one of {}", cut_input(v), list));
     }
     return v;
   }
@@ -114,13 +126,14 @@ class Reader {
  private:
   const toml::table& t_;
   std::string origin_;
+  std::vector<std::string> overridden_;
 };
 
 /// Throws CaseError naming the first key or section of t that is not in case_key_table() (with a hint).
 void reject_unknown_keys(const toml::table& t, const std::string& origin);
 
 /// Apply one "section.key=value" override to t (a bare word is a string); an override of one of a mutually
-/// exclusive group replaces the others of its group. Throws CaseError.
-void apply_override(toml::table& t, const std::string& spec);
+/// exclusive group replaces the others of its group. Returns the "section.key" it set. Throws CaseError.
+std::string apply_override(toml::table& t, const std::string& spec);
 
 }  // namespace magnus::case_reader

@@ -112,11 +112,15 @@ std::optional<Overflow> find_overflow(const Scene& s, double outer_radius, const
                            std::string(quantity).find("pressure") == std::string::npos &&
                            std::string(quantity).find("speed") == std::string::npos;
     if (std::isfinite(value) && !underflow) continue;
+    // The input furthest from 1 is blamed, each judged as given: a spin given as α = aω/U (or in rev/min)
+    // by that value, since ω = αU/a is tiny only because a is huge.
     const Factor* worst = &factors.front();
     double worst_log = -1.0;
-    for (const auto& f : factors)
-      if (f.value != 0.0 && std::fabs(std::log10(std::fabs(f.value))) > worst_log)
-        worst = &f, worst_log = std::fabs(std::log10(std::fabs(f.value)));
+    for (const auto& f : factors) {
+      const double given = f.key == &k.spin && k.spin_value != 0.0 ? k.spin_value : f.value;
+      if (given != 0.0 && std::fabs(std::log10(std::fabs(given))) > worst_log)
+        worst = &f, worst_log = std::fabs(std::log10(std::fabs(given)));
+    }
     const bool spin_as_given = worst->key == &k.spin && k.spin_value != 0.0;
     return Overflow{quantity, *worst->key, spin_as_given ? k.spin_value : worst->value, underflow};
   }

@@ -12,6 +12,8 @@ from conftest import DEMO, NS_CASE, cli_error
         ({"grid__n_theta": 7}, ["grid.n_theta=7"]),
         ({"set": {"grid.spacing": "cubic"}}, ['grid.spacing="cubic"']),
         ({"flow__speed": -1.0}, ["flow.speed=-1.0"]),
+        ({"model__flow": "navier-stoke"}, ['model.flow="navier-stoke"']),
+        ({"set": {"solver.method": "ftt"}}, ['solver.method="ftt"']),
     ],
 )
 def test_bad_overrides_raise_the_command_lines_message(kwargs, sets):
@@ -20,6 +22,8 @@ def test_bad_overrides_raise_the_command_lines_message(kwargs, sets):
     with pytest.raises(ValueError) as e:
         magnus.run(DEMO, **kwargs)
     assert str(e.value) == expected
+    # A value given as an override is blamed on the override, never on the case file.
+    assert str(e.value).startswith("--set "), str(e.value)
 
 
 def test_a_missing_case_file(tmp_path):

@@ -108,18 +108,18 @@ TEST_CASE("navier-stokes case: Re below 0.01 is refused, a viscous length beyond
     const auto o = run(dir, {fmt::format("flow.reynolds={}", re)});
     REQUIRE(o.status != 0);
     REQUIRE(test::lines(o.err) == 1);
-    CHECK(o.err == fmt::format("magnus: error: {}: flow.reynolds: {} is out of range: must be >= 0.01 for "
+    CHECK(o.err == fmt::format("magnus: error: --set flow.reynolds: {} is out of range: must be >= 0.01 for "
                                "navier-stokes (below it the viscous length D/Re is over 100 D: creeping flow "
                                "whose forces depend on domain.outer_radius)\n",
-                               kCase, re == std::string("0.001") ? "0.001" : "1e-300"));
+                               re == std::string("0.001") ? "0.001" : "1e-300"));
     CHECK_FALSE(exists(dir + "/r.h5"));
   }
   // The same through flow.viscosity: U·2a/ν = 1e-4/1 = 1e-4.
   const auto v = run(dir, {"flow.viscosity=1"});
   REQUIRE(v.status != 0);
   CHECK(v.err ==
-        "magnus: error: " + kCase +
-            ": flow.viscosity: 1 gives Re = U*2a/nu = 0.0001, out of range: must be >= 0.01 for "
+        std::string("magnus: error: --set") +
+            " flow.viscosity: 1 gives Re = U*2a/nu = 0.0001, out of range: must be >= 0.01 for "
             "navier-stokes (below it the viscous length D/Re is over 100 D: creeping flow whose forces "
             "depend on domain.outer_radius)\n");
   // Re = 0.05 on R = 20a: D/Re = 20 D = 40a lies beyond R.

@@ -134,3 +134,47 @@ TEST_CASE("output.compression: a gzip level 0 to 9, kept in the resolved case", 
   REQUIRE(error_of(scene + "[output]\ncompression = 10\n").find("output.compression") != std::string::npos);
   REQUIRE(error_of(scene + "[output]\ncompression = 1.5\n").find("expected an integer") != std::string::npos);
 }
+
+TEST_CASE("a bad value given with --set is blamed on --set, not on the case file", "[app][case]") {
+  CHECK(error_of(scene, {"model.flow=navier-stoke"}) ==
+        "--set model.flow: \"navier-stoke\" is not one of \"potential\", \"navier-stokes\"");
+  CHECK(error_of(scene, {"solver.method=ftt"}) ==
+        "--set solver.method: \"ftt\" is not one of \"auto\", \"cholmod\", \"fft\"");
+  CHECK(error_of(scene, {"grid.n_theta=7"}).rfind("--set grid.n_theta: 7 is out of range", 0) == 0);
+  CHECK(error_of(scene, {"flow.viscosity=-1e-6"}).rfind("--set flow.viscosity: -1e-06 is out of range", 0) == 0);
+  // The same value in the file is the file's.
+  CHECK(error_of(scene + "[grid]\nn_theta = 7\n").rfind("test.toml: grid.n_theta: 7 is out of range", 0) == 0);
+  // A key the override did not touch is still the file's, overrides or not.
+  CHECK(error_of(scene + "[solver]\nmethod = \"ftt\"\n", {"grid.n_theta=64"})
+            .rfind("test.toml: solver.method:", 0) == 0);
+}
+
+TEST_CASE("quoted input is cut to 60 characters, refused values show 6 digits unless more are needed",
+          "[app][case]") {
+  const std::string huge(1000000, 'x');
+  for (const std::string& msg :
+       {error_of(scene, {"flow." + huge + "=1"}), error_of(scene + "[domain]\n" + huge + " = 1\n"),
+        error_of(scene, {"model.flow=" + huge}), error_of(scene + "[" + huge + "]\n")}) {
+    CAPTURE(msg.substr(0, 200));
+    CHECK(!msg.empty());
+    CHECK(msg.size() < 400);
+    CHECK(msg.find("xxxxxxxxxx…") != std::string::npos);
+    CHECK(msg.find(std::string(61, 'x')) == std::string::npos);
+  }
+  // 400.5 needs no more than 6 digits to be out of [-360, 360]; 360.00000000000006 does (360 is in range).
+  CHECK(error_of(scene, {"flow.direction=400.50000000000006"}) ==
+        "--set flow.direction: 400.5 is out of range: must be in [-360, 360] (deg, CCW from +x)");
+  CHECK(error_of(scene, {"flow.direction=360.00000000000006"}) ==
+        "--set flow.direction: 360.00000000000006 is out of range: must be in [-360, 360] (deg, CCW from "
+        "+x)");
+}
+
+TEST_CASE("an overflow is blamed on the key whose value causes it", "[app][case]") {
+  // ω = αU/a is tiny only because a is huge: the radius is named, not cylinder.spin_ratio.
+  const std::string e =
+      error_of("[cylinder]\nradius = 1e308\nspin_ratio = 0.5\n[flow]\nspeed = 1.0\n");
+  CHECK(e.rfind("test.toml: cylinder.radius: 1e+308 is too large", 0) == 0);
+  // A spin ratio that is itself extreme is still named.
+  CHECK(error_of("[cylinder]\nradius = 1.0\nspin_ratio = 1e300\n[flow]\nspeed = 1e10\n")
+            .rfind("test.toml: cylinder.spin_ratio:", 0) == 0);
+}

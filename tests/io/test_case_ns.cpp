@@ -84,7 +84,7 @@ TEST_CASE("model.flow: potential by default, navier-stokes with its own defaults
   CHECK(s.grid.n_theta == kNsDefaultNTheta);
   CHECK(s.scene.reynolds() == Approx(10.0 * 0.2 / 1.5e-5));
   CHECK(error_of(scene, {"model.flow=viscous"}) ==
-        "test.toml: model.flow: \"viscous\" is not one of \"potential\", \"navier-stokes\"");
+        "--set model.flow: \"viscous\" is not one of \"potential\", \"navier-stokes\"");
   CHECK(error_of("[model]\nflow = 1\n" + scene) ==
         "test.toml: model.flow: expected a string, got an integer");
 }
@@ -168,7 +168,7 @@ TEST_CASE("potential flow: the keys of [time] and the snapshots are refused by n
   CHECK(error_of(scene + "[output]\nsnapshot_interval = 1.0\n") ==
         "test.toml: output.snapshot_interval: is only used with model.flow = \"navier-stokes\"");
   CHECK(error_of(scene, {"time.end=20"}) ==
-        "test.toml: time.end: is only used with model.flow = \"navier-stokes\"");
+        "--set time.end: is only used with model.flow = \"navier-stokes\"");
   CHECK(error_of("[model]\nflow = \"potential\"\n" + scene + "[time]\nend = 20\n") ==
         "test.toml: time.end: is only used with model.flow = \"navier-stokes\"");
   // An empty [time] holds no key: nothing to refuse.
@@ -202,8 +202,8 @@ TEST_CASE("navier-stokes: potential flow's circulation, far field, solver and to
         "discretisation");
   // The same by --set, and a potential case file switched to navier-stokes keeps its potential-only keys.
   CHECK_THAT(error_of(ns_scene, {"grid.tolerance=1e-6"}),
-             Contains("test.toml: grid.tolerance: is only used"));
-  CHECK_THAT(error_of(ns_scene, {"solver.method=fft"}), Contains("test.toml: solver.method: is only used"));
+             Contains("--set grid.tolerance: is only used"));
+  CHECK_THAT(error_of(ns_scene, {"solver.method=fft"}), Contains("--set solver.method: is only used"));
   CHECK_THAT(error_of(scene + "[domain]\nfar_field = \"freestream\"\n",
                       {"model.flow=navier-stokes", "flow.viscosity=1e-5"}),
              Contains("test.toml: domain.far_field: is only used with model.flow = \"potential\""));
@@ -287,14 +287,14 @@ TEST_CASE("navier-stokes speed: still fluid only around a spinning cylinder", "[
   check_round_trip(still);
   CHECK(parse(ns_scene, {"flow.speed=0", "cylinder.rpm=-30"}).scene.spin == Approx(-M_PI));
   const std::string nothing =
-      "test.toml: flow.speed: 0 needs a spinning cylinder with model.flow = \"navier-stokes\" (cylinder.spin "
+      "--set flow.speed: 0 needs a spinning cylinder with model.flow = \"navier-stokes\" (cylinder.spin "
       "!= "
       "0): in still fluid nothing else moves";
   CHECK(error_of(ns_scene, {"flow.speed=0", "cylinder.spin=0"}) == nothing);
   CHECK(error_of(ns_scene, {"flow.speed=0", "cylinder.spin_ratio=0"}) == nothing);
   CHECK(
       error_of(ns_scene, {"flow.speed=0", "cylinder.spin_ratio=1"}) ==
-      "test.toml: cylinder.spin_ratio: needs flow.speed > 0 (alpha = a*omega/U); give cylinder.spin instead");
+      "--set cylinder.spin_ratio: needs flow.speed > 0 (alpha = a*omega/U); give cylinder.spin instead");
   // A non-spinning cylinder in a stream is fine; potential flow keeps U = 0 with ω = 0.
   CHECK(parse(ns_scene, {"cylinder.spin=0"}).scene.spin == 0.0);
   CHECK(error_of(scene, {"flow.speed=0", "cylinder.spin=0"}) == "");
