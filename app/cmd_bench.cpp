@@ -73,8 +73,9 @@ void add_bench_command(CLI::App& app) {
       ->check(CLI::Range(1L, 1L << 40));
   b->add_option("--threads", o->threads, "threads for the solver")->check(CLI::Range(1, 64));
   b->add_option("--steps", o->steps, "navier-stokes: timed steps per rung (default 200)")->check(CLI::Range(1, 1000000));
-  b->add_option("--csv", o->csv, "write the table as CSV");
-  b->add_option("--plot", o->plot, "write a log-log PNG of C_L error against time (the Pareto front)");
+  output_file(b->add_option("--csv", o->csv, "write the table as CSV"));
+  add_force_flag(b);
+  output_file(b->add_option("--plot", o->plot, "write a log-log PNG of C_L error against time (the Pareto front)"));
   b->callback([o, b] {
     const Case c = load_case(o->case_path, o->sets);
     if (c.model == FlowModel::navier_stokes) {

@@ -38,7 +38,8 @@ void add_compare_command(CLI::App& app) {
                          "lift coefficients and errors of several results side by side (navier-stokes: the "
                          "viscous means beside the ideal; — where a row is not of a file's model)");
   compare->add_option("files", o->files, "result files (HDF5, from magnus run)")->required();
-  compare->add_option("--csv", o->csv, "write the comparison as CSV (one row per file)");
+  output_file(compare->add_option("--csv", o->csv, "write the comparison as CSV (one row per file)"));
+  add_force_flag(compare);
   compare->add_flag("--json", o->json,
                     "print one JSON object instead of the table: per file every stored figure with its "
                     "units, and the parameters that differ (see docs/scripting.md)");

@@ -36,7 +36,8 @@ void add_merge_command(CLI::App& app) {
   auto o = std::make_shared<MergeOptions>();
   auto* merge = app.add_subcommand(
       "merge", "one navier-stokes sweep file from the shards of magnus sweep --shard K/N (checked complete)");
-  merge->add_option("output", o->output, "the merged sweep file (HDF5)")->required();
+  output_file(merge->add_option("output", o->output, "the merged sweep file (HDF5)")->required());
+  add_force_flag(merge);
   merge->add_option("shards", o->shards, "the shard files, one per K of K/N")->required();
   merge->add_flag("-q,--quiet", o->quiet, "print nothing on success");
   merge->callback([o] { command_merge(*o); });

@@ -18,7 +18,8 @@ void add_plot_command(CLI::App& app) {
       "vorticity, C_L and C_D against time and the wall shear stress) or of a sweep (C_L)");
   plot->add_option("file", o->file, "result file (HDF5, from magnus run) or sweep file (magnus sweep -o)")
       ->required();
-  plot->add_option("-o,--output-dir", o->dir, "directory for the PNGs (default: beside the result)");
+  output_file(plot->add_option("-o,--output-dir", o->dir, "directory for the PNGs (default: beside the result)"));
+  add_force_flag(plot);
   plot->add_option("--size", o->size, "PNG size WxH in pixels (default 1000x800)");
   plot->add_option("--window", o->window,
                    "the field pictures' window X0:X1,Y0:Y1 in units of the radius, wind frame (e.g. -5:25,-6:6; "

@@ -44,7 +44,9 @@ void add_probe_command(CLI::App& app) {
   probe->add_option("file", o->file, "result file (HDF5, from magnus run)")->required();
   probe->add_option("points", o->points, "points x,y in metres (e.g. 0.2,0.05)")->required();
   probe->add_flag("--json", o->json, "print one JSON object instead of the table (see docs/scripting.md)");
-  probe->add_option("--csv", o->csv, "write the values as CSV; - for standard output (then nothing else)");
+  output_file(probe->add_option(
+      "--csv", o->csv, "write the values as CSV; - for standard output (then nothing else)"));
+  add_force_flag(probe);
   probe->callback([o] { command_probe(o->file, o->points, o->json, o->csv); });
 }
 

@@ -126,7 +126,8 @@ void add_run_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   auto* run = app.add_subcommand("run", "solve a case, write HDF5 (+ XDMF), print a summary");
   run->add_option("case", o->case_path, "case file (TOML)")->required();
-  run->add_option("-o,--output", o->output, "result file (default: output.file of the case)");
+  output_file(run->add_option("-o,--output", o->output, "result file (default: output.file of the case)"));
+  add_force_flag(run);
   run->add_option("--set", o->sets, "override a case key: section.key=value (repeatable)");
   run->add_option("--threads", o->threads, "threads for the solver")->check(CLI::Range(1, 64));
   auto* quiet = run->add_flag("-q,--quiet", o->quiet, "print nothing on success");
@@ -173,9 +174,10 @@ void add_inspect_command(CLI::App& app) {
   auto* inspect = app.add_subcommand("inspect", "show what a result or sweep file holds, with units");
   inspect->add_option("file", o->path, "result or sweep file (HDF5)")->required();
   inspect->add_flag("--json", o->json, "print one JSON object instead of the text (see docs/scripting.md)");
-  inspect->add_option("--surface-csv", o->surface,
+  add_force_flag(inspect);
+  output_file(inspect->add_option("--surface-csv", o->surface,
                       "write the body surface as CSV (θ in rad and degrees, u_θ, p, Cp; τ_w for "
-                      "navier-stokes); - for standard output");
+                      "navier-stokes); - for standard output"));
   inspect->callback([o] { command_inspect(o->path, o->json, o->surface); });
 }
 

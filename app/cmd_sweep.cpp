@@ -242,9 +242,10 @@ void add_sweep_command(CLI::App& app) {
                     "time stepper's growth: cheaper on coarse grids)")
       ->check(CLI::IsMember({"eigenvalues", "march"}));
   sweep->add_option("--set", o->sets, "override a case key: section.key=value (repeatable)");
-  sweep->add_option("--csv", o->csv, "write the table as CSV");
-  sweep->add_option("-o,--output", o->output, "write the table as HDF5 (format magnus-sweep)");
-  sweep->add_option("--plot", o->plot, "draw C_L(α) as PNG");
+  output_file(sweep->add_option("--csv", o->csv, "write the table as CSV"));
+  add_force_flag(sweep);
+  output_file(sweep->add_option("-o,--output", o->output, "write the table as HDF5 (format magnus-sweep)"));
+  output_file(sweep->add_option("--plot", o->plot, "draw C_L(α) as PNG"));
   sweep->add_option("--size", o->size, "PNG size WxH in pixels (default 1000x800)");
   sweep
       ->add_option("--threads", o->threads,

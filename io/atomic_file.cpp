@@ -1,4 +1,5 @@
 #include "io/atomic_file.hpp"
+#include "io/output_owner.hpp"
 
 #include <dirent.h>
 #include <fcntl.h>
@@ -112,6 +113,7 @@ void check_writable(const std::string& path) {
   if (::access(dir.c_str(), W_OK) != 0) fail(path, fmt::format("directory '{}' is not writable", dir));
   if (::access(target.c_str(), F_OK) == 0 && ::access(target.c_str(), W_OK) != 0)
     fail(path, "the existing file is not writable");
+  check_replaceable(path, target);
 }
 
 void check_file_writable(const std::string& path, const char* what) {
@@ -140,6 +142,7 @@ void check_distinct_paths(const std::vector<std::string>& inputs, const std::vec
 
 AtomicFile::AtomicFile(const std::string& path) : path_(path), target_(output_target(path)) {
   if (base_of(target_).empty()) fail(path, "the name is a directory");
+  check_replaceable(path, target_);
   remove_stale_temps(target_);
   const std::string stem = dir_of(target_) + "/." + base_of(target_) + ".tmp-" + std::to_string(::getpid());
   for (int attempt = 0; attempt < 100; ++attempt) {

@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "io/atomic_file.hpp"
+#include "io/output_owner.hpp"
 #include "plot/png_output.hpp"
 
 namespace magnus {
@@ -193,6 +194,8 @@ void render_png(const std::string& png, PlotSize size, const std::function<void(
       if (errcode) fail(png, std::string("PLplot: ") + errmsg);
     }  // ~plstream: end of page, the PNG is written and the file closed
     if (sink.error) fail(png, std::strerror(sink.error));  // e.g. "No space left on device"
+    errno = 0;
+    if (!mark_png_file(tmp)) fail(png, errno ? std::strerror(errno) : "cannot mark the image as magnus's");
     const std::string bad = check_png(tmp, size);
     if (!bad.empty()) fail(png, bad);
     out->commit();

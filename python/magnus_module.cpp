@@ -10,6 +10,7 @@
 #include "io/atomic_file.hpp"
 #include "io/case_file.hpp"
 #include "io/hdf5_io.hpp"
+#include "io/output_owner.hpp"
 #include "io/result_reader.hpp"
 #include "postproc/plan.hpp"
 #include "postproc/viscous_run.hpp"
@@ -54,8 +55,13 @@ struct Interrupt {
 
 /// magnus.run: solve the case (no file unless output is given: then written atomically, as `magnus run -o`).
 PyResult run(const std::string& source, bool is_path, const std::vector<std::string>& overrides, int threads,
-             const std::string& output) {
+             const std::string& output, bool force) {
   Interrupt interrupt;
+  // force: replace an existing output magnus did not write (as --force), for this call only.
+  struct Force {
+    explicit Force(bool on) { set_replace_any_file(on); }
+    ~Force() { set_replace_any_file(false); }
+  } const forced(force);
   std::shared_ptr<FlowResult> r;
   {
     py::gil_scoped_release nogil;
@@ -114,6 +120,7 @@ PYBIND11_MODULE(_magnus, m) {
   bind_result(m);
   bind_sweep(m);
   m.def("_run", &run, "solve a case (path or TOML text) with overrides; write `output` if not empty",
-        py::arg("source"), py::arg("is_path"), py::arg("overrides"), py::arg("threads"), py::arg("output"));
+        py::arg("source"), py::arg("is_path"), py::arg("overrides"), py::arg("threads"), py::arg("output"),
+        py::arg("force") = false);
   m.def("_read", &read_path, "read a magnus-flow result file", py::arg("path"));
 }

@@ -123,16 +123,17 @@ def _threads(threads):
     return min(int(threads), os.cpu_count() or int(threads))
 
 
-def run(case, /, *, set=None, output=None, threads=1, **overrides):
+def run(case, /, *, set=None, output=None, threads=1, force=False, **overrides):
     """Solve a case and return its Result. No file is written unless output (a path) is given: then the
-    result is written there (with its .xmf sidecar) as `magnus run -o` would. The GIL is released while
-    solving; Ctrl-C stops a navier-stokes run (KeyboardInterrupt)."""
+    result is written there (with its .xmf sidecar) as `magnus run -o` would: an existing file there that
+    magnus did not write is refused (RuntimeError) unless force=True. The GIL is released while solving;
+    Ctrl-C stops a navier-stokes run (KeyboardInterrupt)."""
     source, is_path = _source(case)
     sets = _overrides(overrides, set)
     out = "" if output is None else os.fspath(output)
     if output is not None and out == "":
         raise ValueError("output: an empty path")
-    return _magnus._run(source, is_path, sets, _threads(threads), out)
+    return _magnus._run(source, is_path, sets, _threads(threads), out, bool(force))
 
 
 def read(path):

@@ -67,3 +67,19 @@ def test_a_navier_stokes_sweep_is_refused_in_one_line_naming_the_command():
     message = str(e.value)
     assert message.startswith(str(NS_CASE) + ": model.flow = \"navier-stokes\"")
     assert "magnus sweep CASE --spin-ratio" in message and "\n" not in message
+
+
+def test_an_output_that_magnus_did_not_write_is_refused_unless_forced(tmp_path):
+    mine = tmp_path / "notes.h5"
+    mine.write_text("my notes\n")
+    with pytest.raises(RuntimeError, match=r"magnus replaces only its own outputs"):
+        magnus.run(DEMO, output=mine, grid__n_theta=32)
+    assert mine.read_text() == "my notes\n"
+    magnus.run(DEMO, output=mine, grid__n_theta=32, force=True)
+    assert mine.read_bytes().startswith(b"\x89HDF\r\n\x1a\n")
+    # Its own result now: replaced without force (force does not stay on after the call).
+    magnus.run(DEMO, output=mine, grid__n_theta=32)
+    other = tmp_path / "other.h5"
+    other.write_text("more notes\n")
+    with pytest.raises(RuntimeError):
+        magnus.run(DEMO, output=other, grid__n_theta=32)

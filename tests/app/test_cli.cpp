@@ -170,7 +170,9 @@ TEST_CASE("finite inputs whose derived quantities overflow are refused in one li
 TEST_CASE("a successful run replaces the old result and prints the summary", "[app][cli]") {
   const std::string dir = test::temp_dir("cli-ok");
   std::ofstream(dir + "/case.toml") << scene + "[grid]\nn_theta = 32\n";
-  std::ofstream(dir + "/r.h5") << "OLD";
+  // The old result (a coarser grid) is magnus's own: replaced.
+  REQUIRE(magnus_cmd({"run", dir + "/case.toml", "-o", dir + "/r.h5", "-q", "--set", "grid.n_theta=16"}, dir)
+              .status == 0);
   const Outcome o = magnus_cmd({"run", dir + "/case.toml", "-o", dir + "/r.h5"}, dir);
   REQUIRE(o.status == 0);
   REQUIRE(o.err.empty());

@@ -473,7 +473,7 @@ TEST_CASE("outputs through a symlink replace its target and keep the link (compa
           "[app][safety]") {
   const std::string dir = test::temp_dir("safety-links");
   earlier_result(dir + "/a.h5", dir);
-  spit(dir + "/real.csv", "old\n");
+  spit(dir + "/real.csv", "file,title,cl\nold.h5,,1\n");  // an earlier compare --csv
   fs::create_symlink("real.csv", dir + "/link.csv");
   const Outcome c = run_bounded({"compare", dir + "/a.h5", "--csv", dir + "/link.csv"}, dir);
   CAPTURE(c.err);
@@ -481,7 +481,7 @@ TEST_CASE("outputs through a symlink replace its target and keep the link (compa
   REQUIRE(fs::is_symlink(dir + "/link.csv"));
   REQUIRE(slurp(dir + "/real.csv").rfind("file,title", 0) == 0);
 
-  spit(dir + "/real.h5", "old");
+  earlier_result(dir + "/real.h5", dir);
   fs::create_symlink("real.h5", dir + "/link.h5");
   const Outcome r =
       run_bounded({"run", case_path, "-o", dir + "/link.h5", "-q", "--set", "grid.n_theta=16"}, dir);

@@ -1,0 +1,33 @@
+#pragma once
+// Whose file an existing output is. magnus replaces its own outputs (following a link to one is fine) but
+// not a file it did not write: `-o link.h5` with the link pointing at /etc/passwd must not replace passwd.
+// An existing file counts as magnus's own when it is
+//   - empty (0 bytes: nothing to lose),
+//   - HDF5 whose root attribute `format` starts with "magnus-" (results, sweeps, checkpoints),
+//   - PNG with a tEXt chunk Software = "magnus …" (every PNG magnus writes carries one),
+//   - XDMF beginning with magnus's preamble and reading its mesh from /mesh/points of an HDF5 file,
+//   - CSV whose first line begins with the header of one of magnus's CSV tables (kMagnusCsvHeaders).
+// Anything else is refused unless replacing it was asked for (--force).
+#include <string>
+
+namespace magnus {
+
+/// Why the existing file at `target` is not one magnus wrote ("" when it may be replaced: absent, empty, or
+/// a magnus output by the rules above). Reads at most the first 64 KiB (and the HDF5 root attributes).
+std::string not_a_magnus_output(const std::string& target);
+
+/// --force: allow replacing any existing regular file (process-wide; off by default).
+void set_replace_any_file(bool yes);
+
+/// Throws one line "cannot write 'path': 'target' exists and is not a magnus output (…); --force replaces
+/// it" unless the file at target may be replaced (or --force was given).
+void check_replaceable(const std::string& path, const std::string& target);
+
+/// png with a tEXt chunk "Software" = "magnus VERSION" after its IHDR chunk: the mark that lets magnus
+/// recognise (and replace) a PNG it wrote. png is returned unchanged if it is not a PNG.
+std::string mark_png(const std::string& png);
+
+/// mark_png applied to the file at path, in place; false if it cannot be read or written.
+bool mark_png_file(const std::string& path);
+
+}  // namespace magnus
