@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "io/hdf5_io.hpp"
+#include "io/inspect.hpp"
 #include "io/schema.hpp"
 
 namespace magnus {
@@ -87,6 +88,7 @@ struct FileData {
 
 FileData read(const std::string& path, const std::vector<const AttrSpec*>& ps,
               const std::vector<Quantity>& qs) {
+  check_result(path);  // a file inspect refuses is refused here too, not shown with "—" or "undefined"
   const ResultFile f(path);
   FileData d;
   d.path = path;

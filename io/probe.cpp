@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "io/hdf5_io.hpp"
+#include "io/inspect.hpp"
 #include "io/text_format.hpp"
 #include "postproc/fields.hpp"
 #include "postproc/probe.hpp"
@@ -32,6 +33,7 @@ std::pair<double, double> parse_probe_point(const std::string& text) {
 }
 
 ProbeTable probe_file(const std::string& path, const std::vector<std::pair<double, double>>& points) {
+  check_result(path);  // what inspect refuses is refused here too
   const ResultFile f(path);
   ProbeTable t;
   t.file = path;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "io/hdf5_io.hpp"
+#include "io/inspect.hpp"
 #include "io/schema.hpp"
 
 namespace magnus {
@@ -65,6 +66,7 @@ void read_snapshots(const ResultFile& f, FlowResult& r) {
 }  // namespace
 
 FlowResult read_result(const std::string& path) {
+  check_result(path);  // what inspect refuses (a missing attribute, a bad checksum) is refused here too
   const ResultFile f(path);
   FlowResult r;
   Case& c = r.c;

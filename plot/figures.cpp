@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "io/hdf5_io.hpp"
+#include "io/inspect.hpp"
 #include "io/ns_sweep_file.hpp"
 #include "io/reference_file.hpp"
 #include "io/result_reader.hpp"
@@ -314,6 +315,7 @@ PlotOutcome plot_result_file(const std::string& path, const std::string& dir, Pl
   } catch (const std::exception&) {
     sweep = false;  // not a sweep: the result reader below says what it is
   }
+  if (sweep) check_result(path);  // what inspect refuses is refused here too (results: in read_result)
   if (ns_map) {  // the viscous S(Re, α) map: S/(2πρa²) against α per Re
     const std::string png = output_base(path, dir) + "_s_map.png";
     plot_ns_map(read_ns_map_hdf5(path), png, size);

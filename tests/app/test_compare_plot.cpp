@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <hdf5.h>
+
 #include "io/compare.hpp"
 #include "io/hdf5_io.hpp"
 #include "plot/figures.hpp"
@@ -295,5 +297,40 @@ TEST_CASE("magnus plot --window: the field pictures show it, bad values refused 
     CHECK(lines(b.err) == 1);
     CHECK(b.err.find("--window") != std::string::npos);
     CHECK(!fs::exists(dir + "/bad"));
+  }
+}
+
+TEST_CASE("compare, compare --csv, plot and probe refuse a damaged file that inspect refuses", "[app][compare]") {
+  const std::string dir = test::temp_dir("compare-damaged");
+  std::ofstream(dir + "/a.toml") << "[cylinder]\nradius = 0.1\nspin_ratio = 1.0\n[flow]\nspeed = 10.0\n[grid]\n"
+                                    "n_theta = 32\n";
+  REQUIRE(magnus_cmd({"run", dir + "/a.toml", "-o", dir + "/a.h5", "-q"}, dir).status == 0);
+  // Damage that leaves a readable HDF5 file: an attribute gone (as when its object header is lost).
+  for (const auto& [group, attr] : {std::pair{"/parameters", "spin"}, std::pair{"/forces", "cl"}}) {
+    CAPTURE(group, attr);
+    const std::string bad = dir + "/bad.h5";
+    fs::copy_file(dir + "/a.h5", bad, fs::copy_options::overwrite_existing);
+    const hid_t f = H5Fopen(bad.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    REQUIRE(f >= 0);
+    REQUIRE(H5Adelete_by_name(f, group, attr, H5P_DEFAULT) >= 0);
+    H5Fclose(f);
+    const std::string missing = std::string(group) + "@" + attr + " is missing";
+    const Outcome inspected = magnus_cmd({"inspect", bad}, dir);
+    REQUIRE(inspected.status == 1);
+    REQUIRE(inspected.err.find(missing) != std::string::npos);
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"compare", dir + "/a.h5", bad},
+          std::vector<std::string>{"compare", dir + "/a.h5", bad, "--csv", dir + "/c.csv"},
+          std::vector<std::string>{"compare", bad, "--json"}, std::vector<std::string>{"plot", bad, "-q"},
+          std::vector<std::string>{"probe", bad, "0.2,0"}}) {
+      CAPTURE(args[0], args.size());
+      const Outcome o = magnus_cmd(args, dir);
+      CHECK(o.status == 1);
+      CHECK(one_line(o.err));
+      CHECK(o.err.find(missing) != std::string::npos);
+      CHECK(o.out.empty());
+    }
+    CHECK(!fs::exists(dir + "/c.csv"));
+    CHECK(!fs::exists(dir + "/bad_streamlines.png"));
   }
 }
