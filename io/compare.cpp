@@ -43,7 +43,7 @@ bool same(const Param& a, const Param& b) {
 
 std::string show(const Param& p) {
   if (p.text) return *p.text;
-  if (p.number) return fmt::format("{:.10g}", *p.number);
+  if (p.number) return figure(*p.number, "{:.10g}");
   return "—";
 }
 
@@ -174,7 +174,7 @@ Comparison compare_results(const std::vector<std::string>& paths) {
     std::vector<std::string> cells;
     for (const auto& f : files)
       cells.push_back(!f.has(kQuantities[q].models()) ? kNotApplicable
-                      : f.values[q] ? fmt::format(fmt::runtime(kQuantities[q].spec), *f.values[q])
+                      : f.values[q] ? figure(*f.values[q], kQuantities[q].spec.c_str())
                                     : "undefined");
     value_rows.push_back({kQuantities[q].label, cells});
   }
@@ -228,9 +228,9 @@ Comparison compare_results(const std::vector<std::string>& paths) {
     for (size_t k : differ)
       if (k != 0)
         c += "," + csv_field(f.params[k].text     ? *f.params[k].text
-                             : f.params[k].number ? fmt::format("{:.17g}", *f.params[k].number)
+                             : f.params[k].number ? csv_number(*f.params[k].number)
                                                   : "");
-    for (const auto& v : f.values) c += "," + (v ? fmt::format("{:.17g}", *v) : std::string());
+    for (const auto& v : f.values) c += "," + (v ? csv_number(*v) : std::string());
     c += "\n";
   }
   return out;

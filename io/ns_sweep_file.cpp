@@ -177,7 +177,7 @@ std::string ns_map_csv(const NsMap& m) {
     bool first = true;
     for (const auto& c : columns()) {
       const double v = c.get(p);
-      line += (first ? "" : ",") + (std::isfinite(v) ? fmt::format("{:.17g}", v) : std::string());
+      line += (first ? "" : ",") + (std::isfinite(v) ? csv_number(v) : std::string());
       first = false;
     }
     t += line + "\n";

@@ -148,7 +148,7 @@ std::string sweep_csv(const SweepResult& s) {
       "kj_over_seed,cd,delta_p_top_bottom_Pa,delta_p_seed_estimate_Pa,stagnation_theta1_deg,stagnation_"
       "theta2_deg,"
       "stagnation_r_over_a\n";
-  auto v = [](double x) { return std::isfinite(x) ? fmt::format("{:.17g}", x) : std::string(); };
+  auto v = [](double x) { return std::isfinite(x) ? csv_number(x) : std::string(); };
   for (const auto& p : s.points) {
     const SweepRow w = sweep_row(s, p);
     out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", v(w.alpha), v(w.circulation),

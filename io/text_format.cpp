@@ -16,6 +16,8 @@ std::string figure(double v, const char* spec) {
   return s;
 }
 
+std::string csv_number(double v) { return figure(v, "{:.17g}"); }
+
 std::string cell(double v, const char* spec) { return std::isfinite(v) ? figure(v, spec) : "—"; }
 
 std::string ms(double seconds) {

@@ -22,6 +22,9 @@ size_t display_width(const std::string& s);
 std::string pad_left(const std::string& s, size_t w);
 std::string pad_right(const std::string& s, size_t w);
 
+/// A number in a CSV: all 17 significant digits ("{:.17g}", reads back exactly), "0" for -0.
+std::string csv_number(double v);
+
 /// A CSV field, quoted when it holds a comma, a quote or a newline (RFC 4180).
 std::string csv_field(const std::string& s);
 

@@ -334,3 +334,34 @@ TEST_CASE("compare, compare --csv, plot and probe refuse a damaged file that ins
     CHECK(!fs::exists(dir + "/bad_streamlines.png"));
   }
 }
+
+TEST_CASE("no value prints as -0: compare's table and CSV, the sweep CSV", "[app][compare]") {
+  const std::string dir = test::temp_dir("compare-minus-zero");
+  std::ofstream(dir + "/z.toml") << "[cylinder]\nradius = 0.1\nspin = 0.0\n[flow]\nspeed = 10.0\n[grid]\n"
+                                    "n_theta = 32\n";
+  REQUIRE(magnus_cmd({"run", dir + "/z.toml", "-o", dir + "/z.h5", "-q"}, dir).status == 0);
+  const Outcome table = magnus_cmd({"compare", dir + "/z.h5"}, dir);
+  REQUIRE(table.status == 0);
+  const std::string kj = line_of(table.out, "  C_L Kutta–Joukowski");
+  REQUIRE(kj.size() > 2);
+  CHECK(kj.compare(kj.size() - 2, 2, " 0") == 0);
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"compare", dir + "/z.h5", "--csv", "-"},
+        std::vector<std::string>{"sweep", dir + "/z.toml", "--spin-ratio", "0:1:1", "-q", "--csv", "-"}}) {
+    const Outcome o = magnus_cmd(args, dir);
+    REQUIRE(o.status == 0);
+    const std::vector<std::string> rows = [&] {
+      std::vector<std::string> r;
+      std::istringstream in(o.out);
+      for (std::string l; std::getline(in, l);) r.push_back(l);
+      return r;
+    }();
+    REQUIRE(rows.size() >= 2);
+    const std::vector<std::string> head = split(rows[0], ','), zero = split(rows[1], ',');
+    REQUIRE(head.size() == zero.size());
+    const size_t k = size_t(std::find(head.begin(), head.end(), "cl_kutta_joukowski") - head.begin());
+    REQUIRE(k < head.size());
+    CHECK(zero[k] == "0");
+    for (const auto& cell : zero) CHECK(cell != "-0");
+  }
+}
