@@ -1,4 +1,5 @@
 #include "app/run_viscous.hpp"
+#include "physics/checked_cast.hpp"
 
 #include <fmt/core.h>
 #include <unistd.h>
@@ -48,7 +49,8 @@ struct InterruptGuard {
 };
 
 std::string clock_text(double seconds) {
-  const long s = long(seconds + 0.5);
+  if (!(seconds < 100.0 * 3600.0)) return seconds > 0.0 ? "> 100:00:00" : "?";  // NaN: no estimate
+  const long s = saturate_cast<long>(std::max(seconds, 0.0) + 0.5);
   return s >= 3600 ? fmt::format("{}:{:02d}:{:02d}", s / 3600, (s / 60) % 60, s % 60)
                    : fmt::format("{}:{:02d}", s / 60, s % 60);
 }

@@ -218,6 +218,9 @@ Case parse_case(const std::string& toml_text, const std::string& origin,
     auto non_negative = [](double v) { return v >= 0.0; };
     c.time.end = r.number("time", "end", c.time.end, positive, "> 0 (D/U)");
     c.time.dt = r.number("time", "dt", c.time.dt, non_negative, ">= 0 (D/U; 0: from time.cfl)");
+    if (c.time.dt > 0.0 && !(c.time.end / c.time.dt <= kNsMaxSteps))
+      r.fail("time.dt", fmt::format("{:g} gives time.end/time.dt = {:.3g} steps, more than the {:g} a run may take",
+                                    c.time.dt, c.time.end / c.time.dt, kNsMaxSteps));
     c.time.cfl = r.number(
         "time", "cfl", c.time.cfl, [](double v) { return v > 0.0 && v <= 0.8; }, "> 0 and <= 0.8");
     c.time.mean_tolerance = r.number(

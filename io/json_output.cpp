@@ -1,4 +1,5 @@
 #include "io/json_output.hpp"
+#include "physics/checked_cast.hpp"
 
 #include <fmt/core.h>
 
@@ -200,8 +201,8 @@ Json result_json(const FlowResult& r, const std::string& output_path) {
     Json value;
     if (a.kind == AttrKind::text)
       value = a.text(r);
-    else if (const auto v = a.number(r); v && a.kind == AttrKind::integer)
-      value = count(long(*v));
+    else if (const auto v = a.number(r); v && std::isfinite(*v) && a.kind == AttrKind::integer)
+      value = count(saturate_cast<long>(*v));
     else
       value = quantity(v, a.units);
     if (g.empty())

@@ -1,4 +1,5 @@
 #include "io/report_viscous.hpp"
+#include "physics/checked_cast.hpp"
 
 #include <fmt/core.h>
 
@@ -20,7 +21,7 @@ std::string num(double v, const char* spec = "{:.6g}") { return figure(v + 0.0, 
 
 std::string wall(double seconds) {
   return seconds < 60.0 ? fmt::format("{:.3g} s", seconds)
-                        : fmt::format("{}:{:02d} min", int(seconds) / 60, int(seconds) % 60);
+                        : fmt::format("{}:{:02d} min", saturate_cast<long>(seconds) / 60, saturate_cast<long>(seconds) % 60);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "io/atomic_file.hpp"
+#include "physics/checked_cast.hpp"
 #include "io/finite.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/schema.hpp"
@@ -76,7 +77,7 @@ void write_file(const FlowResult& r, H5Writer& w) {
       continue;
     }
     if (a.kind == AttrKind::integer)
-      w.attr(g, a.name, long(*v));
+      w.attr(g, a.name, checked_cast<long>(*v, a.name));
     else
       w.attr(g, a.name, *v);
     w.attr(g, units_attribute(a.name).c_str(), a.units);

@@ -1,4 +1,5 @@
 #include "io/rotor_data.hpp"
+#include "physics/checked_cast.hpp"
 
 #include <fmt/core.h>
 
@@ -113,7 +114,7 @@ void read_values(const toml::table& t, const std::string& where, RotorDataset& d
 }
 
 std::string sci(double v) {
-  const int e = int(std::floor(std::log10(v)));
+  const int e = saturate_cast<int>(std::floor(std::log10(v)));
   const double m = v / std::pow(10.0, e);
   return std::fabs(m - std::round(m)) < 1e-9 ? fmt::format("{:.0f}·10^{}", m, e)
                                              : fmt::format("{:.2g}·10^{}", m, e);

@@ -5,6 +5,7 @@
 #include <deque>
 
 #include "io/schema_build.hpp"
+#include "physics/checked_cast.hpp"
 
 namespace magnus::schema_build {
 
@@ -152,11 +153,11 @@ std::vector<DatasetSpec> study_datasets() {
       per_level(
           "newton_steps", "1", "Newton (and chord) steps on each grid",
           [](const SteadyLevel& l) { return double(l.newton.iterations); },
-          [](SteadyLevel& l, double v) { l.newton.iterations = int(v); }),
+          [](SteadyLevel& l, double v) { l.newton.iterations = checked_cast<int>(v, "newton_iterations"); }),
       per_level(
           "factorisations", "1", "LU factorisations on each grid",
           [](const SteadyLevel& l) { return double(l.newton.factorisations); },
-          [](SteadyLevel& l, double v) { l.newton.factorisations = int(v); }),
+          [](SteadyLevel& l, double v) { l.newton.factorisations = checked_cast<int>(v, "factorisations"); }),
       per_level(
           "residual", "1", "Newton's last scaled max-norm residual on each grid",
           [](const SteadyLevel& l) { return l.newton.residuals.empty() ? 0.0 : l.newton.residuals.back(); },

@@ -1,5 +1,6 @@
 // The navier-stokes model's attributes of the schema table (Models::viscous): absent from potential results.
 #include "io/schema_build.hpp"
+#include "physics/checked_cast.hpp"
 
 namespace magnus::schema_build {
 
@@ -19,12 +20,12 @@ std::vector<AttrSpec> viscous_attributes() {
            integer(
                P, "advection_order", "order of the advection term in θ: 2 (Arakawa's Jacobian) or 4",
                [](const FlowResult& r) { return opt(double(r.c.solver.advection_order)); },
-               [](FlowResult& r, double v) { r.c.solver.advection_order = int(v); })),
+               [](FlowResult& r, double v) { r.c.solver.advection_order = checked_cast<int>(v, "advection_order"); })),
       only(Models::viscous,
            integer(
                P, "advection_order_xi", "order of the advection term in ξ: 2 (Arakawa's Jacobian) or 4",
                [](const FlowResult& r) { return opt(double(r.c.solver.advection_order_xi)); },
-               [](FlowResult& r, double v) { r.c.solver.advection_order_xi = int(v); })),
+               [](FlowResult& r, double v) { r.c.solver.advection_order_xi = checked_cast<int>(v, "advection_order_xi"); })),
       row(vnum(F, "cl_mean", "1", "mean lift coefficient (over the last shedding period, or the last step)",
                &ViscousPart::cl_mean),
           "C_L mean (viscous)", "cl_mean", "{:.6g}"),
@@ -74,7 +75,7 @@ std::vector<AttrSpec> viscous_attributes() {
            integer(
                T, "steps", "time steps from rest (a resumed run: with those before --resume)",
                [](const FlowResult& r) { return r.viscous ? opt(double(r.viscous->steps)) : std::nullopt; },
-               [](FlowResult& r, double v) { vis(r).steps = long(v); })),
+               [](FlowResult& r, double v) { vis(r).steps = checked_cast<long>(v, "steps"); })),
   };
 }
 

@@ -97,6 +97,10 @@ constexpr int kNsDefaultNTheta = 192;
 
 /// Time marching of a navier-stokes case ([time]). Times are in convective units D/U_ref, D = 2a,
 /// U_ref = Scene::reference_speed().
+/// The most time steps a navier-stokes run may take: ten million (usual runs take a few thousand to a hundred
+/// thousand; each step keeps a sample of the force history, 64 bytes). time.end/time.dt above it is refused.
+constexpr double kNsMaxSteps = 1e7;
+
 struct TimeRequest {
   TimeMode mode = TimeMode::automatic;
   double end = 300.0;                 ///< t_end, D/U_ref, > 0

@@ -1,4 +1,5 @@
 #include "postproc/ns_continuation.hpp"
+#include "physics/checked_cast.hpp"
 
 #include "solver/ns_stability.hpp"
 
@@ -303,7 +304,7 @@ std::optional<bool> stability_by_marching(const NsParams& p, const NsState& stea
       e += (st.zeta[q] - steady.zeta[q]) * (st.zeta[q] - steady.zeta[q]);
     return std::sqrt(e);
   };
-  const long steps = long(std::ceil(span * unit / dt));
+  const long steps = checked_cast<long>(std::ceil(span * unit / dt), "stability march: the number of steps");
   // Least-squares slope of ln‖ζ − ζ_s‖ over the second half.
   double st = 0.0, sy = 0.0, stt = 0.0, sty = 0.0;
   long m = 0;

@@ -1,4 +1,5 @@
 #include "postproc/tolerance.hpp"
+#include "physics/checked_cast.hpp"
 
 #include <fmt/core.h>
 
@@ -78,7 +79,7 @@ GridChoice choose_grid(const Case& base, int threads, size_t max_bytes, long max
       choice.n_theta = n2;
       choice.estimated_cl_rel = est;
       // Smaller n the order predicts; accept it if it agrees with n2 to within the tolerance.
-      int n_star = int(std::ceil(n2 * std::pow(est / tol, 1.0 / p) / 4.0)) * 4;
+      int n_star = saturate_cast<int>(std::ceil(n2 * std::pow(est / tol, 1.0 / p) / 4.0)) * 4;
       n_star = std::max(8, n_star);
       if (n_star < n2) {
         const double cl_star = lift_on(c, n_star, threads, max_bytes);
@@ -92,7 +93,7 @@ GridChoice choose_grid(const Case& base, int threads, size_t max_bytes, long max
       return choice;
     }
     // The n the order predicts for the tolerance: refuse at once if that grid is too large.
-    const int n_pred = int(std::min(double(n_max), std::ceil(n2 * std::pow(est / tol, 1.0 / p) / 4.0) * 4));
+    const int n_pred = saturate_cast<int>(std::min(double(n_max), std::ceil(n2 * std::pow(est / tol, 1.0 / p) / 4.0) * 4));
     if (nodes_of(c, n_pred) > max_nodes) {
       Case shape = c;
       shape.grid.n_theta = n_pred;

@@ -321,6 +321,17 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
           0.9 * kNsCflLimit));
   }
 
+  // The march's length in steps, with time.dt or with the step time.cfl gives at the start (the impulsive start
+  // is the fastest flow of the run: its step is about the smallest): refused above kNsMaxSteps.
+  if (!start.psi.empty()) {
+    const double dt = p.dt > 0.0 ? p.dt : cfl_time_step(p, g, start.psi, p.cfl);
+    const double steps = (c.time.end * unit - start.t) / dt;
+    if (!(steps <= kNsMaxSteps))
+      throw std::invalid_argument(fmt::format(
+          "time.end = {:g} {} takes about {:.3g} time steps of {:.3g} {} on this grid, more than the {:g} a run "
+          "may take: lower time.end or coarsen the grid",
+          c.time.end, time_unit_name(sc), steps, dt / unit, time_unit_name(sc), kNsMaxSteps));
+  }
   UnsteadyOptions o;
   o.t_end = c.time.end * unit;
   o.rho = sc.density;

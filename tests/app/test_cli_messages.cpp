@@ -192,3 +192,17 @@ TEST_CASE("the result file must fit on the disk: estimate against the free space
   CHECK_NOTHROW(check_disk_space("x.h5", 1024, 1024));
   // End to end (no free space is injected: the program reads no test switch): tests/app/test_ns_signals.cpp.
 }
+
+TEST_CASE("a navier-stokes run longer than kNsMaxSteps steps at its CFL step is refused before it starts",
+          "[app][cli]") {
+  const std::string dir = temp_dir("cli-max-steps");
+  std::ofstream(dir + "/n.toml") << "[model]\nflow = \"navier-stokes\"\n[cylinder]\nradius = 0.5\nspin_ratio = "
+                                    "1.0\n[flow]\nspeed = 1.0\nreynolds = 100.0\n[grid]\nn_theta = 32\nn_r = 24\n"
+                                    "[time]\nmode = \"unsteady\"\nend = 1e12\n";
+  const Outcome o = magnus_cmd({"run", dir + "/n.toml", "-o", dir + "/n.h5", "-q"}, dir);
+  CHECK(o.status == 1);
+  CHECK(one_line(o.err));
+  CHECK(o.err.find("time.end = 1e+12 D/U takes about") != std::string::npos);
+  CHECK(o.err.find("more than the 1e+07 a run may take") != std::string::npos);
+  CHECK(!std::ifstream(dir + "/n.h5"));
+}

@@ -178,3 +178,13 @@ TEST_CASE("an overflow is blamed on the key whose value causes it", "[app][case]
   CHECK(error_of("[cylinder]\nradius = 1.0\nspin_ratio = 1e300\n[flow]\nspeed = 1e10\n")
             .rfind("test.toml: cylinder.spin_ratio:", 0) == 0);
 }
+
+TEST_CASE("a navier-stokes run of more than kNsMaxSteps time steps is refused", "[app][case]") {
+  const std::string ns = "[model]\nflow = \"navier-stokes\"\n[cylinder]\nradius = 0.5\nspin_ratio = 1.0\n"
+                         "[flow]\nspeed = 1.0\nreynolds = 100.0\n[time]\nend = 100.0\n";
+  CHECK(error_of(ns, {"time.dt=1e-300"}) ==
+        "--set time.dt: 1e-300 gives time.end/time.dt = 1e+302 steps, more than the 1e+07 a run may take");
+  CHECK(error_of(ns + "dt = 8e-6\n") ==
+        "test.toml: time.dt: 8e-06 gives time.end/time.dt = 1.25e+07 steps, more than the 1e+07 a run may take");
+  CHECK(error_of(ns + "dt = 2e-5\n").empty());  // five million steps: accepted
+}

@@ -3,11 +3,13 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 
 #include "io/finite.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/report.hpp"
 #include "io/text_format.hpp"
+#include "physics/checked_cast.hpp"
 #include "support.hpp"
 
 using namespace magnus;
@@ -45,4 +47,20 @@ TEST_CASE("a fixed-point figure of a huge value is printed in exponent form, nev
   CHECK(fmt_opt(std::nullopt, "{:.5f}") == "undefined");
   CHECK(cell(1e290, "{:.3f}") == "1e+290");
   CHECK(cell(12.5, "{:.3f}") == "12.500");
+}
+
+TEST_CASE("double to integer conversions are defined for every double", "[io][finite]") {
+  CHECK(saturate_cast<long>(1e300) == std::numeric_limits<long>::max());
+  CHECK(saturate_cast<long>(-1e300) == std::numeric_limits<long>::min());
+  CHECK(saturate_cast<int>(std::nan("")) == 0);
+  CHECK(saturate_cast<int>(2147483647.9) == 2147483647);
+  CHECK(saturate_cast<int>(2147483648.0) == 2147483647);
+  CHECK(saturate_cast<int>(-2147483648.9) == -2147483647 - 1);
+  CHECK(saturate_cast<size_t>(-0.5) == 0);
+  CHECK(saturate_cast<size_t>(-1.0) == 0);
+  CHECK(checked_cast<long>(-12.7, "x") == -12);
+  CHECK(checked_cast<long>(9223372036854774784.0, "x") == 9223372036854774784L);  // 2^63 - 1024
+  CHECK_THROWS_WITH(checked_cast<long>(9.2233720368547758e18, "steps"), "steps: 9.22337e+18 is out of range for an integer");
+  CHECK_THROWS_WITH(checked_cast<int>(INFINITY, "n"), "n: inf is out of range for an integer");
+  CHECK_THROWS_WITH(checked_cast<int>(std::nan(""), "n"), "n: nan is out of range for an integer");
 }
