@@ -118,8 +118,12 @@ std::string ns_map_table(const NsMap& m) {
   t += fmt::format("{:<13}n_theta = {}, n_r = {}, R/a = {:g}\n", "grid", m.n_theta, m.n_r, m.outer_over_a);
   t += fmt::format("{:<13}{} Re × {} α", "map", m.reynolds.size(), m.alphas.size());
   if (m.shards > 1) t += fmt::format(", shard {}/{} ({} points)", m.shard, m.shards, m.points.size());
-  t += fmt::format("\n{:<13}{:.2f} s on {} thread{} ({})\n", "time", m.total_s, m.threads,
-                   m.threads == 1 ? "" : "s", m.continued_in_re() ? "one branch in Re: in order" : "rows in parallel");
+  // How the points were shared out: only with more than one thread is anything parallel.
+  const char* order = m.continued_in_re() ? " (one branch in Re: in order)"
+                      : m.threads > 1     ? " (rows in parallel)"
+                                          : "";
+  t += fmt::format("\n{:<13}{:.2f} s on {} thread{}{}\n", "time", m.total_s, m.threads, m.threads == 1 ? "" : "s",
+                   order);
   const double re_max = *std::max_element(m.reynolds.begin(), m.reynolds.end());
   if (above_laminar_range(re_max))
     t += fmt::format("{:<13}Re up to {:g} > {:g}: real flow is three-dimensional there; this 2D laminar map "

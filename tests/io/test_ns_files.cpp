@@ -9,6 +9,7 @@
 #include "io/compare.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/inspect.hpp"
+#include "io/ns_sweep_file.hpp"
 #include "io/result_reader.hpp"
 #include "io/schema.hpp"
 #include "io/viscous_fixture.hpp"
@@ -234,4 +235,17 @@ TEST_CASE(
   CHECK(describe_result(dir + "/ns.h5").find("[Pa]  " + poisson + "\n") != std::string::npos);
   CHECK(describe_result(dir + "/ns.h5").find("Bernoulli") == std::string::npos);
   CHECK(describe_result(dir + "/pot.h5").find("[Pa]  " + bernoulli + "\n") != std::string::npos);
+}
+
+TEST_CASE("navier-stokes map table: one thread is not called parallel", "[io][sweep]") {
+  NsMap m;
+  m.base.title = "map";
+  m.reynolds = {20.0, 60.0};
+  m.alphas = {0.0, 1.0};
+  m.n_theta = 48, m.n_r = 40, m.outer_over_a = 20.0;
+  m.total_s = 5.27;
+  m.threads = 1;
+  CHECK(test::line_of(ns_map_table(m), "time") == "time         5.27 s on 1 thread");
+  m.threads = 2;
+  CHECK(test::line_of(ns_map_table(m), "time") == "time         5.27 s on 2 threads (rows in parallel)");
 }
