@@ -1,4 +1,4 @@
-// magnus: 2D potential flow past a spinning cylinder. The subcommands live in app/cmd_*.cpp.
+// magnus: 2D flow past a spinning cylinder (potential flow and laminar Navier–Stokes). The subcommands live in app/cmd_*.cpp.
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -8,7 +8,8 @@
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "magnus: potential flow past a spinning cylinder (Magnus lift, Kutta–Joukowski, the seed estimate)"};
+      "magnus: flow past a spinning cylinder: potential flow (Magnus lift, Kutta–Joukowski, the seed "
+      "estimate) and 2D laminar Navier–Stokes (model.flow = \"navier-stokes\": drag, shedding, S(Re, α))"};
   app.set_version_flag("--version", std::string("magnus ") + MAGNUS_VERSION);
   app.require_subcommand(1);
   magnus::add_commands(app);

@@ -193,6 +193,14 @@ TEST_CASE("the result file must fit on the disk: estimate against the free space
   // End to end (no free space is injected: the program reads no test switch): tests/app/test_ns_signals.cpp.
 }
 
+TEST_CASE("magnus --help names both models", "[app][cli]") {
+  const std::string dir = temp_dir("cli-help");
+  const Outcome o = magnus_cmd({"--help"}, dir);
+  REQUIRE(o.status == 0);
+  CHECK(o.out.find("Navier–Stokes") != std::string::npos);
+  CHECK(o.out.find("potential flow") != std::string::npos);
+}
+
 TEST_CASE("a navier-stokes run longer than kNsMaxSteps steps at its CFL step is refused before it starts",
           "[app][cli]") {
   const std::string dir = temp_dir("cli-max-steps");
