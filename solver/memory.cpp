@@ -1,4 +1,5 @@
 #include "solver/memory.hpp"
+#include "physics/checked_cast.hpp"
 
 #include "mesh/polar_grid.hpp"
 
@@ -81,7 +82,7 @@ size_t parse_bytes(const std::string& text) {
     throw std::invalid_argument("unknown unit '" + unit + "' (use K, M, G or T)");
   std::string rest;
   if (in >> rest) throw std::invalid_argument("expected a size like 2G or 512M");
-  return size_t(v * scale);
+  return saturate_cast<size_t>(v * scale);  // 1e300G: more than any machine has, not undefined behaviour
 }
 
 std::string format_bytes(size_t bytes) {

@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 
+#include <limits>
+
 #include "mesh/polar_grid.hpp"
 #include "solver/cholmod_solver.hpp"
 #include "solver/flow_solver.hpp"
@@ -16,6 +18,9 @@ TEST_CASE("sizes parse and print", "[solver][memory]") {
   REQUIRE_THROWS(parse_bytes("lots"));
   REQUIRE_THROWS(parse_bytes("2X"));
   REQUIRE_THROWS(parse_bytes("-1G"));
+  // Beyond size_t: the largest size (no limit in practice), not an out-of-range conversion.
+  REQUIRE(parse_bytes("1e300G") == std::numeric_limits<size_t>::max());
+  REQUIRE(parse_bytes("1e30") == std::numeric_limits<size_t>::max());
   REQUIRE(format_bytes(3ull << 29) == "1.50 GiB");
   REQUIRE(available_bytes() > (64ull << 20));
 }
