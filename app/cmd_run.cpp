@@ -9,6 +9,7 @@
 #include "app/commands.hpp"
 #include "app/run_viscous.hpp"
 #include "app/threads.hpp"
+#include "io/case_keys.hpp"
 #include "io/case_file.hpp"
 #include "io/checkpoint.hpp"
 #include "io/hdf5_io.hpp"
@@ -148,7 +149,7 @@ void add_run_command(CLI::App& app) {
       try {
         max_bytes = parse_bytes(o->max_memory);
       } catch (const std::exception& e) {
-        throw std::runtime_error("--max-memory " + o->max_memory + ": " + e.what());
+        throw std::runtime_error("--max-memory " + cut_input(o->max_memory) + ": " + e.what());
       }
     }
     std::vector<std::string> sets = o->sets;
@@ -157,7 +158,7 @@ void add_run_command(CLI::App& app) {
       const double tol = std::strtod(o->tolerance.c_str(), &end);
       if (end == o->tolerance.c_str() || *end != '\0' || !(tol >= 1e-14 && tol <= 0.1))
         throw std::runtime_error(
-            fmt::format("--tolerance {}: must be between {:g} and {:g}", o->tolerance, 1e-14, 0.1));
+            fmt::format("--tolerance {}: must be between {:g} and {:g}", cut_input(o->tolerance), 1e-14, 0.1));
       sets.push_back(fmt::format("grid.tolerance={}", tol));
     }
     command_run(o->case_path, o->output, sets, usable_threads(o->threads), o->quiet, max_bytes, o->resume,

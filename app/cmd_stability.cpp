@@ -11,6 +11,7 @@
 
 #include "app/commands.hpp"
 #include "io/case_file.hpp"
+#include "io/case_keys.hpp"
 #include "io/json_output.hpp"
 #include "postproc/ns_critical.hpp"
 #include "postproc/viscous_run.hpp"
@@ -35,7 +36,7 @@ double parse_number(const std::string& text, const std::string& option, const ch
     end = 0;
   }
   if (text.empty() || end != text.size() || !std::isfinite(v))
-    throw std::invalid_argument(fmt::format("{}: expected {}, got \"{}\"", option, expected, text));
+    throw std::invalid_argument(fmt::format("{}: expected {}, got \"{}\"", option, expected, cut_input(text)));
   return v;
 }
 

@@ -14,6 +14,7 @@
 
 #include "app/commands.hpp"
 #include "io/case_file.hpp"
+#include "io/case_keys.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/json_output.hpp"
 #include "io/ns_sweep_file.hpp"
@@ -57,7 +58,7 @@ std::pair<int, int> parse_shard(const std::string& text) {
   if (slash == std::string::npos || !whole(text.substr(0, slash), k) || !whole(text.substr(slash + 1), n) ||
       k < 1 || k > n)
     throw std::invalid_argument(
-        fmt::format("--shard '{}': expected K/N with whole numbers 1 ≤ K ≤ N (e.g. 2/4)", text));
+        fmt::format("--shard '{}': expected K/N with whole numbers 1 ≤ K ≤ N (e.g. 2/4)", cut_input(text)));
   return {k, n};
 }
 

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "io/hdf5_io.hpp"
+#include "io/case_keys.hpp"
 #include "io/inspect.hpp"
 #include "io/text_format.hpp"
 #include "postproc/fields.hpp"
@@ -28,7 +29,7 @@ std::pair<double, double> parse_probe_point(const std::string& text) {
   if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos ||
       !number(text.substr(0, comma), x) || !number(text.substr(comma + 1), y))
     throw std::invalid_argument(
-        fmt::format("point '{}': expected x,y in metres (two finite numbers, e.g. 0.2,-0.05)", text));
+        fmt::format("point '{}': expected x,y in metres (two finite numbers, e.g. 0.2,-0.05)", cut_input(text)));
   return {x, y};
 }
 

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "io/hdf5_io.hpp"
+#include "io/case_keys.hpp"
 #include "io/text_format.hpp"
 #include "physics/reference_data.hpp"
 
@@ -29,7 +30,8 @@ double parse_number(const std::string& s, const std::string& option, const std::
   const double v = std::strtod(begin, &end);
   if (s.empty() || end != begin + s.size() || errno == ERANGE || !std::isfinite(v))
     throw std::invalid_argument(fmt::format(
-        "{} '{}': {} '{}' is not a finite number (expected A:B:STEP, e.g. 0:4:0.5)", option, text, which, s));
+        "{} '{}': {} '{}' is not a finite number (expected A:B:STEP, e.g. 0:4:0.5)", option, cut_input(text), which,
+        cut_input(s)));
   return v;
 }
 
@@ -45,14 +47,14 @@ SweepRange parse_sweep_range(const std::string& text, const std::string& option)
     }
   if (parts.size() != 3)
     throw std::invalid_argument(fmt::format(
-        "{} '{}': expected A:B:STEP (from A to B inclusive in steps of STEP), e.g. 0:4:0.5", option, text));
+        "{} '{}': expected A:B:STEP (from A to B inclusive in steps of STEP), e.g. 0:4:0.5", option, cut_input(text)));
   SweepRange r;
   r.first = parse_number(parts[0], option, text, "A");
   r.last = parse_number(parts[1], option, text, "B");
   r.step = parse_number(parts[2], option, text, "STEP");
-  if (!(r.step > 0.0)) throw std::invalid_argument(fmt::format("{} '{}': STEP must be > 0", option, text));
+  if (!(r.step > 0.0)) throw std::invalid_argument(fmt::format("{} '{}': STEP must be > 0", option, cut_input(text)));
   if (r.first > r.last)
-    throw std::invalid_argument(fmt::format("{} '{}': A must not exceed B", option, text));
+    throw std::invalid_argument(fmt::format("{} '{}': A must not exceed B", option, cut_input(text)));
   const double span = (r.last - r.first) / r.step;
   if (!std::isfinite(span) || span + 1.0 > double(kMaxSweepPoints))
     throw std::invalid_argument(

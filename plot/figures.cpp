@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "io/hdf5_io.hpp"
+#include "io/case_keys.hpp"
 #include "io/inspect.hpp"
 #include "io/ns_sweep_file.hpp"
 #include "io/reference_file.hpp"
@@ -31,7 +32,7 @@ PlotSize parse_plot_size(const std::string& text) {
   const int h = x == std::string::npos ? -1 : part(text.substr(x + 1));
   if (w < 0 || h < 0)
     throw std::invalid_argument(
-        fmt::format("--size '{}': expected WIDTHxHEIGHT in pixels, e.g. 900x700", text));
+        fmt::format("--size '{}': expected WIDTHxHEIGHT in pixels, e.g. 900x700", cut_input(text)));
   if (w < 16 || h < 16 || w > 16384 || h > 16384)
     throw std::invalid_argument(fmt::format("--size '{}': each side must be 16 to 16384 pixels", text));
   return {w, h};

@@ -214,3 +214,19 @@ TEST_CASE("a navier-stokes run longer than kNsMaxSteps steps at its CFL step is 
   CHECK(o.err.find("more than the 1e+07 a run may take") != std::string::npos);
   CHECK(!std::ifstream(dir + "/n.h5"));
 }
+
+TEST_CASE("a long command-line value is quoted cut to 60 characters", "[app][cli]") {
+  const std::string dir = temp_dir("cli-long-input");
+  const std::string junk(100000, '9');
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"sweep", demo, "--spin-ratio", junk + ":1:0.5", "-q"},
+        std::vector<std::string>{"run", demo, "-q", "--tolerance", junk},
+        std::vector<std::string>{"run", demo, "-q", "--max-memory", junk + "X"}}) {
+    const Outcome o = magnus_cmd(args, dir);
+    CAPTURE(o.err.substr(0, 300));
+    CHECK(o.status != 0);
+    CHECK(one_line(o.err));
+    CHECK(o.err.size() < 400);
+    CHECK(o.err.find("9…") != std::string::npos);
+  }
+}
