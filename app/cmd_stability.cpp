@@ -13,6 +13,7 @@
 #include "io/case_file.hpp"
 #include "io/case_keys.hpp"
 #include "io/json_output.hpp"
+#include "io/text_format.hpp"
 #include "postproc/ns_critical.hpp"
 #include "postproc/viscous_run.hpp"
 
@@ -63,7 +64,8 @@ CriticalRange parse_critical(const StabilityCliOptions& o) {
 }
 
 std::string eig_text(const std::complex<double>& l) {
-  return fmt::format("{:+.5f} {:+.5f}i   St {:.4f}", l.real(), l.imag(), std::fabs(l.imag()) / (2.0 * M_PI));
+  return fmt::format("{} {}i   St {}", figure(l.real(), "{:+.5f}"), figure(l.imag(), "{:+.5f}"),
+                     figure(std::fabs(l.imag()) / (2.0 * M_PI), "{:.4f}"));
 }
 
 Json eig_json(const StabilityResult& s) {
@@ -97,9 +99,9 @@ void command_stability(const StabilityCliOptions& o) {
                         p.reynolds(), alpha, s.newton_seconds, st.seconds, st.solves);
     text += "eigenvalues    λ·D/U (growth rate, frequency), rightmost first\n";
     for (const auto& l : st.eigenvalues) text += "               " + eig_text(l) + "\n";
-    text += fmt::format("verdict        {} (leading growth rate {:+.5f} U/D{})\n",
+    text += fmt::format("verdict        {} (leading growth rate {} U/D{})\n",
                         st.stable ? "STABLE: the steady flow persists" : "UNSTABLE: the wake sheds",
-                        st.growth_rate(),
+                        figure(st.growth_rate(), "{:+.5f}"),
                         st.eigenvalues.front().imag() != 0.0 ? fmt::format(", St {:.4f}", st.strouhal()) : "");
     j = {{"reynolds", p.reynolds()}, {"spin_ratio", alpha}, {"stable", st.stable}, {"eigenvalues", eig_json(st)},
          {"seconds", s.newton_seconds + st.seconds}, {"solves", st.solves}};

@@ -121,8 +121,9 @@ std::string stagnation_text(const ResultFile& f, double a) {
     }
     s += fmt::format("  {}:{}\n", exact ? "exact" : "numeric", r.empty() ? " none" : "");
     for (size_t k = 0; k < std::min(r.size(), th.size()); ++k)
-      s += fmt::format("    r = {:.8g} m ({:.6g} a), theta = {:.8g} rad ({:.4f}°)\n", r[k],
-                       a > 0 ? r[k] / a : 0.0, th[k], th[k] * 180.0 / M_PI);
+      s += fmt::format("    r = {} m ({} a), theta = {} rad ({}°)\n", figure(r[k], "{:.8g}"),
+                       figure(a > 0 ? r[k] / a : 0.0, "{:.6g}"), figure(th[k], "{:.8g}"),
+                       figure(th[k] * 180.0 / M_PI, "{:.4f}"));
   }
   return s.empty() ? s : "\nstagnation points\n" + s;
 }
@@ -266,7 +267,7 @@ std::string describe_sweep(const ResultFile& f) {
     }
     const std::string units = f.has_attr(name, "units") ? f.attr_string(name, "units") : "?";
     const std::string range =
-        lo <= hi ? fmt::format("{:.6g} … {:.6g}", lo, hi) : std::string("all undefined");
+        lo <= hi ? figure(lo, "{:.6g}") + " … " + figure(hi, "{:.6g}") : std::string("all undefined");
     s += fmt::format("  {:<32}({})  [{}]  {}{}\n", name, dims_text(shape), units, range,
                      undefined ? fmt::format(" ({} undefined)", undefined) : "");
   }

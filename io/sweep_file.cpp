@@ -80,9 +80,10 @@ std::string stagnation_text(const SweepPoint& p) {
   if (p.stagnation.empty()) return "none";
   const std::vector<StagnationPoint> pts = sorted_stagnation_points(p.stagnation);
   if (!pts[0].on_surface)
-    return fmt::format("{:.2f}° at r = {:.4f}a (free)", deg(pts[0].theta), pts[0].r / p.scene.radius);
+    return fmt::format("{}° at r = {}a (free)", figure(deg(pts[0].theta), "{:.2f}"),
+                       figure(pts[0].r / p.scene.radius, "{:.4f}"));
   std::string s;
-  for (const auto& q : pts) s += (s.empty() ? "" : ", ") + fmt::format("{:.2f}°", deg(q.theta));
+  for (const auto& q : pts) s += (s.empty() ? "" : ", ") + figure(deg(q.theta), "{:.2f}") + "°";
   return s + " (surface)";
 }
 
@@ -91,7 +92,8 @@ std::string range_text(const std::vector<SweepPoint>& pts, const SweepResult& s)
   const SweepRow a = sweep_row(s, pts.front()), b = sweep_row(s, pts.back());
   const double x0 = s.variable == SweepVariable::spin_ratio ? a.alpha : a.circulation;
   const double x1 = s.variable == SweepVariable::spin_ratio ? b.alpha : b.circulation;
-  return fmt::format("{:.6g} … {:.6g} ({} point{})", x0, x1, pts.size(), pts.size() == 1 ? "" : "s");
+  return fmt::format("{} … {} ({} point{})", figure(x0, "{:.6g}"), figure(x1, "{:.6g}"), pts.size(),
+                     pts.size() == 1 ? "" : "s");
 }
 
 }  // namespace

@@ -12,7 +12,13 @@ std::string figure(double v, const char* spec) {
       sp.size() >= 2 && sp[sp.size() - 1] == '}' && (sp[sp.size() - 2] == 'f' || sp[sp.size() - 2] == 'F');
   std::string s = fmt::format(fmt::runtime(fixed && std::fabs(v) >= 1e9 ? "{:.6g}" : spec), v);
   // A value that rounds to zero carries no sign: "0.00000", not "-0.00000" (round-off below the last digit).
-  if (std::isfinite(v) && s[0] == '-' && s.find_first_of("123456789", 1) == std::string::npos) s.erase(0, 1);
+  // With an explicit sign ("{:+.5f}") zero keeps its "+".
+  if (std::isfinite(v) && s[0] == '-' && s.find_first_of("123456789", 1) == std::string::npos) {
+    if (sp.find('+') != std::string::npos)
+      s[0] = '+';
+    else
+      s.erase(0, 1);
+  }
   return s;
 }
 

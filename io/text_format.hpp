@@ -6,7 +6,7 @@ namespace magnus {
 
 /// fmt spec applied to v, except that a fixed-point spec ("{:.5f}") of |v| >= 1e9 gives "{:.6g}" instead:
 /// no figure runs to hundreds of digits (1e290 prints as 1e+290, not 291 digits and 5 decimals); and no sign
-/// on a value that rounds to zero ("0.000", not "-0.000" or "-0").
+/// on a value that rounds to zero ("0.000", not "-0.000" or "-0"; "+0.000" with an explicit sign, "{:+.3f}").
 std::string figure(double v, const char* spec);
 
 /// A table cell: figure(v, spec); "—" for a non-finite (undefined) value.

@@ -64,3 +64,14 @@ TEST_CASE("double to integer conversions are defined for every double", "[io][fi
   CHECK_THROWS_WITH(checked_cast<int>(INFINITY, "n"), "n: inf is out of range for an integer");
   CHECK_THROWS_WITH(checked_cast<int>(std::nan(""), "n"), "n: nan is out of range for an integer");
 }
+
+TEST_CASE("a figure that rounds to zero has no minus sign, and keeps an asked-for plus", "[io][finite][report]") {
+  CHECK(figure(-0.0, "{:.6g}") == "0");
+  CHECK(figure(-1e-9, "{:.2f}") == "0.00");
+  CHECK(figure(-0.0, "{:.3e}") == "0.000e+00");
+  CHECK(figure(-0.0, "{:+.5f}") == "+0.00000");     // an eigenvalue's imaginary part, λ = −0.01 − 0i
+  CHECK(figure(-4e-7, "{:+.5f}") == "+0.00000");
+  CHECK(figure(-0.01, "{:+.5f}") == "-0.01000");
+  CHECK(csv_number(-0.0) == "0");
+  CHECK(csv_number(-1e-300) == "-1e-300");  // a tiny value keeps its sign
+}
