@@ -10,7 +10,9 @@ namespace magnus {
 std::string describe_result(const std::string& path);
 
 /// The checks of describe_result without the text: every reader of a result or sweep file (compare, plot,
-/// probe, the Python module) refuses what `magnus inspect` refuses. Throws std::runtime_error with one line.
+/// probe, the Python module) refuses what `magnus inspect` refuses: the structure, every attribute, every
+/// stored value read back through its checksum (the /mesh views of stored datasets are not read twice).
+/// Throws std::runtime_error with one line.
 void check_result(const std::string& path);
 
 /// The body surface of a magnus-flow file as CSV, one line per angle θ_j: theta_rad, theta_deg, u_theta_m_s,
