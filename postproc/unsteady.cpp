@@ -82,6 +82,31 @@ bool analyse_periodic_from(const std::vector<ForceSample>& h, size_t first, doub
   return true;
 }
 
+/// The rate (1/s) whose product with Δt advance() compares with kNsCflLimit, or a bound above it:
+/// cfl_number's (every ring) and the wall ring's |ω|/Δθ.
+double step_rate(const NsParams& p, const PolarGrid& g, const NsState& s) {
+  const double r = cfl_number(g, s.psi, 1.0, p.advection_order, p.advection_order_xi);
+  return p.stokes ? r : std::max(r, std::fabs(p.omega) / g.d_theta);
+}
+
+/// The Δt (s) for the next step from the state s, the current dt (returned unchanged unless it must move).
+/// A user's time.dt (p.dt > 0) is replaced only when its CFL number passes 0.95·kNsCflLimit. Magnus's own
+/// Δt: before `follow` (the impulsive start) rebuilt when the CFL number passes min(1.25·cfl, 0.95·limit);
+/// after, whenever it leaves ±20% of the target cfl (back to the target). In both, never a step above
+/// 0.99·kNsCflLimit: past it Δt drops to min(cfl, 0.95·limit) (CFL 0.8, the limit, runs at 0.76 then).
+double next_time_step(const NsParams& p, const PolarGrid& g, const NsState& s, double dt, bool follow) {
+  const double rate = step_rate(p, g, s), cfl = rate * dt;
+  if (p.dt > 0.0) return cfl > 0.95 * kNsCflLimit ? cfl_time_step(p, g, s.psi, p.cfl) : dt;
+  double dt_new = dt;
+  if (follow) {
+    if (cfl > 1.2 * p.cfl || cfl < 0.8 * p.cfl) dt_new = rate > 0.0 ? p.cfl / rate : dt;
+  } else if (cfl > std::min(1.25 * p.cfl, 0.95 * kNsCflLimit)) {
+    dt_new = cfl_time_step(p, g, s.psi, p.cfl);
+  }
+  if (rate * dt_new > 0.99 * kNsCflLimit) dt_new = std::min(p.cfl, 0.95 * kNsCflLimit) / rate;
+  return dt_new;
+}
+
 /// The field f of grid `from` on grid `to` (same body), bilinear in (ξ, θ), periodic in θ; rings beyond
 /// from's R take its outer ring.
 std::vector<double> interpolate(const PolarGrid& from, const std::vector<double>& f, const PolarGrid& to) {
@@ -212,26 +237,16 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
                        : p.U > 0.0        ? (g.outer_radius() - p.a) / U_ref + 10.0 * t_conv
                                           : 10.0 * t_conv;
   // Δt: the CFL floor of cfl_time_step covers the impulsive start; after 2 D/U_ref (or at once after a warm
-  // start) Δt follows the measured CFL number, within ±20% of the target before the operator is rebuilt.
+  // start) Δt follows the measured CFL number (next_time_step), checked before every step when magnus
+  // chose Δt (every 10 steps for a time.dt of the user's, which advance() refuses beyond the limit).
+  const bool own_dt = !(p.dt > 0.0);
   const double t_floor_off = res.t_fine > 0.0 ? cur.t : t_start + 2.0 * t_conv;
   res.message = "reached t_end";
   try {
     while (go_on && cur.t < o.t_end - 1e-12 * o.t_end) {
-      if (res.steps % 10 == 0) {
-        const double cfl = cfl_number(g, cur.psi, dt, p.advection_order, p.advection_order_xi);
-        bool rebuild = cfl > 0.95 * kNsCflLimit;
-        double dt_new = cfl_time_step(p, g, cur.psi, p.cfl);
-        if (p.dt <= 0.0) {
-          if (cur.t >= t_floor_off) {
-            if (cfl > 1.2 * p.cfl || cfl < 0.8 * p.cfl) {
-              rebuild = true;
-              dt_new = cfl > 0.0 ? dt * p.cfl / cfl : dt_new;
-            }
-          } else if (cfl > std::min(1.25 * p.cfl, 0.95 * kNsCflLimit)) {
-            rebuild = true;
-          }
-        }
-        if (rebuild) {
+      if (own_dt || res.steps % 10 == 0) {
+        const double dt_new = next_time_step(p, g, cur, dt, cur.t >= t_floor_off);
+        if (dt_new != dt) {
           dt = dt_new;
           op = std::make_unique<NsOperator>(p, dt);
         }
