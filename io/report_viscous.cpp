@@ -107,7 +107,10 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
                     fmt_opt(v.last.C_D_friction, "{:.4f}")),
         "");
     row("St = fD/U",
-        v.strouhal ? fmt_opt(v.strouhal, "{:.5f}") : (v.steady ? "steady (no shedding)" : "no period found"),
+        v.strouhal   ? fmt_opt(v.strouhal, "{:.5f}")
+        : v.steady   ? "steady (no shedding)"
+        : v.periodic ? "undefined (the period is not confirmed: see stopped)"
+                     : "no period found",
         "— (no wake)");
     row("lift", fmt::format("{} N/m {}, across the flow", num(v.lift_mean, "{:.6g}"), kind),
         fmt::format("{} N/m (−ρUΓ)", num(r.forces.lift_kutta_joukowski, "{:.6g}")));

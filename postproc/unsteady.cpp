@@ -6,77 +6,22 @@
 #include <memory>
 #include <stdexcept>
 
+#include "postproc/periodic.hpp"
+
 namespace magnus {
 
 namespace {
 
-struct Window {
-  double t0 = 0.0, t1 = 0.0, C_L = 0.0, C_D = 0.0, C_M = 0.0, M = 0.0, amp_L = 0.0, amp_D = 0.0;
-};
-
-/// Means over exactly [t0, t1] of the piecewise-linear history (t0, t1 lie within a sample of b and e:
-/// interpolated peak times, so the window's ends do not jitter with the sampling) and amplitudes.
-Window window(const std::vector<ForceSample>& h, size_t b, size_t e, double t0, double t1) {
-  Window w;
-  w.t0 = t0;
-  w.t1 = t1;
-  double T = 0.0, lo_L = h[b].C_L, hi_L = h[b].C_L, lo_D = h[b].C_D, hi_D = h[b].C_D;
-  const size_t q0 = b > 0 ? b - 1 : 0, q1 = std::min(e + 1, h.size() - 1);
-  for (size_t q = q0; q < q1; ++q) {
-    const double ta = h[q].t, tb = h[q + 1].t;
-    const double u0 = std::max(ta, t0), u1 = std::min(tb, t1);
-    if (!(u1 > u0) || !(tb > ta)) continue;
-    auto at = [&](double u, double ForceSample::*f) {
-      const double x = (u - ta) / (tb - ta);
-      return (1.0 - x) * (h[q].*f) + x * (h[q + 1].*f);
-    };
-    const double du = u1 - u0;
-    T += du;
-    w.C_L += 0.5 * du * (at(u0, &ForceSample::C_L) + at(u1, &ForceSample::C_L));
-    w.C_D += 0.5 * du * (at(u0, &ForceSample::C_D) + at(u1, &ForceSample::C_D));
-    w.C_M += 0.5 * du * (at(u0, &ForceSample::C_M) + at(u1, &ForceSample::C_M));
-    w.M += 0.5 * du * (at(u0, &ForceSample::M) + at(u1, &ForceSample::M));
-  }
-  for (size_t q = b; q <= e; ++q) {
-    lo_L = std::min(lo_L, h[q].C_L), hi_L = std::max(hi_L, h[q].C_L);
-    lo_D = std::min(lo_D, h[q].C_D), hi_D = std::max(hi_D, h[q].C_D);
-  }
-  if (T > 0.0) w.C_L /= T, w.C_D /= T, w.C_M /= T, w.M /= T;
-  w.amp_L = 0.5 * (hi_L - lo_L);
-  w.amp_D = 0.5 * (hi_D - lo_D);
-  return w;
-}
-
-/// Whole periods between successive maxima of C_L, oldest first (at most `last` of them), using only the
-/// samples from index `first` on.
-std::vector<Window> periods(const std::vector<ForceSample>& h, size_t last, size_t first = 0) {
-  std::vector<size_t> peaks;
-  std::vector<double> t_peak;
-  if (h.size() < 3) return {};
-  for (size_t m = h.size() - 2; m >= first + 1 && peaks.size() < last + 1; --m) {
-    if (!(h[m].C_L > h[m - 1].C_L && h[m].C_L >= h[m + 1].C_L)) continue;
-    // Parabola through the three samples (uniform Δt near a peak): its vertex times the maximum.
-    const double ym = h[m - 1].C_L, y0 = h[m].C_L, yp = h[m + 1].C_L, d = ym - 2.0 * y0 + yp;
-    const double s = d != 0.0 ? 0.5 * (ym - yp) / d : 0.0;
-    peaks.push_back(m);
-    t_peak.push_back(h[m].t + s * (h[m + 1].t - h[m].t));
-  }
-  std::vector<Window> out;
-  for (size_t q = peaks.size(); q-- > 1;) {
-    Window w = window(h, peaks[q], peaks[q - 1], t_peak[q], t_peak[q - 1]);
-    if (w.amp_L > 1e-5) out.push_back(w);  // a steady flow's round-off wiggles are no period
-  }
-  return out;
-}
-
 bool analyse_periodic_from(const std::vector<ForceSample>& h, size_t first, double D, double U,
                            UnsteadyResult& out) {
   if (h.size() < first + 5 || !(U > 0.0)) return false;
-  const std::vector<Window> w = periods(h, 1, first);
+  const std::vector<PeriodWindow> w = lift_periods(h, 8, first);
   if (w.empty()) return false;
-  const Window& p = w.back();
-  out.period = p.t1 - p.t0;
-  out.St = out.period > 0.0 ? D / (U * out.period) : 0.0;
+  const PeriodWindow& p = w.back();
+  out.period = p.length();
+  out.period_note = period_disagreement(h, w);
+  out.period_confirmed = out.period_note.empty();
+  out.St = out.period > 0.0 && out.period_confirmed ? D / (U * out.period) : 0.0;
   out.C_L_mean = p.C_L, out.C_D_mean = p.C_D, out.C_M_mean = p.C_M, out.M_mean = p.M;
   out.C_L_amplitude = p.amp_L, out.C_D_amplitude = p.amp_D;
   return true;
@@ -277,7 +222,8 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
       }
       // Periodic: the last periods agree (full-grid periods only).
       if (!res.has_coefficients) continue;
-      const std::vector<Window> w = periods(res.history, size_t(o.converged_periods) + 1, first_fine);
+      const std::vector<PeriodWindow> w =
+          lift_periods(res.history, size_t(o.converged_periods) + 1, first_fine);
       if (w.size() >= size_t(o.converged_periods) + 1) {
         bool same = true;
         for (size_t q = 1; q < w.size(); ++q) {
@@ -285,7 +231,8 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
           same = same && std::fabs(w[q].C_L - w[q - 1].C_L) < o.mean_tol &&
                  std::fabs(w[q].C_D - w[q - 1].C_D) < o.mean_tol && std::fabs(T1 - T0) < o.mean_tol * T1;
         }
-        if (same) {
+        // …and the spectrum of the last periods peaks at the same frequency (a false period never stops it).
+        if (same && period_disagreement(res.history, lift_periods(res.history, 8, first_fine)).empty()) {
           res.converged = true;
           res.message = "periodic means converged";
           break;
@@ -303,6 +250,10 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
   if (!warm_note.empty()) res.message += "; " + warm_note;
   if (!dt_note.empty()) res.message += "; " + dt_note;
   res.periodic = !res.steady && analyse_periodic_from(res.history, first_fine, D, p.U, res);
+  if (res.periodic && !res.period_confirmed) {
+    res.converged = false;
+    res.message += "; " + res.period_note;
+  }
   if (!res.periodic) {
     const ForceSample& last = res.history.back();
     res.C_L_mean = last.C_L, res.C_D_mean = last.C_D, res.C_M_mean = last.C_M, res.M_mean = last.M;

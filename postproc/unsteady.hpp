@@ -1,7 +1,8 @@
 #pragma once
 // The run driver of the viscous model: time steps from a start state to t_end, or until the flow is
 // steady or its periodic means have converged; keeps the force history; finds the shedding period
-// (successive maxima of C_L), the means and amplitudes over the last whole period, and St = f·D/U.
+// (upward mean crossings of C_L, checked against its spectrum: postproc/periodic.hpp), the means and
+// amplitudes over the last whole period, and St = f·D/U.
 #include <functional>
 #include <string>
 #include <vector>
@@ -49,17 +50,20 @@ ForceSample force_sample(double t, const ViscousForces& f);
 
 /// What a run reached.
 struct UnsteadyResult {
-  NsState state;                                          ///< the last state
-  std::vector<ForceSample> history;                       ///< one sample per step
-  bool steady = false;                                    ///< forces stopped changing
-  bool periodic = false;                                  ///< at least two periods found
-  bool converged = false;                                 ///< steady, or periodic means converged
-  bool ok = true;                                         ///< false: stopped on an error (see message)
-  bool interrupted = false;                               ///< on_step asked to stop (a partial result)
-  std::string message;                                    ///< why it stopped; a clamped Δt; an error
-  std::string error;                                      ///< the error alone when !ok (else "")
-  double period = 0.0;                                    ///< shedding period (C_L maxima), s
-  double St = 0.0;                                        ///< Strouhal number D/(U·period)
+  NsState state;                     ///< the last state
+  std::vector<ForceSample> history;  ///< one sample per step
+  bool steady = false;               ///< forces stopped changing
+  bool periodic = false;             ///< at least two periods found
+  bool converged = false;            ///< steady, or periodic means converged
+  bool ok = true;                    ///< false: stopped on an error (see message)
+  bool interrupted = false;          ///< on_step asked to stop (a partial result)
+  std::string message;               ///< why it stopped; a clamped Δt; an error
+  std::string error;                 ///< the error alone when !ok (else "")
+  double period = 0.0;               ///< shedding period (C_L mean crossings), s
+  double St = 0.0;                   ///< Strouhal number D/(U·period); 0: undefined
+  /// The crossings' period agrees with the spectrum's peak (else St = 0, not converged, period_note why).
+  bool period_confirmed = true;
+  std::string period_note;  ///< why St is undefined ("" when the period is confirmed)
   double C_L_mean = 0.0, C_D_mean = 0.0, C_M_mean = 0.0;  ///< over the last period (or last sample)
   double C_L_amplitude = 0.0, C_D_amplitude = 0.0;        ///< (max − min)/2 over the last period
   double dt = 0.0;                                        ///< the last time step, s
@@ -87,8 +91,9 @@ double choose_time_step(const NsParams& p, const PolarGrid& g, const NsState& s,
 UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState start,
                             std::vector<ForceSample> history = {});
 
-/// Period, means and amplitudes of a history's last whole period of C_L (maxima with parabolic timing).
-/// Returns false when fewer than two maxima are found, or U ≤ 0 (no coefficients). D and U give St.
+/// Period, means and amplitudes of a history's last whole period of C_L (between upward mean crossings),
+/// the period checked against the spectrum (period_confirmed, period_note). Returns false when fewer than
+/// two crossings are found, or U ≤ 0 (no coefficients). D and U give St.
 bool analyse_periodic(const std::vector<ForceSample>& h, double D, double U, UnsteadyResult& out);
 
 }  // namespace magnus

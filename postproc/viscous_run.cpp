@@ -135,7 +135,7 @@ FlowResult viscous_result(const Case& c, const NsParams& p, const UnsteadyResult
     v.cl_mean = run.C_L_mean, v.cd_mean = run.C_D_mean, v.cm_mean = run.C_M_mean;
     if (run.periodic) {
       v.cl_amplitude = run.C_L_amplitude, v.cd_amplitude = run.C_D_amplitude;
-      v.strouhal = run.St, v.period = run.period;
+      if (run.period_confirmed) v.strouhal = run.St, v.period = run.period;  // else undefined (status why)
     }
     v.lift_mean = run.C_L_mean * q * D, v.drag_mean = run.C_D_mean * q * D;
     v.torque_mean = run.C_M_mean * q * D * D;
