@@ -84,6 +84,7 @@ struct FileData {
   bool has(Models m) const { return m == Models::all || (m == Models::viscous) == viscous; }
   std::vector<Param> params;                  // as params()
   std::vector<std::optional<double>> values;  // as quantities()
+  std::vector<bool> last_step;                // as quantities(): a navier-stokes value of the last step
 };
 
 FileData read(const std::string& path, const std::vector<const AttrSpec*>& ps,
@@ -107,11 +108,18 @@ FileData read(const std::string& path, const std::vector<const AttrSpec*>& ps,
     }
     d.params.push_back(v);
   }
+  // A navier-stokes file's lift, drag, C_L, C_D are compared by their time means (means with means): the
+  // last step's values are one instant of a shedding wake.
   auto attr = [&](const AttrSpec* a) -> std::optional<double> {
+    if (const AttrSpec* mean = d.viscous ? viscous_mean_of(a->group, a->name) : nullptr) a = mean;
     if (!f.has_attr(a->group, a->name)) return std::nullopt;
     return f.attr_double(a->group, a->name);
   };
+  auto last = [&](const AttrSpec* a) {
+    return a && d.viscous && viscous_last_step(a->group, a->name) && !viscous_mean_of(a->group, a->name);
+  };
   for (const Quantity& q : qs) {
+    d.last_step.push_back(last(q.attr) || last(q.num) || last(q.den));
     if (q.attr) {
       d.values.push_back(attr(q.attr));
       continue;
@@ -136,15 +144,18 @@ Comparison compare_results(const std::vector<std::string>& paths) {
   {
     std::vector<Quantity> kept;
     std::vector<std::vector<std::optional<double>>> values(files.size());
+    std::vector<std::vector<bool>> last(files.size());
     for (size_t q = 0; q < kQuantities.size(); ++q) {
       if (std::none_of(files.begin(), files.end(),
                        [&](const FileData& f) { return f.has(kQuantities[q].models()); }))
         continue;
       kept.push_back(kQuantities[q]);
-      for (size_t i = 0; i < files.size(); ++i) values[i].push_back(files[i].values[q]);
+      for (size_t i = 0; i < files.size(); ++i)
+        values[i].push_back(files[i].values[q]), last[i].push_back(files[i].last_step[q]);
     }
     kQuantities = std::move(kept);
-    for (size_t i = 0; i < files.size(); ++i) files[i].values = std::move(values[i]);
+    for (size_t i = 0; i < files.size(); ++i)
+      files[i].values = std::move(values[i]), files[i].last_step = std::move(last[i]);
   }
 
   Comparison out;
@@ -174,7 +185,8 @@ Comparison compare_results(const std::vector<std::string>& paths) {
     std::vector<std::string> cells;
     for (const auto& f : files)
       cells.push_back(!f.has(kQuantities[q].models()) ? kNotApplicable
-                      : f.values[q] ? figure(*f.values[q], kQuantities[q].spec.c_str())
+                      : f.values[q] ? figure(*f.values[q], kQuantities[q].spec.c_str()) +
+                                          (f.last_step[q] ? " (last step)" : "")
                                     : "undefined");
     value_rows.push_back({kQuantities[q].label, cells});
   }
@@ -211,7 +223,8 @@ Comparison compare_results(const std::vector<std::string>& paths) {
   }
   const bool any_viscous =
       std::any_of(files.begin(), files.end(), [](const FileData& f) { return f.viscous; });
-  t += any_viscous ? "lift, drag, errors; viscous beside ideal (— : not of that file's model)\n"
+  t += any_viscous ? "lift, drag, errors; viscous beside ideal (— : not of that file's model); navier-stokes "
+                     "lift, drag, C_L, C_D: time means\n"
                    : "lift, drag, errors\n";
   for (const auto& [label, cells] : value_rows) row(label, cells);
 
@@ -221,6 +234,9 @@ Comparison compare_results(const std::vector<std::string>& paths) {
   for (size_t k : differ)
     if (k != 0) c += std::string(",") + kParams[k]->name;
   for (const auto& q : kQuantities) c += std::string(",") + q.csv;
+  // With navier-stokes files: the columns that hold a file's last-step values (space-separated; the rest of
+  // its lift, drag, C_L, C_D columns are time means).
+  if (any_viscous) c += ",last_step";
   c += "\n";
   for (const auto& f : files) {
     c += csv_field(f.path) + "," + csv_field(f.params[0].text.value_or(""));
@@ -231,6 +247,12 @@ Comparison compare_results(const std::vector<std::string>& paths) {
                              : f.params[k].number ? csv_number(*f.params[k].number)
                                                   : "");
     for (const auto& v : f.values) c += "," + (v ? csv_number(*v) : std::string());
+    if (any_viscous) {
+      std::string names;
+      for (size_t q = 0; q < kQuantities.size(); ++q)
+        if (f.last_step[q] && f.values[q]) names += (names.empty() ? "" : " ") + kQuantities[q].csv;
+      c += "," + csv_field(names);
+    }
     c += "\n";
   }
   return out;

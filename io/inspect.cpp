@@ -85,7 +85,10 @@ std::string group_text(const ResultFile& f, const std::string& group, const char
     if (group != a.group || group == "/" || !belongs(a.models, f)) continue;
     shown.insert(a.name);
     if (f.has_attr(group, a.name))
-      s += line(a.name, value_text(f, group, a.name), a.units);
+      s += line(a.name,
+                value_text(f, group, a.name) +
+                    (is_viscous(f) && viscous_last_step(group, a.name) ? " (last step)" : ""),
+                a.units);
     else if (strict && !undefined.count(a.name))  // version 2 lists every value it omits
       throw std::runtime_error(
           fmt::format("'{}' is damaged or incomplete: {}@{} is missing", f.path(), group, a.name));

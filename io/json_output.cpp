@@ -211,6 +211,8 @@ Json result_json(const FlowResult& r, const std::string& output_path) {
       j[g][name] = std::move(value);
   }
   if (r.viscous) {
+    for (auto it = j["forces"].begin(); it != j["forces"].end(); ++it)  // one instant, not a time mean
+      if (viscous_last_step("/forces", it.key())) it.value()["at"] = "last step";
     j["partial"] = r.viscous->partial;  // a yes/no, not a number
     j["derived"] = viscous_derived(r);
     j["separation"] = quantity(r.viscous->separation, "rad");

@@ -81,6 +81,9 @@ Json flow_groups(const ResultFile& f) {
       if (name.rfind("/steady_study/", 0) == 0) levels[name.substr(14)] = quantity(f.dataset(name), dataset_units(name));
     j["steady_study"]["levels"] = std::move(levels);
   }
+  if (is_viscous(f) && j.contains("forces"))  // one instant of the run, not a time mean
+    for (auto it = j["forces"].begin(); it != j["forces"].end(); ++it)
+      if (viscous_last_step("/forces", it.key()) && it.value().is_object()) it.value()["at"] = "last step";
   if (!is_viscous(f) && j.contains("forces")) {
     auto value = [&](const char* k) -> std::optional<double> {
       const Json& q = j["forces"].contains(k) ? j["forces"][k]["value"] : Json(nullptr);

@@ -256,6 +256,23 @@ const AttrSpec* find_attribute(const std::string& group, const std::string& name
   return nullptr;
 }
 
+bool viscous_last_step(const std::string& group, const std::string& name) {
+  static const char* const kLast[] = {"lift",        "drag",        "cl",          "cd",         "delta_p_top_bottom",
+                                      "cl_pressure", "cl_friction", "cd_pressure", "cd_friction", "cm",
+                                      "torque",      "spin_power"};
+  if (group != "/forces") return false;
+  for (const char* k : kLast)
+    if (name == k) return true;
+  return false;
+}
+
+const AttrSpec* viscous_mean_of(const std::string& group, const std::string& name) {
+  if (group != "/forces") return nullptr;
+  for (const char* k : {"cl", "cd", "lift", "drag"})
+    if (name == k) return find_attribute(group, name + "_mean");
+  return nullptr;
+}
+
 std::string units_attribute(const std::string& name) { return name + "_units"; }
 
 }  // namespace magnus

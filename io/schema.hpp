@@ -83,6 +83,12 @@ const std::vector<DatasetSpec>& result_datasets();
 std::vector<const DatasetSpec*> field_datasets();
 /// The attribute group/name, or nullptr.
 const AttrSpec* find_attribute(const std::string& group, const std::string& name);
+/// True for the /forces attributes a navier-stokes result holds at its last time step, not as a time mean
+/// (lift, drag, cl, cd, delta_p_top_bottom and the pressure/friction parts, cm, torque, spin_power).
+bool viscous_last_step(const std::string& group, const std::string& name);
+/// The time-mean attribute that stands for a last-step one in a navier-stokes comparison (cl → cl_mean,
+/// cd → cd_mean, lift → lift_mean, drag → drag_mean), or nullptr.
+const AttrSpec* viscous_mean_of(const std::string& group, const std::string& name);
 /// The dataset at path, or nullptr. Knows the mesh views (/mesh/...) too.
 const DatasetSpec* find_dataset(const std::string& path);
 /// The units of any dataset magnus writes (stored, or the /mesh views of the .xmf); "" if unknown.

@@ -119,3 +119,43 @@ TEST_CASE("compare: rows of a model no file has are left out", "[io][compare][vi
   CHECK(table_row(vis.table, "C_L mean (viscous)").size() == 2);
   CHECK(table_row(vis.table, "C_L ideal (potential)").size() == 2);
 }
+
+TEST_CASE("compare: a navier-stokes file's lift, drag, C_L, C_D are its means; last-step values say so",
+          "[io][compare][viscous]") {
+  const std::string dir = test::temp_dir("compare-ns-means");
+  Case c = test::make_case(1.0, 32);
+  write_result(run_case(c), dir + "/ideal.h5");
+  FlowResult ns = test::viscous_result_by_hand(1.0, 32, 16, 0);
+  const ViscousPart& v = *ns.viscous;
+  // The last step is an instant of the shedding cycle, away from the mean.
+  ns.forces.cl = v.last.C_L, ns.forces.cd = v.last.C_D;
+  ns.forces.lift = 0.9 * v.lift_mean, ns.forces.drag = 1.2 * v.drag_mean;
+  ns.forces.cl_kutta_joukowski = *v.cl_ideal;
+  ns.forces.delta_p_top_bottom = 1.25;
+  REQUIRE(std::fabs(*ns.forces.cl - *v.cl_mean) > 0.01);
+  write_result(ns, dir + "/viscous.h5");
+  const Comparison m = compare_results({dir + "/ideal.h5", dir + "/viscous.h5"});
+  CAPTURE(m.table);
+  CHECK(table_row(m.table, "C_L numeric")[1] == fmt::format("{:.10g}", *v.cl_mean));
+  CHECK(table_row(m.table, "C_D")[1] == fmt::format("{:.3e}", *v.cd_mean));
+  CHECK(table_row(m.table, "lift F_y (N/m)")[1] == fmt::format("{:.10g}", v.lift_mean));
+  CHECK(table_row(m.table, "drag F_x (N/m)")[1] == fmt::format("{:.3g}", v.drag_mean));
+  CHECK(table_row(m.table, "C_L numeric/K–J − 1")[1] ==
+        fmt::format("{:.3e}", *v.cl_mean / *v.cl_ideal - 1.0));
+  // ΔP top−bottom is the last step's surface pressure: marked in the table and in the CSV.
+  CHECK(table_row(m.table, "ΔP top−bottom (Pa)") ==
+        std::vector<std::string>{table_row(m.table, "ΔP top−bottom (Pa)")[0], "1.25", "(last", "step)"});
+  std::istringstream csv(m.csv);
+  std::string line;
+  std::getline(csv, line);
+  const auto head = split(line);
+  REQUIRE(head.back() == "last_step");
+  std::getline(csv, line);
+  CHECK(split(line).back().empty());  // the potential file: no last-step values
+  std::getline(csv, line);
+  const auto row = split(line);
+  CHECK(row.back() == "delta_p_top_bottom_Pa");
+  const size_t cl = size_t(std::find(head.begin(), head.end(), "cl") - head.begin());
+  REQUIRE(cl < row.size());
+  CHECK(std::stod(row[cl]) == *v.cl_mean);
+}
