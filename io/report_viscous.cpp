@@ -138,9 +138,12 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
   s += scene_lines(r);  // direction, a rotor sail's course, the span's totals
   std::string sep;
   for (double th : v.separation) sep += (sep.empty() ? "" : ", ") + fmt::format("{:.2f}°", th * 180.0 / M_PI);
-  line("separation", sep.empty() ? "none (τ_w keeps its sign)" : "τ_w = 0 at θ = " + sep + " (last step)");
+  line("separation", sep.empty() ? "none (no point where the wall flow leaves the wall)"
+                                 : "θ = " + sep + " (last step; τ_w changes sign from + to −)");
   if (v.recirculation_length)
-    line("recirculation", fmt::format("L/D = {:.4f} (steady)", *v.recirculation_length));
+    line("recirculation", *v.recirculation_length > 0.0
+                              ? fmt::format("L/D = {:.4f} (steady)", *v.recirculation_length)
+                              : std::string("none (no bubble behind the body; steady)"));
   s += steady_study_text(v);
   if (v.eigenvalue_real && v.eigenvalue_imag)
     line("stability", fmt::format("steady state's leading eigenvalue λ·{} = {:+.5f} {:+.5f}i ({}; St {})",

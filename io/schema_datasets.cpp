@@ -192,7 +192,8 @@ std::vector<DatasetSpec> make_datasets() {
                       true)),
       only(Models::viscous,
            {"/separation/theta", "rad",
-            "angles where the wall shear stress changes sign (separation, reattachment)", DataShape::points,
+            "separation points: angles where the wall shear stress changes sign from + to − (the wall flow "
+             "leaves the wall); stagnation, reattachment and symmetry points are not listed", DataShape::points,
             [](const FlowResult& r) { return r.viscous ? r.viscous->separation : std::vector<double>(); },
             [](FlowResult& r, std::vector<double> v) { vis(r).separation = std::move(v); }}),
       history("t", "s", "time of each step", &ForceSample::t),

@@ -1,5 +1,6 @@
 #include "postproc/viscous_forces.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 
@@ -73,21 +74,49 @@ ViscousForces viscous_forces(const PolarGrid& g, const NsParams& p, double rho, 
   return f;
 }
 
-std::vector<double> separation_angles(const ViscousSurface& surf) {
-  std::vector<double> out;
+namespace {
+
+/// τ_w is antisymmetric about node j (a zero by mirror symmetry, as at the rear point of a flow without
+/// spin): |τ(j + k) + τ(j − k)| ≤ 1e-9·max|τ| for every k.
+bool antisymmetric_about(const std::vector<double>& tau, size_t j) {
+  const size_t n = tau.size();
+  double big = 0.0, worst = 0.0;
+  for (double t : tau) big = std::max(big, std::fabs(t));
+  for (size_t k = 1; k < n; ++k) worst = std::max(worst, std::fabs(tau[(j + k) % n] + tau[(j + n - k) % n]));
+  return worst <= 1e-9 * big;
+}
+
+}  // namespace
+
+WallShearZeros wall_shear_zeros(const ViscousSurface& surf) {
+  WallShearZeros out;
   const size_t n = surf.tau_w.size();
-  if (n < 2) return out;
+  if (n < 3) return out;
+  const std::vector<double>& tau = surf.tau_w;
   const double d_theta = 2.0 * M_PI / double(n);
   for (size_t j = 0; j < n; ++j) {
-    const double t0 = surf.tau_w[j], t1 = surf.tau_w[(j + 1) % n];
-    if (t0 == 0.0) {
-      out.push_back(surf.theta[j]);
+    const double tm = tau[(j + n - 1) % n], t0 = tau[j], t1 = tau[(j + 1) % n];
+    double th = 0.0;
+    bool leaves = false;  // τ_w from + to − with θ: the wall flow on both sides runs into the point
+    if (t0 == 0.0 && tm * t1 < 0.0) {
+      th = surf.theta[j], leaves = tm > 0.0;
+      if (leaves && antisymmetric_about(tau, j)) {  // a rear stagnation point by symmetry
+        out.attachment.push_back(th);
+        continue;
+      }
     } else if (t0 * t1 < 0.0) {
-      const double th = surf.theta[j] + d_theta * t0 / (t0 - t1);
-      out.push_back(th >= 2.0 * M_PI ? th - 2.0 * M_PI : th);
+      th = surf.theta[j] + d_theta * t0 / (t0 - t1), leaves = t0 > 0.0;
+      if (th >= 2.0 * M_PI) th -= 2.0 * M_PI;
+    } else {
+      continue;
     }
+    (leaves ? out.separation : out.attachment).push_back(th);
   }
   return out;
+}
+
+std::vector<double> separation_angles(const ViscousSurface& surf) {
+  return wall_shear_zeros(surf).separation;
 }
 
 double recirculation_length(const PolarGrid& g, const NsState& s) {

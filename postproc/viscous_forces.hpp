@@ -39,7 +39,20 @@ ViscousSurface viscous_surface(const PolarGrid& g, const NsParams& p, double rho
 /// Forces, torque and coefficients of a state (the formulas above).
 ViscousForces viscous_forces(const PolarGrid& g, const NsParams& p, double rho, const NsState& s);
 
-/// Separation (and reattachment) points: θ in [0, 2π) where τ_w changes sign, linear between nodes, rad.
+/// The zeros of τ_w (θ in [0, 2π), rad, linear between nodes), by the wall flow's direction (τ_w > 0: the
+/// fluid next to the wall moves towards +θ relative to it).
+struct WallShearZeros {
+  /// τ_w goes from + to − with θ: the wall flow on both sides runs into the point and leaves the wall
+  /// (separation, with reverse flow downstream of it).
+  std::vector<double> separation;
+  /// τ_w goes from − to +: the flow comes onto the wall and spreads both ways (front stagnation point,
+  /// reattachment); also a rear stagnation point where τ_w is zero by mirror symmetry (no spin, no bubble).
+  std::vector<double> attachment;
+};
+/// The zeros of the surface's τ_w, sorted into separation and attachment points.
+WallShearZeros wall_shear_zeros(const ViscousSurface& surf);
+
+/// Separation points only (wall_shear_zeros(surf).separation), rad.
 std::vector<double> separation_angles(const ViscousSurface& surf);
 
 /// Recirculation length behind the body along θ = 0 (the +x axis, downstream): the distance from the rear

@@ -163,3 +163,23 @@ TEST_CASE("navier-stokes summary at U = 0: times in D/(a|ω|), no Strouhal numbe
   CHECK(i.out.find("D/U)") == std::string::npos);
   CHECK(i.out.find(" D/(a|ω|))\n") != std::string::npos);
 }
+
+TEST_CASE("navier-stokes summary: an attached steady flow has no separation and no bubble",
+          "[app][ns][report]") {
+  const std::string dir = test::temp_dir("ns-report-attached");
+  // Re 4, α = 0: τ_w = 0 only at the front stagnation point and, by symmetry, at the rear point.
+  const auto o = run(dir, {"flow.reynolds=4", "cylinder.spin_ratio=0", "time.mode=steady"});
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  CHECK(test::line_of(o.out, "separation") ==
+        "separation     none (no point where the wall flow leaves the wall)");
+  CHECK(test::line_of(o.out, "recirculation") == "recirculation  none (no bubble behind the body; steady)");
+  // Re 40: a bubble; its separation points are listed, not the front and rear points.
+  const auto b = run(dir, {"flow.reynolds=40", "cylinder.spin_ratio=0", "time.mode=steady"}, "b.h5");
+  REQUIRE(b.status == 0);
+  const std::string sep = test::line_of(b.out, "separation");
+  CAPTURE(sep);
+  CHECK(std::regex_match(
+      sep, std::regex("separation     θ = 5\\d\\.\\d\\d°, 30\\d\\.\\d\\d° \\(last step; τ_w .*")));
+  CHECK(test::line_of(b.out, "recirculation").find("L/D = ") != std::string::npos);
+}

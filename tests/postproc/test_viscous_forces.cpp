@@ -39,16 +39,44 @@ TEST_CASE("[ns] forces: wall pressure is the theta-integral of mu zeta_xi, separ
   const ViscousSurface surf = viscous_surface(g, p, rho, s);
   for (int j = 0; j < g.n_theta; ++j)
     CHECK(surf.pressure[j] == Approx(mu * std::sin(3 * g.theta[j]) / 3).margin(1e-14));
-  const std::vector<double> sep = separation_angles(surf);
-  REQUIRE(sep.size() == 2);
-  CHECK(sep[0] == Approx(M_PI / 3).margin(2e-3));
-  CHECK(sep[1] == Approx(5 * M_PI / 3).margin(2e-3));
+  // τ_w goes from + to − at 60° (the wall flow leaves: separation), from − to + at 300° (attachment).
+  const WallShearZeros zeros = wall_shear_zeros(surf);
+  REQUIRE(zeros.separation.size() == 1);
+  REQUIRE(zeros.attachment.size() == 1);
+  CHECK(zeros.separation[0] == Approx(M_PI / 3).margin(2e-3));
+  CHECK(zeros.attachment[0] == Approx(5 * M_PI / 3).margin(2e-3));
+  CHECK(separation_angles(surf) == zeros.separation);
   // F_p = −∮ p n̂ a dθ = 0 for p ∝ sin3θ; the friction part ∮ τ_w θ̂ a dθ of τ_w = μ(cosθ − 0.5): F_y = πμa.
   const ViscousForces f = viscous_forces(g, p, rho, s);
   CHECK(std::fabs(f.F_x_pressure) < 1e-15);
   CHECK(std::fabs(f.F_y_pressure) < 1e-15);
   CHECK(f.F_y_friction == Approx(M_PI * mu * p.a).epsilon(1e-12));
   CHECK(std::fabs(f.F_x_friction) < 1e-15);
+}
+
+TEST_CASE("[ns] forces: stagnation and symmetry points are no separation points", "[ns]") {
+  // Without spin, τ_w is odd in θ. A steady bubble: τ_w = −sinθ + 0.843 sin2θ has zeros at 0 (the rear point,
+  // where the reverse flow comes onto the wall), ±53.6° (separation) and 180° (front stagnation point).
+  // Attached: τ_w = −sinθ, zeros at 180° (front) and 0 (rear, zero by symmetry): no separation at all.
+  ViscousSurface surf;
+  const int n = 128;
+  for (int j = 0; j < n; ++j) surf.theta.push_back(2.0 * M_PI * j / n);
+  for (const double c : {0.843, 0.0}) {
+    surf.tau_w.clear();
+    for (double th : surf.theta) surf.tau_w.push_back(-std::sin(th) + c * std::sin(2.0 * th));
+    const WallShearZeros z = wall_shear_zeros(surf);
+    REQUIRE(z.attachment.size() == 2);
+    CHECK(z.attachment[0] == 0.0);
+    CHECK(z.attachment[1] == Approx(M_PI));
+    if (c > 0.0) {
+      const double th_s = std::acos(0.5 / c);  // 53.6°
+      REQUIRE(z.separation.size() == 2);
+      CHECK(z.separation[0] == Approx(th_s).margin(2e-3));
+      CHECK(z.separation[1] == Approx(2.0 * M_PI - th_s).margin(2e-3));
+    } else {
+      CHECK(z.separation.empty());
+    }
+  }
 }
 
 namespace {
