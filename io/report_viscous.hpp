@@ -18,9 +18,11 @@ constexpr double kReynolds3D = 200.0;
 bool above_laminar_range(double reynolds);
 
 /// Wall cells across D/√(Re(1 + α²)) below which the summary warns. At Re = 100 on R = 100a the mean drag
-/// was off by +1.9% with 6.1 cells (α = 1, square cells n_θ = 192), −0.5% with 7.1 (α = 1, the default
-/// grid), +2.2% with 5.6 (α = 1.5) and +12% with 4.5 (α = 2).
+/// against its grid-converged value (Richardson on 236, 471, 942 rings) was off by +1.2% with 7.1 cells
+/// (α = 1, the default grid), +4.6% with 5.6 (α = 1.5) and +14% with 4.5 (α = 2).
 constexpr double kWallCellsForPercent = 6.0;
+/// Wall cells below which the warning says C_D can be off by more than 10% (+14% with 4.5 cells, α = 2).
+constexpr double kWallCellsForTenPercent = 5.0;
 
 /// Wall cells across D/√(Re(1 + α²)) below which the boundary layer is not resolved at all and the forces
 /// are not meaningful: n_θ = 8 at Re 200, α 6 (0.04 cells) gave C_L of the wrong sign, Re = 1e9 C_D 0.00001.
