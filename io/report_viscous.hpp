@@ -32,6 +32,12 @@ constexpr double kWallCellsResolved = 1.0;
 /// wall moves against the stream): (2a/√(Re(1 + α²)))/(r_1 − r_0). Needs Re > 0 and two rings.
 double wall_cells(const PolarGrid& g, double reynolds, double alpha);
 
+/// R/a below which the summary notes that the outer boundary is close for a wake (St moves by more than 1%,
+/// the mean forces by 1–9% below 20a). At Re 100, α = 1 on the
+/// default grid, against R = 100a: St −0.7% at 50a, −2.7% at 30a, −6% at 20a (C_D −1.8%), −18% at 10a
+/// (C_D −9%); R = 2a and 3a came out steady with C_D 0.80 (the shedding wake: 1.10).
+constexpr double kOuterRadiusForWake = 50.0;
+
 /// The viscous (Oseen) length D/Re reaches beyond the outer radius R: the forces then depend on R.
 bool viscous_length_beyond_grid(const PolarGrid& g, double reynolds);
 

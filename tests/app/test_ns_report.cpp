@@ -189,3 +189,19 @@ TEST_CASE("navier-stokes summary: an attached steady flow has no separation and 
       sep, std::regex("separation     θ = 5\\d\\.\\d\\d°, 30\\d\\.\\d\\d° \\(last step; τ_w .*")));
   CHECK(test::line_of(b.out, "recirculation").find("L/D = ") != std::string::npos);
 }
+
+TEST_CASE("navier-stokes summary: an outer boundary close for a wake is noted with its measured effect",
+          "[app][ns][report]") {
+  const std::string dir = test::temp_dir("ns-report-small-r");
+  // R = 2a gave a steady flow with C_D 0.805 at Re 100, α 1, where the shedding wake has 1.10: noted.
+  const auto o = run(dir, {"domain.outer_radius=2"});
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  CHECK(o.out.find("note           the outer boundary R = 1 D is close for a wake: at Re 100, α = 1, against "
+                   "R = 50 D, St moved by −0.7% at R = 25 D") != std::string::npos);
+  CHECK(o.out.find("flow came out steady (C_D 0.80 against 1.10)") != std::string::npos);
+  // From R = 50a (25 D) on, no note.
+  const auto b = run(dir, {"domain.outer_radius=50"}, "b.h5");
+  REQUIRE(b.status == 0);
+  CHECK(b.out.find("the outer boundary R") == std::string::npos);
+}
