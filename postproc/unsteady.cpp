@@ -182,14 +182,17 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
                        : p.U > 0.0        ? (g.outer_radius() - p.a) / U_ref + 10.0 * t_conv
                                           : 10.0 * t_conv;
   // Δt: the CFL floor of cfl_time_step covers the impulsive start; after 2 D/U_ref (or at once after a warm
-  // start) Δt follows the measured CFL number (next_time_step), checked before every step when magnus
-  // chose Δt (every 10 steps for a time.dt of the user's, which advance() refuses beyond the limit).
+  // start) Δt follows the measured CFL number (next_time_step); when magnus chose Δt, each step also
+  // checks the previous step's rate (a time.dt of the user's is checked every 10 steps and refused by
+  // advance() beyond the limit).
   const bool own_dt = !(p.dt > 0.0);
   const double t_floor_off = res.t_fine > 0.0 ? cur.t : t_start + 2.0 * t_conv;
   res.message = "reached t_end";
   try {
     while (go_on && cur.t < o.t_end - 1e-12 * o.t_end) {
-      if (own_dt || res.steps % 10 == 0) {
+      // Every 10 steps, and whenever the last step's rate (known from the step itself) puts the next one
+      // above 0.95 × the limit: then the exact rate of this state decides (one pass over the grid).
+      if (res.steps % 10 == 0 || (own_dt && cur.rate_prev * dt > 0.95 * kNsCflLimit)) {
         const double dt_new = next_time_step(p, g, cur, dt, cur.t >= t_floor_off);
         if (dt_new != dt) {
           dt = dt_new;

@@ -79,6 +79,9 @@ struct NsState {
   std::vector<double> N_prev;    ///< advection N^{n−1} (empty: first step, AB2 starts with Euler)
   double Gamma_flux_prev = 0.0;  ///< dΓ_R/dt at t^{n−1}, m²/s²
   double dt_prev = 0.0;          ///< Δt of the previous step, s
+  /// The rate r of the state the last step started from (CFL number = r·Δt, as advance() checks it), 1/s;
+  /// 0 before a step. A cheap estimate of this state's rate: the velocity moves little in one step.
+  double rate_prev = 0.0;
 };
 
 /// Wall seconds spent in each part of the time steps (summed over steps; advance() adds to it).

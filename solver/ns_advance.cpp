@@ -139,9 +139,9 @@ void advance(const NsOperator& op, const NsState& old, NsState& next, NsStepTime
   const double cfl =
       p.stokes ? cfl_number(g, old.psi, dt, p.advection_order, p.advection_order_xi) : rate * dt;
   if (!(cfl <= kNsCflLimit))
-    throw std::runtime_error("advance: at t = " + fmt_time(old.t) + " the CFL number is " +
-                             fmt_cfl(cfl) + " > " + fmt_cfl(kNsCflLimit) + ": the time step " +
-                             fmt_time(dt) + " is above the stability limit (reduce dt or the CFL number)");
+    throw std::runtime_error("advance: at t = " + fmt_time(old.t) + " the CFL number is " + fmt_cfl(cfl) +
+                             " > " + fmt_cfl(kNsCflLimit) + ": the time step " + fmt_time(dt) +
+                             " is above the stability limit (reduce dt or the CFL number)");
   auto non_finite = [&](const std::string& where) {
     return std::runtime_error("advance: the flow turned non-finite at t = " + fmt_time(old.t + dt) + " (" +
                               where + "); likely cause: the time step " + fmt_time(dt) +
@@ -227,6 +227,7 @@ void advance(const NsOperator& op, const NsState& old, NsState& next, NsStepTime
   next.t = old.t + dt;
   next.Gamma_flux_prev = flux;
   next.dt_prev = dt;
+  next.rate_prev = dt > 0.0 ? cfl / dt : 0.0;
   if (times) {
     const auto t_end = clock::now();
     auto sec = [](clock::time_point a, clock::time_point c) {
