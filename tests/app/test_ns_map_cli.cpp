@@ -102,7 +102,9 @@ TEST_CASE("navier-stokes map: an unstable point is marched from rest and says wh
   CHECK(a.stable == std::optional<bool>(true));
   CHECK(b.stable == std::optional<bool>(false));
   CHECK(b.source == MapSource::averaged_unstable);
-  CHECK(b.strouhal > 0.05);
+  // The slow shedding of high spin: St 0.0230 from the crossings, 0.0231 from the spectrum of the march's
+  // lift (successive maxima of its faster ripple gave 0.120).
+  CHECK(b.strouhal == Approx(0.0231).epsilon(0.03));
   CHECK(c.stable == std::optional<bool>(false));
   REQUIRE(c.source == MapSource::marched_steady);
   CHECK(std::isnan(c.strouhal));
