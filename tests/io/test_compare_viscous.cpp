@@ -120,7 +120,7 @@ TEST_CASE("compare: rows of a model no file has are left out", "[io][compare][vi
   CHECK(table_row(vis.table, "C_L ideal (potential)").size() == 2);
 }
 
-TEST_CASE("compare: a navier-stokes file's lift, drag, C_L, C_D are its means; last-step values say so",
+TEST_CASE("compare: a navier-stokes file's lift, drag, C_L, C_D are its means, last-step values say so",
           "[io][compare][viscous]") {
   const std::string dir = test::temp_dir("compare-ns-means");
   Case c = test::make_case(1.0, 32);
