@@ -175,7 +175,7 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
     line(
         "note",
         fmt::format("the outer boundary R = {} D is close for a wake: at Re 100, α = 1, against R = 50 D, St "
-                    "moved by −0.7% at R = 25 D, −2.7% at 15 D, −6% at 10 D (C_D −1.8%), −18% at 5 D (C_D "
+                    "moved by −0.7% at R = 25 D, −2.6% at 15 D, −6% at 10 D (C_D −1.8%), −18% at 5 D (C_D "
                     "−9%), and at R ≤ 1.5 D the flow came out steady (C_D 0.80 against 1.10); raise "
                     "domain.outer_radius (default 100 = 50 D)",
                     num(g.outer_radius() / (2.0 * g.a), "{:.3g}")));

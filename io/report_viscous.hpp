@@ -34,7 +34,7 @@ double wall_cells(const PolarGrid& g, double reynolds, double alpha);
 
 /// R/a below which the summary notes that the outer boundary is close for a wake (St moves by more than 1%,
 /// the mean forces by 1–9% below 20a). At Re 100, α = 1 on the
-/// default grid, against R = 100a: St −0.7% at 50a, −2.7% at 30a, −6% at 20a (C_D −1.8%), −18% at 10a
+/// default grid, against R = 100a: St −0.7% at 50a, −2.6% at 30a, −6% at 20a (C_D −1.8%), −18% at 10a
 /// (C_D −9%); R = 2a and 3a came out steady with C_D 0.80 (the shedding wake: 1.10).
 constexpr double kOuterRadiusForWake = 50.0;
 
