@@ -70,9 +70,40 @@ std::string eig_text(const std::complex<double>& l) {
 
 Json eig_json(const StabilityResult& s) {
   Json a = Json::array();
-  for (const auto& l : s.eigenvalues)
-    a.push_back({{"growth_rate", l.real()}, {"frequency", l.imag()}, {"strouhal", std::fabs(l.imag()) / (2.0 * M_PI)}});
+  for (size_t k = 0; k < s.eigenvalues.size(); ++k) {
+    const auto& l = s.eigenvalues[k];
+    a.push_back({{"growth_rate", l.real()},
+                 {"frequency", l.imag()},
+                 {"strouhal", std::fabs(l.imag()) / (2.0 * M_PI)},
+                 {"residual", k < s.residuals.size() ? Json(s.residuals[k]) : Json()}});
+  }
   return a;
+}
+
+/// The evidence of the search: each shift (U/D), what it accepted, the disk it covers; and the coverage.
+Json search_json(const StabilityResult& s) {
+  Json a = Json::array();
+  for (const auto& sh : s.shifts)
+    a.push_back({{"shift_real", sh.sigma.real()},
+                 {"shift_imag", sh.sigma.imag()},
+                 {"found", sh.found},
+                 {"radius", sh.radius},
+                 {"converged", sh.converged},
+                 {"restarts", sh.restarts}});
+  return {{"shifts", a}, {"covered", s.covered}};
+}
+
+/// One line per shift: where it sat and how far around it every eigenvalue was found.
+std::string search_text(const StabilityResult& s) {
+  std::string t;
+  for (const auto& sh : s.shifts)
+    t += fmt::format("               σ = {:+.3f} {:+.3f}i: {} accepted, all within {:.3f} found{}\n", sh.sigma.real(),
+                     sh.sigma.imag(), sh.found, sh.radius, sh.converged ? "" : " (nearest not all converged)");
+  t += fmt::format("coverage       {}\n",
+                   s.covered ? "the disks cover the strip from the leading eigenvalue to Re λ = 0, 0 ≤ Im λ ≤ the "
+                               "highest shift: nothing between it and the axis was left unseen there"
+                             : "NOT COVERED: an eigenvalue right of the leading one may have been missed");
+  return t;
 }
 
 void command_stability(const StabilityCliOptions& o) {
@@ -97,14 +128,17 @@ void command_stability(const StabilityCliOptions& o) {
     text += fmt::format("steady state   Re {:.4g}, α {:g}: Newton {:.2f} s, eigenvalues {:.2f} s ({} shifted "
                         "solves)\n",
                         p.reynolds(), alpha, s.newton_seconds, st.seconds, st.solves);
-    text += "eigenvalues    λ·D/U (growth rate, frequency), rightmost first\n";
-    for (const auto& l : st.eigenvalues) text += "               " + eig_text(l) + "\n";
+    text += "eigenvalues    λ·D/U (growth rate, frequency), rightmost first; residual ‖Jx − λMx‖/(‖Jx‖ + |λ|‖Mx‖)\n";
+    for (size_t k = 0; k < st.eigenvalues.size(); ++k)
+      text += "               " + eig_text(st.eigenvalues[k]) +
+              (k < st.residuals.size() ? fmt::format("   residual {:.1e}", st.residuals[k]) : "") + "\n";
+    text += "shifts         σ·D/U of the shift-invert searches\n" + search_text(st);
     text += fmt::format("verdict        {} (leading growth rate {} U/D{})\n",
                         st.stable ? "STABLE: the steady flow persists" : "UNSTABLE: the wake sheds",
                         figure(st.growth_rate(), "{:+.5f}"),
                         st.eigenvalues.front().imag() != 0.0 ? fmt::format(", St {:.4f}", st.strouhal()) : "");
     j = {{"reynolds", p.reynolds()}, {"spin_ratio", alpha}, {"stable", st.stable}, {"eigenvalues", eig_json(st)},
-         {"seconds", s.newton_seconds + st.seconds}, {"solves", st.solves}};
+         {"seconds", s.newton_seconds + st.seconds}, {"solves", st.solves}, {"search", search_json(st)}};
   } else {
     const double A = range.A, B = range.B;
     const CriticalSpin cs = critical_spin(p, A, B, range.tolerance, [&](const SpinStability& s) {

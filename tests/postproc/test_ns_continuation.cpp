@@ -170,5 +170,9 @@ TEST_CASE("the eigenvalue test finds the slow one-sided shedding near α = 5 (Re
   CHECK_FALSE(now.stable);
   CHECK(now.eigenvalues.front().real() == Approx(0.0233).margin(0.002));
   CHECK(std::fabs(now.eigenvalues.front().imag()) == Approx(0.278).margin(0.005));
-  CHECK(before.stable);  // why the shift at 0.3i is there
+  // Why the shift at 0.3i is there: with one explicit restart per shift the old shifts called this state
+  // stable. The search that converges each shift's nearest Ritz values (and fills the gaps between the
+  // disks) finds the pair from the old shifts too.
+  CHECK_FALSE(before.stable);
+  CHECK(before.eigenvalues.front().real() == Approx(0.0233).margin(0.002));
 }

@@ -55,13 +55,35 @@ TEST_CASE("[ns][stability] Re 30: the steady wake is stable", "[ns][stability]")
   REQUIRE(r.eigenvalues.size() >= 2);
   for (const auto& l : r.eigenvalues) CHECK(l.real() < 0.0);
   CHECK(r.stable);
-  // Per shift: the start vector, then `krylov` Arnoldi vectors, and as many again if its first pass kept
-  // nothing.
+  // Per shift: the start vector, then `krylov` Arnoldi vectors, and fewer per Krylov–Schur restart (the
+  // nearest Ritz vectors are kept).
   const StabilityOptions o;
-  const int shifts = int(o.shifts.size()), k = o.krylov;
+  const int shifts = int(r.shifts.size()), k = o.krylov;
+  CHECK(shifts >= int(o.shifts.size()));
   CHECK(r.solves >= shifts * (1 + k));
-  CHECK(r.solves <= shifts * (1 + 2 * k));
-  CHECK((r.solves - shifts) % k == 0);
+  CHECK(r.solves <= shifts * (1 + (1 + o.restarts) * k));
+  CHECK(r.covered);
+  REQUIRE(r.residuals.size() == r.eigenvalues.size());
+  for (double res : r.residuals) CHECK(res <= o.tol);
+}
+
+TEST_CASE("[ns][stability] Re 100, α 3: the slow real modes lead, found by every shift's converged search",
+          "[ns][stability]") {
+  // With one explicit restart per shift, four of the five shifts accepted nothing here and a damped wake
+  // pair (−0.074 + 0.657i) was reported as leading, right of nothing it had checked.
+  const NsParams p = coarse_params(100.0, 3.0, 48);
+  const StabilityResult r = leading_eigenvalues(p, newton(p), 4);
+  INFO(r.message);
+  REQUIRE(!r.eigenvalues.empty());
+  CHECK(r.covered);
+  for (const auto& sh : r.shifts) CHECK(sh.converged);
+  const auto lead = r.eigenvalues.front();
+  CHECK(lead.imag() == 0.0);
+  CHECK(lead.real() < 0.0);
+  CHECK(lead.real() > -0.01);
+  // Each reported eigenvalue is an eigenpair of J x = λ M x to the search's tolerance.
+  REQUIRE(r.residuals.size() == r.eigenvalues.size());
+  for (double res : r.residuals) CHECK(res <= StabilityOptions{}.tol);
 }
 
 TEST_CASE("[ns][stability] Re 80: the time stepper grows and turns at the leading pair", "[ns][stability]") {
