@@ -15,6 +15,7 @@
 #include "io/json_output.hpp"
 #include "io/text_format.hpp"
 #include "postproc/ns_critical.hpp"
+#include "postproc/ns_resolution.hpp"
 #include "postproc/viscous_run.hpp"
 
 namespace magnus {
@@ -113,6 +114,7 @@ void command_stability(const StabilityCliOptions& o) {
   const Case c = load_case(o.case_path, o.sets);
   if (c.model != FlowModel::navier_stokes)
     throw std::runtime_error(o.case_path + ": magnus stability needs model.flow = \"navier-stokes\"");
+  check_resolvable(c);
   const NsParams p = ns_params(c);
   if (!(p.U > 0.0)) throw std::runtime_error(o.case_path + ": flow.speed must be > 0 (eigenvalues in U/D)");
   const double alpha = p.a * p.omega / p.U;

@@ -13,6 +13,7 @@
 
 #include "physics/exact.hpp"
 #include "postproc/ns_pressure.hpp"
+#include "postproc/ns_resolution.hpp"
 #include "postproc/steady_study.hpp"
 #include "solver/ns_newton.hpp"
 #include "solver/ns_stability.hpp"
@@ -275,6 +276,7 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
   if (!(sc.viscosity > 0.0)) throw std::invalid_argument("flow.viscosity: navier-stokes needs ν > 0");
   if (!(sc.reference_speed() > 0.0))
     throw std::invalid_argument("flow.speed and cylinder.spin are both 0: nothing moves, there is no flow");
+  check_resolvable(c);  // before anything is solved or allocated
   NsParams p = ns_params(c);
   p.threads = std::max(1, threads);
   const PolarGrid g = ns_grid(p);

@@ -146,6 +146,7 @@ const std::map<std::string, std::vector<std::string>> kSummaryToJson = {
      {"/timing/t_reached", "/derived/t_convective", "/timing/steps", "/timing/dt", "/derived/dt_convective",
       "/timing/total_s", "/derived/steps_per_second"}},
     {"run+", {"/status", "/partial"}},
+    {"verdict", {"/derived/wall_cells_unresolved", "/derived/wall_cells"}},
     {"C_D+", {"/forces/cd_pressure", "/forces/cd_friction"}},
     {"St = fD/U", {"/forces/strouhal", "/status"}},
     {"S/(2πρa²)", {"/forces/magnus_ratio", "/parameters/reynolds", "/parameters/spin_ratio"}},

@@ -88,9 +88,10 @@ TEST_CASE("navier-stokes summary: below one wall cell the boundary layer is not 
   CAPTURE(o.out);
   CHECK(test::line_of(o.out, "               boundary layer") ==
         "               boundary layer: 0.044 wall cells across D/√(Re(1 + α²)) — not resolved: below 1 cell "
-        "the "
-        "forces are not meaningful (raise grid.n_theta)");
-  CHECK(o.out.find("— coarse:") == std::string::npos);
+        "the forces are not meaningful (grid.n_theta ≥ 166 with grid.n_r = 0, or grid.n_r ≥ 132)");
+  // The verdict comes first, before any figure.
+  CHECK(o.out.find("verdict        NOT RESOLVED: 0.044 wall cells") < o.out.find("\ncase "));
+  CHECK(o.out.find("several %") == std::string::npos);
   // Between one and five cells: coarse, C_D can be off by more than 10% (measured: +14% with 4.5 cells).
   const auto c = run(dir, {"grid.n_theta=96"}, "c.h5");
   REQUIRE(c.status == 0);

@@ -9,6 +9,7 @@
 #include "io/checkpoint.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/result_reader.hpp"
+#include "postproc/ns_resolution.hpp"
 #include "run_child.hpp"
 #include "support.hpp"
 
@@ -104,6 +105,52 @@ TEST_CASE("navier-stokes run: above Re 200 the summary says real flow is three-d
   INFO(o.err);
   REQUIRE(o.status == 0);
   REQUIRE(o.out.find("Re = 250 > 200: real flow past a cylinder is three-dimensional") != std::string::npos);
+  // S/(2πρa²) is the 2D laminar model's figure there, not what a real cylinder gets.
+  CHECK(o.out.find("a real cylinder gets") == std::string::npos);
+  CHECK(o.out.find("the 2D laminar model's share of the ideal lift at Re = 250") != std::string::npos);
+}
+
+TEST_CASE("navier-stokes run: a scene no grid in memory resolves is refused up front in one line",
+          "[app][ns]") {
+  const std::string dir = test::temp_dir("ns-run-unresolvable");
+  // Re 1e8 at α 3: the boundary layer D/√(Re(1 + α²)) = 3.2e-5 D needs some 1e10 nodes for two wall cells.
+  const auto o = test::magnus_cmd(
+      {"run", write_case(dir, ns_case(1e8, 3, 5, "mode = \"unsteady\"\n")), "-o", dir + "/r.h5"}, dir);
+  REQUIRE(o.status != 0);
+  REQUIRE(test::lines(o.err) == 1);
+  CHECK(o.err.find("flow.reynolds: Re = 1e+08 at α = 3") != std::string::npos);
+  CHECK(o.err.find("beyond what the 2D laminar model can resolve") != std::string::npos);
+  CHECK(o.err.find("data/rotor_data.toml") != std::string::npos);
+  REQUIRE_FALSE(exists(dir + "/r.h5"));
+  const auto st = test::magnus_cmd({"stability", dir + "/case.toml"}, dir);
+  REQUIRE(st.status != 0);
+  CHECK(st.err.find("beyond what the 2D laminar model can resolve") != std::string::npos);
+  // The rotor sail's own scene (Re 4e6, α 3.27) needs tens of GB: refused below that, not below 1 TB.
+  Case c = parse_case(ns_case(4e6, 3.27, 5), "rotor.toml");
+  const ResolvingGrid g = resolving_grid(c, kWallCellsNeeded);
+  CHECK(g.n_theta > 10000);
+  CHECK(g.bytes > 20e9);
+  CHECK_THROWS_AS(check_resolvable(c, size_t(16) << 30), std::invalid_argument);
+  CHECK_NOTHROW(check_resolvable(c, size_t(1) << 40));
+  // Re 100, α 1: one wall cell on n_θ 30 (the default 192 has 7.1), and never refused.
+  c = parse_case(ns_case(100, 1, 5), "c.toml");
+  CHECK(resolving_grid(c, 1.0).n_theta == 30);
+  CHECK_NOTHROW(check_resolvable(c, size_t(64) << 20));
+}
+
+TEST_CASE("navier-stokes run: unresolved forces get the verdict first and no S finding", "[app][ns]") {
+  const std::string dir = test::temp_dir("ns-run-unresolved");
+  // α = 50 at Re 100 on n_θ 48: 0.05 wall cells (a grid of n_θ ≈ 950 would have one).
+  const auto o = test::magnus_cmd(
+      {"run", write_case(dir, ns_case(100, 50, 0.2, "mode = \"unsteady\"\n")), "-o", dir + "/r.h5"}, dir);
+  INFO(o.out << o.err);
+  REQUIRE(o.status == 0);
+  const size_t verdict = o.out.find("verdict        NOT RESOLVED:"), grid = o.out.find("\ngrid ");
+  REQUIRE(verdict != std::string::npos);
+  CHECK(verdict < grid);
+  CHECK(o.out.find("the forces below are not meaningful (grid.n_theta ≥ ") != std::string::npos);
+  CHECK(o.out.find("a real cylinder gets") == std::string::npos);
+  CHECK(o.out.find("not meaningful: the boundary layer is not resolved") != std::string::npos);
 }
 
 TEST_CASE("navier-stokes run: a time step above the stability limit is one line and no output", "[app][ns]") {
