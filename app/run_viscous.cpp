@@ -13,6 +13,7 @@
 #include "io/checkpoint.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/report.hpp"
+#include "postproc/viscous_run.hpp"
 
 namespace magnus {
 
@@ -92,6 +93,21 @@ std::string shell_word(const std::string& w) {
 
 }  // namespace
 
+std::string before_march_text(const Case& c) {
+  if (c.time.mode == TimeMode::steady) return "  solving the steady equations by Newton's method (Ctrl-C stops) …";
+  if (c.time.mode != TimeMode::automatic) return "";
+  const AutoPlan plan = auto_plan(ns_params(c));
+  switch (plan.start) {
+    case AutoStart::march:
+      return "";  // the march's own progress line follows at once
+    case AutoStart::newton_only:
+      return "  auto: steady flow (" + plan.why + "): solving by Newton's method (Ctrl-C stops) …";
+    case AutoStart::search:
+      break;
+  }
+  return "  auto: looking for a stable steady state (Newton's method, eigenvalues; Ctrl-C stops) …";
+}
+
 std::string resume_command(const std::string& case_path, const std::string& output) {
   return fmt::format("magnus run {} -o {} --resume", shell_word(case_path), shell_word(output));
 }
@@ -157,14 +173,12 @@ FlowResult run_viscous_case(const Case& c, const std::string& case_path, bool re
     }
   };
 
+  // The line names what will run: "auto" marches at once where shedding is certain (no Newton to announce).
   if (show && !start && c.time.mode != TimeMode::unsteady) {
-    std::fputs(
-        c.time.mode == TimeMode::steady
-            ? "  solving the steady equations by Newton's method (Ctrl-C stops) …"
-            : "  auto: looking for a stable steady state (Newton's method, eigenvalues; Ctrl-C stops) …",
-        stderr);
+    const std::string text = before_march_text(c);
+    std::fputs(text.c_str(), stderr);
     std::fflush(stderr);
-    progress.printed = true;
+    progress.printed = !text.empty();
   }
   FlowResult r;
   void (*before_march)(int) = std::signal(SIGINT, on_sigint_now);

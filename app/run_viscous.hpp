@@ -16,6 +16,10 @@ struct Interrupted {
 /// The command that goes on from the checkpoint: "magnus run CASE -o OUTPUT --resume" (shell-quoted).
 std::string resume_command(const std::string& case_path, const std::string& output);
 
+/// The progress line on a terminal before the march (Newton's method, the eigenvalue test), "" when none
+/// runs: time.mode "unsteady", or "auto" where it marches at once (auto_plan).
+std::string before_march_text(const Case& c);
+
 /// Run case c (read from case_path, navier-stokes), write its result (and remove the checkpoint it resumed
 /// from or wrote once the result is complete), print the summary unless quiet, and return the result (what
 /// the summary and --json show). resume: continue from the case's checkpoint file; threads ≥ 1.

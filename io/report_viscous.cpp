@@ -4,6 +4,8 @@
 #include <fmt/core.h>
 
 #include <cmath>
+#include <optional>
+#include <utility>
 
 #include "io/finite.hpp"
 #include "io/hdf5_io.hpp"
@@ -94,15 +96,22 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
   const double unit = v.time_unit;
   const long steps_here = v.steps - v.steps_resumed;  // this run's
   const double steps_per_s = r.timing.solve_s > 0.0 ? double(steps_here) / r.timing.solve_s : 0.0;
+  // What took the time: Newton's method, the eigenvalue test and the march, each when run.
+  std::string phases;
+  for (const auto& [name, secs] : {std::pair<const char*, std::optional<double>>{"Newton", v.newton_seconds},
+                                   {"eigenvalue test", v.stability_seconds},
+                                   {"march", v.newton ? std::nullopt : v.march_seconds}})
+    if (secs) phases += fmt::format("{}{} {}", phases.empty() ? "" : ", ", name, wall(*secs));
   if (v.newton)
-    line("run", fmt::format("steady state by Newton's method, {} ({:.0f} ms)", wall(r.timing.total_s),
-                            1e3 * r.timing.total_s));
+    line("run", fmt::format("steady state by Newton's method, {} ({:.0f} ms){}", wall(r.timing.total_s),
+                            1e3 * r.timing.total_s, phases.empty() ? "" : ": " + phases));
   else
     line("run", fmt::format("t = {} s = {} {}, {} steps{} of Δt = {} s ({} {}), {} ({:.0f} steps/s)",
                             num(v.t), num(v.t / unit, "{:.5g}"), time_unit_name(sc), v.steps,
                             v.steps_resumed > 0 ? fmt::format(" ({} before --resume)", v.steps_resumed) : "",
                             num(v.dt, "{:.4g}"), num(v.dt / unit, "{:.4g}"), time_unit_name(sc),
                             wall(r.timing.total_s), steps_per_s));
+  if (!v.newton && (v.newton_seconds || v.stability_seconds)) line("", "time: " + phases);
   line("", fmt::format("stopped: {}{}", v.status, v.partial ? " — a PARTIAL result (the file says so)" : ""));
   if (!v.converged && !v.partial)
     line("", "not converged: the means below are the last period's (or the last step's); raise time.end");

@@ -36,8 +36,26 @@ struct ViscousHooks {
   bool march_at_once = false;
 };
 
+/// What time.mode = "auto" does first, decided from Re and α alone before any solve.
+enum class AutoStart {
+  search,       ///< Newton from potential flow, then the eigenvalue test of the state it finds
+  newton_only,  ///< steady flow is certain here: Newton alone (no eigenvalue test); march if it fails
+  march,        ///< shedding is certain here: march at once
+};
+struct AutoPlan {
+  AutoStart start = AutoStart::search;
+  std::string why;  ///< the reason, for the status line ("" for search)
+};
+/// march: Re ≥ 60 with α ≤ 1 (Re_c ≈ 47 at α = 0; the critical spin ratio rises with Re, ≈ 1.9 at Re 100).
+/// newton_only: Re ≤ 35 with |α| ≤ 3: below the onset of shedding (Re_c ≈ 46–47 at α = 0, and spin only
+/// delays it; the coarse map grid, n_θ 48 at R = 20a, already sheds at Re 40 with growth +0.0002 U/D, but
+/// finds Re 30 and 35 stable at α 0…3; the one-sided shedding near α = 5 opens only from Re 100). Else
+/// search.
+AutoPlan auto_plan(const NsParams& p);
+
 /// Throws std::invalid_argument (one line naming the key) for a case the model refuses: time.dt above the
-/// stability limit of the start, a grid too coarse for the boundary layer, U = 0 and ω = 0, a time.end
+/// stability limit of the start, a scene whose boundary layer no grid in memory resolves (check_resolvable),
+/// U = 0 and ω = 0, a time.end
 /// before the time of the checkpoint it resumes (time.mode "steady" does not march: any time.end).
 /// threads: for the advection and the mode solves (≥ 1; on 2 cores a second thread gained about 4%).
 FlowResult run_viscous(const Case& c, const ViscousHooks& hooks = {}, const Checkpoint* resume = nullptr,

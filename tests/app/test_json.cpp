@@ -145,7 +145,7 @@ const std::map<std::string, std::vector<std::string>> kSummaryToJson = {
     {"run",
      {"/timing/t_reached", "/derived/t_convective", "/timing/steps", "/timing/dt", "/derived/dt_convective",
       "/timing/total_s", "/derived/steps_per_second"}},
-    {"run+", {"/status", "/partial"}},
+    {"run+", {"/status", "/partial", "/timing/newton_s", "/timing/stability_s", "/timing/march_s"}},
     {"verdict", {"/derived/wall_cells_unresolved", "/derived/wall_cells"}},
     {"C_D+", {"/forces/cd_pressure", "/forces/cd_friction"}},
     {"St = fD/U", {"/forces/strouhal", "/status"}},
@@ -271,7 +271,9 @@ TEST_CASE("run --json, navier-stokes steady and auto: the grid study and the eig
   const std::string dir = test::temp_dir("json-run-ns-steady");
   for (const char* mode : {"steady", "auto"}) {
     INFO("time.mode = " << mode);
-    const std::string c = write(dir + "/case.toml", ns_case(20, 0.5, 4));
+    // Re 20 for the grid study; Re 60, α 3 for "auto", which tests the stability there (at Re 20 it knows).
+    const std::string c =
+        write(dir + "/case.toml", std::string(mode) == "steady" ? ns_case(20, 0.5, 4) : ns_case(60, 3, 4));
     const json j = run_beside_summary(c, dir, {"--set", std::string("time.mode=") + mode}, true);
     if (std::string(mode) == "steady") {
       REQUIRE(j["derived"]["steady_study"]["levels"].size() >= 2);
@@ -293,8 +295,13 @@ TEST_CASE("run --json, navier-stokes steady and auto: the grid study and the eig
       CHECK(f["steady_study"]["cd"]["value"].get<double>() == cd["value"].get<double>());
       CHECK(f["steady_study"]["cd_error"]["value"].get<double>() == cd["error"]["value"].get<double>());
       CHECK(f["steady_study"]["cd"]["units"] == "1");
-    } else {  // Re 20: a stable steady state, and its leading eigenvalue decays; no grid study stored
+    } else {  // Re 60, α 3: a stable steady state, and its leading eigenvalue decays; no grid study stored
       CHECK(j["forces"]["eigenvalue_real"]["value"].get<double>() < 0.0);
+      // What took the time: Newton and the eigenvalue test, each named; no march.
+      CHECK(j["timing"]["newton_s"]["value"].get<double>() > 0.0);
+      CHECK(j["timing"]["stability_s"]["value"].get<double>() > 0.0);
+      CHECK(j["timing"]["march_s"]["value"].is_null());
+      CHECK(j["timing"]["newton_s"]["units"] == "s");
       const auto o = test::magnus_cmd({"inspect", dir + "/r.h5", "--json"}, dir);
       REQUIRE(o.status == 0);
       CHECK_FALSE(parse_checked(o.out).contains("steady_study"));

@@ -152,8 +152,9 @@ TEST_CASE("navier-stokes summary at U = 0: times in D/(a|ω|), no Strouhal numbe
   CHECK(o.out.find("D/U") == std::string::npos);
   CHECK(o.out.find("U/D") == std::string::npos);
   CHECK(std::regex_search(o.out,
-                          std::regex("stopped: auto: stable \\(leading eigenvalue -0\\.[0-9]+ \\+0\\.[0-9]+i "
-                                     "a\\|ω\\|/D, St undefined \\(U = 0\\)\\)")));
+                          std::regex("stopped: auto: stable \\(leading eigenvalue -0\\.[0-9]+ \\+0(\\.[0-9]+)?i "
+                                     "a\\|ω\\|/D, St undefined \\(U = 0\\)(; not verified: the search left a "
+                                     "gap right of it)?\\)")));
   CHECK(std::regex_search(
       o.out, std::regex("\nstability      steady state's leading eigenvalue λ·D/\\(a\\|ω\\|\\) = "
                         "-0\\.[0-9]+ \\+0\\.[0-9]+i \\(stable; St undefined \\(U = 0\\)\\)\n")));

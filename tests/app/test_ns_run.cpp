@@ -9,6 +9,7 @@
 #include "io/checkpoint.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/result_reader.hpp"
+#include "app/run_viscous.hpp"
 #include "postproc/ns_resolution.hpp"
 #include "run_child.hpp"
 #include "support.hpp"
@@ -151,6 +152,18 @@ TEST_CASE("navier-stokes run: unresolved forces get the verdict first and no S f
   CHECK(o.out.find("the forces below are not meaningful (grid.n_theta ≥ ") != std::string::npos);
   CHECK(o.out.find("a real cylinder gets") == std::string::npos);
   CHECK(o.out.find("not meaningful: the boundary layer is not resolved") != std::string::npos);
+}
+
+TEST_CASE("navier-stokes auto: the progress line announces only what runs", "[app][ns]") {
+  const auto line = [](double Re, double alpha, const char* mode) {
+    return before_march_text(parse_case(ns_case(Re, alpha, 5, fmt::format("mode = \"{}\"\n", mode)), "c.toml"));
+  };
+  CHECK(line(100, 0.5, "auto").empty());  // it marches at once: no Newton search to announce
+  CHECK(line(100, 0.5, "unsteady").empty());
+  CHECK(line(20, 0.5, "auto").find("Newton") != std::string::npos);
+  CHECK(line(20, 0.5, "auto").find("eigenvalues") == std::string::npos);
+  CHECK(line(100, 3, "auto").find("eigenvalues") != std::string::npos);
+  CHECK(line(100, 0.5, "steady").find("Newton") != std::string::npos);
 }
 
 TEST_CASE("navier-stokes run: a time step above the stability limit is one line and no output", "[app][ns]") {
@@ -348,12 +361,18 @@ TEST_CASE("navier-stokes run in steady mode: Newton's state is the time stepper'
   REQUIRE(m.status == 0);
   const FlowResult a = read_result(dir + "/n.h5"), b = read_result(dir + "/m.h5");
   REQUIRE(a.viscous->status.find("steady, by Newton") == 0);
-  // "auto" solves by Newton too, checks the state's linear stability (Re 20: stable) and keeps it.
+  // "auto" solves by Newton too; at Re 20 steady flow is certain (below the onset of shedding), so it skips
+  // the eigenvalue test and says so, with the time Newton took.
   INFO(b.viscous->status);
-  REQUIRE(b.viscous->status.find("auto: stable (leading eigenvalue") == 0);
+  REQUIRE(b.viscous->status.find("auto: steady (Re 20 ≤ 35, α 0.5 ≤ 3: below the onset of shedding") == 0);
+  REQUIRE(b.viscous->status.find("no eigenvalue test") != std::string::npos);
   REQUIRE(b.viscous->status.find("steady, by Newton") != std::string::npos);
-  REQUIRE(b.viscous->eigenvalue_real.has_value());
-  REQUIRE(*b.viscous->eigenvalue_real < 0.0);
+  REQUIRE(!b.viscous->eigenvalue_real.has_value());
+  REQUIRE(!b.viscous->stability_seconds.has_value());
+  REQUIRE(b.viscous->newton_seconds.has_value());
+  REQUIRE(*b.viscous->newton_seconds > 0.0);
+  REQUIRE(m.out.find("steady state by Newton's method") != std::string::npos);
+  REQUIRE(m.out.find(": Newton ") != std::string::npos);
   REQUIRE(*a.viscous->cl_mean == Approx(*b.viscous->cl_mean).margin(1e-9));
   REQUIRE(*a.viscous->cd_mean == Approx(*b.viscous->cd_mean).margin(1e-9));
   REQUIRE(!a.viscous->eigenvalue_real.has_value());  // "steady" does not compute it: undefined
