@@ -58,6 +58,8 @@ struct ViscousPart {
   /// Leading eigenvalue λ of the steady state's linear stability (time.mode = "auto"), U/D: Re λ is the
   /// growth rate, Im λ/(2π) the Strouhal number of the growing (or decaying) wake mode.
   std::optional<double> eigenvalue_real, eigenvalue_imag;
+  /// Its eigenvector's relative residual ‖Jx − λMx‖/(‖Jx‖ + |λ|‖Mx‖): the evidence that λ is an eigenvalue.
+  std::optional<double> eigenvalue_residual;
   /// Wall time of the phases of a run, s: Newton's method, the eigenvalue test, the march (each when run).
   std::optional<double> newton_seconds, stability_seconds, march_seconds;
   std::vector<ForceSample> history;      ///< one sample per step

@@ -197,6 +197,7 @@ FlowResult steady_result(const Case& c, const NsParams& p, const PolarGrid& g, N
   if (stab && !stab->eigenvalues.empty()) {
     r.viscous->eigenvalue_real = stab->eigenvalues.front().real();
     r.viscous->eigenvalue_imag = stab->eigenvalues.front().imag();
+    if (!stab->residuals.empty()) r.viscous->eigenvalue_residual = stab->residuals.front();
   }
   return r;
 }
@@ -232,6 +233,7 @@ struct AutoChoice {
   std::optional<FlowResult> steady;
   std::string why;  ///< for the status line of a marched run
   std::optional<std::complex<double>> eigenvalue;
+  std::optional<double> eigenvalue_residual;  ///< its ‖Jx − λMx‖/(‖Jx‖ + |λ|‖Mx‖)
   std::optional<double> newton_seconds, stability_seconds;  ///< s, when run
 };
 
@@ -283,6 +285,7 @@ AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g) {
   }
   const std::complex<double> l = st.eigenvalues.front();
   a.eigenvalue = l;
+  if (!st.residuals.empty()) a.eigenvalue_residual = st.residuals.front();
   // St = f·D/U needs a stream: in still fluid (U = 0) the eigenvalues are in a|ω|/D and St is undefined.
   const std::string lam =
       fmt::format("leading eigenvalue {:.4g} {:+.4g}i {}, St {}", l.real(), l.imag(), rate_unit_name(c.scene),
@@ -413,6 +416,7 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
   if (choice.eigenvalue) {
     r.viscous->eigenvalue_real = choice.eigenvalue->real();
     r.viscous->eigenvalue_imag = choice.eigenvalue->imag();
+    r.viscous->eigenvalue_residual = choice.eigenvalue_residual;
   }
   // The solves before the march count in the run's time, each named.
   r.viscous->newton_seconds = choice.newton_seconds, r.viscous->stability_seconds = choice.stability_seconds;

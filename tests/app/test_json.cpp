@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "solver/ns_stability.hpp"
 #include "support.hpp"
 
 using namespace magnus;
@@ -157,7 +158,7 @@ const std::map<std::string, std::vector<std::string>> kSummaryToJson = {
     {"separation", {"/separation"}},
     {"recirculation", {"/forces/recirculation_length"}},
     {"note", {"/derived/three_dimensional"}},
-    {"stability", {"/forces/eigenvalue_real", "/forces/eigenvalue_imag"}},
+    {"stability", {"/forces/eigenvalue_real", "/forces/eigenvalue_imag", "/forces/eigenvalue_residual"}},
     {"grid study", {"/derived/steady_study/levels"}},
     {"grid study+", {"/derived/steady_study/levels"}},
     {"Richardson", {"/derived/steady_study/cd"}},
@@ -297,6 +298,8 @@ TEST_CASE("run --json, navier-stokes steady and auto: the grid study and the eig
       CHECK(f["steady_study"]["cd"]["units"] == "1");
     } else {  // Re 60, α 3: a stable steady state, and its leading eigenvalue decays; no grid study stored
       CHECK(j["forces"]["eigenvalue_real"]["value"].get<double>() < 0.0);
+      // Its evidence: the eigenvector's relative residual, below the search's tolerance.
+      CHECK(j["forces"]["eigenvalue_residual"]["value"].get<double>() <= StabilityOptions{}.tol);
       // What took the time: Newton and the eigenvalue test, each named; no march.
       CHECK(j["timing"]["newton_s"]["value"].get<double>() > 0.0);
       CHECK(j["timing"]["stability_s"]["value"].get<double>() > 0.0);
