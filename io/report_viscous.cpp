@@ -27,6 +27,22 @@ std::string wall(double seconds) {
                         : fmt::format("{}:{:02d} min", saturate_cast<long>(seconds) / 60, saturate_cast<long>(seconds) % 60);
 }
 
+/// What took the time: Newton's method, the eigenvalue test and the march, each when run ("" if none).
+std::string phases_text(const ViscousPart& v) {
+  std::string t;
+  for (const auto& [name, secs] : {std::pair<const char*, std::optional<double>>{"Newton", v.newton_seconds},
+                                   {"eigenvalue test", v.stability_seconds},
+                                   {"march", v.newton ? std::nullopt : v.march_seconds}})
+    if (secs) t += fmt::format("{}{} {}", t.empty() ? "" : ", ", name, wall(*secs));
+  return t;
+}
+
+/// What would resolve the wall: the grid with kWallCellsResolved cells across the boundary layer.
+std::string resolving_text(const Case& c) {
+  const ResolvingGrid need = resolving_grid(c, kWallCellsResolved);
+  return fmt::format("grid.n_theta ≥ {:.0f} with grid.n_r = 0, or grid.n_r ≥ {:.0f}", need.n_theta, need.n_r);
+}
+
 }  // namespace
 
 bool above_laminar_range(double reynolds) { return reynolds > kReynolds3D * (1.0 + 1e-9); }
@@ -54,11 +70,7 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
   // Forces that mean nothing are said so first, before any figure could be read as a finding.
   const double cells = v.reynolds && *v.reynolds > 0.0 ? wall_cells(g, *v.reynolds, sc.spin_ratio()) : 1e300;
   const bool unresolved = cells < kWallCellsResolved;
-  std::string raise;  // what would resolve the wall: the grid with kWallCellsResolved cells
-  if (cells < kWallCellsForPercent) {
-    const ResolvingGrid need = resolving_grid(c, kWallCellsResolved);
-    raise = fmt::format("grid.n_theta ≥ {:.0f} with grid.n_r = 0, or grid.n_r ≥ {:.0f}", need.n_theta, need.n_r);
-  }
+  const std::string raise = cells < kWallCellsForPercent ? resolving_text(c) : std::string();
   if (unresolved)
     line("verdict", fmt::format("NOT RESOLVED: {} wall cells across the boundary layer D/√(Re(1 + α²)), below "
                                 "{:.0f}: the forces below are not meaningful ({} gives one cell)",
@@ -96,12 +108,7 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
   const double unit = v.time_unit;
   const long steps_here = v.steps - v.steps_resumed;  // this run's
   const double steps_per_s = r.timing.solve_s > 0.0 ? double(steps_here) / r.timing.solve_s : 0.0;
-  // What took the time: Newton's method, the eigenvalue test and the march, each when run.
-  std::string phases;
-  for (const auto& [name, secs] : {std::pair<const char*, std::optional<double>>{"Newton", v.newton_seconds},
-                                   {"eigenvalue test", v.stability_seconds},
-                                   {"march", v.newton ? std::nullopt : v.march_seconds}})
-    if (secs) phases += fmt::format("{}{} {}", phases.empty() ? "" : ", ", name, wall(*secs));
+  const std::string phases = phases_text(v);
   if (v.newton)
     line("run", fmt::format("steady state by Newton's method, {} ({:.0f} ms){}", wall(r.timing.total_s),
                             1e3 * r.timing.total_s, phases.empty() ? "" : ": " + phases));
