@@ -135,10 +135,11 @@ void command_stability(const StabilityCliOptions& o) {
       text += "               " + eig_text(st.eigenvalues[k]) +
               (k < st.residuals.size() ? fmt::format("   residual {:.1e}", st.residuals[k]) : "") + "\n";
     text += "shifts         σ·D/U of the shift-invert searches\n" + search_text(st);
-    text += fmt::format("verdict        {} (leading growth rate {} U/D{})\n",
+    text += fmt::format("verdict        {} (leading growth rate {} U/D{}){}\n",
                         st.stable ? "STABLE: the steady flow persists" : "UNSTABLE: the wake sheds",
                         figure(st.growth_rate(), "{:+.5f}"),
-                        st.eigenvalues.front().imag() != 0.0 ? fmt::format(", St {:.4f}", st.strouhal()) : "");
+                        st.eigenvalues.front().imag() != 0.0 ? fmt::format(", St {:.4f}", st.strouhal()) : "",
+                        st.covered ? "" : "; not verified: see the coverage line");
     j = {{"reynolds", p.reynolds()}, {"spin_ratio", alpha}, {"stable", st.stable}, {"eigenvalues", eig_json(st)},
          {"seconds", s.newton_seconds + st.seconds}, {"solves", st.solves}, {"search", search_json(st)}};
   } else {

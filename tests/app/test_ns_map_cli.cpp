@@ -188,6 +188,13 @@ TEST_CASE("magnus stability: the eigenvalues, the critical spin ratio, and refus
   // Eigenvalues rightmost first.
   for (size_t k = 1; k < j["eigenvalues"].size(); ++k)
     CHECK(j["eigenvalues"][k]["growth_rate"].get<double>() <= j["eigenvalues"][k - 1]["growth_rate"].get<double>());
+  // The evidence: each eigenvalue's residual, the shifts searched (the five defaults first) and their disks.
+  for (const auto& e : j["eigenvalues"]) CHECK(e["residual"].get<double>() <= 1e-5);
+  REQUIRE(j["search"]["shifts"].size() >= 5);
+  CHECK(j["search"]["shifts"][0]["shift_real"].get<double>() == 0.1);
+  CHECK(j["search"]["shifts"][4]["shift_imag"].get<double>() == 1.4);
+  CHECK(j["search"]["covered"].is_boolean());
+  for (const auto& sh : j["search"]["shifts"]) CHECK(sh["radius"].get<double>() >= 0.0);
 
   o = magnus_cmd({"stability", s_map, "--set", "flow.reynolds=60", "--critical-spin", "1.4:1.9", "--tolerance",
                   "0.05", "--json"},
