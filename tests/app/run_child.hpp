@@ -3,6 +3,7 @@
 // SIGTERM at a moment the test chooses by watching the run's files), never by the program itself.
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -31,9 +32,11 @@ struct Ended {
   std::string out, err;
 };
 
-/// Start magnus with args, stdout and stderr into dir/NAME.out and dir/NAME.err.
+/// Start magnus with args, stdout and stderr into dir/NAME.out and dir/NAME.err. file_limit > 0 sets
+/// RLIMIT_FSIZE (bytes) and ignores SIGXFSZ, so a write past the limit fails with EFBIG as on a full disk
+/// instead of killing magnus.
 inline Running start_magnus(const std::vector<std::string>& args, const std::string& dir,
-                            const std::string& name = "child") {
+                            const std::string& name = "child", rlim_t file_limit = 0) {
   Running c{-1, dir + "/" + name + ".out", dir + "/" + name + ".err"};
   std::vector<std::string> all = {MAGNUS_EXE};
   all.insert(all.end(), args.begin(), args.end());
@@ -46,6 +49,11 @@ inline Running start_magnus(const std::vector<std::string>& args, const std::str
     const int out = ::open(c.out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     const int err = ::open(c.err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (out < 0 || err < 0 || ::dup2(out, 1) < 0 || ::dup2(err, 2) < 0) ::_exit(126);
+    if (file_limit > 0) {
+      const rlimit lim{file_limit, file_limit};
+      ::signal(SIGXFSZ, SIG_IGN);
+      if (::setrlimit(RLIMIT_FSIZE, &lim) != 0) ::_exit(126);
+    }
     ::execv(argv[0], argv.data());
     ::_exit(127);
   }

@@ -23,6 +23,7 @@
 #include "io/inspect.hpp"
 #include "io/output_lock.hpp"
 #include "io/report.hpp"
+#include "run_child.hpp"
 #include "support.hpp"
 
 using namespace magnus;
@@ -37,52 +38,16 @@ void spit(const std::string& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
 }
 
-struct Child {
-  pid_t pid = -1;
-  std::string out_path, err_path;
-};
-
 // test::magnus_cmd goes through the shell and waits; these tests need the child's PID (to kill it while it
-// writes) and a file-size limit set between fork and exec.
+// writes) and a file-size limit set between fork and exec (run_child.hpp).
+using Child = test::Running;
+using Outcome = test::Ended;
 
-/// Starts magnus with args, stdout and stderr into files in dir; file_limit > 0 sets RLIMIT_FSIZE (bytes) and
-/// ignores SIGXFSZ, so a write past the limit fails with EFBIG as on a full disk instead of killing magnus.
 Child start(const std::vector<std::string>& args, const std::string& dir, rlim_t file_limit = 0) {
-  Child c{-1, dir + "/stdout.txt", dir + "/stderr.txt"};
-  std::vector<std::string> all = {MAGNUS_EXE};
-  all.insert(all.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& a : all) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  c.pid = ::fork();
-  REQUIRE(c.pid >= 0);
-  if (c.pid == 0) {  // only async-signal-safe calls until exec
-    const int out = ::open(c.out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int err = ::open(c.err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (out < 0 || err < 0 || ::dup2(out, 1) < 0 || ::dup2(err, 2) < 0) ::_exit(126);
-    if (file_limit > 0) {
-      const rlimit lim{file_limit, file_limit};
-      ::signal(SIGXFSZ, SIG_IGN);
-      if (::setrlimit(RLIMIT_FSIZE, &lim) != 0) ::_exit(126);
-    }
-    ::execv(argv[0], argv.data());
-    ::_exit(127);
-  }
-  return c;
+  return test::start_magnus(args, dir, "std", file_limit);
 }
 
-struct Outcome {
-  bool exited;  ///< false: ended by a signal
-  int status;   ///< exit status, or the signal
-  std::string out, err;
-};
-
-Outcome finish(const Child& c) {
-  int raw = 0;
-  REQUIRE(::waitpid(c.pid, &raw, 0) == c.pid);
-  return {WIFEXITED(raw), WIFEXITED(raw) ? WEXITSTATUS(raw) : WTERMSIG(raw), slurp(c.out_path),
-          slurp(c.err_path)};
-}
+Outcome finish(const Child& c) { return test::wait_magnus(c); }
 
 Outcome run_magnus(const std::vector<std::string>& args, const std::string& dir, rlim_t file_limit = 0) {
   return finish(start(args, dir, file_limit));
@@ -93,7 +58,7 @@ std::vector<std::string> names_in(const std::string& dir) {
   std::vector<std::string> out;
   for (const auto& e : fs::directory_iterator(dir)) {
     const std::string name = e.path().filename().string();
-    if (name != "stdout.txt" && name != "stderr.txt") out.push_back(name);
+    if (name != "std.out" && name != "std.err") out.push_back(name);
   }
   std::sort(out.begin(), out.end());
   return out;
@@ -295,7 +260,7 @@ TEST_CASE("inspect on truncated, corrupt, empty and non-files: one line, never a
     for (size_t k = 0; k < 8; ++k) damaged[at + k] = char(damaged[at + k] ^ 0x5A);
     spit(bad, damaged);
     require_refused(bad, dir);
-    REQUIRE(slurp(dir + "/stderr.txt").find("damaged") != std::string::npos);
+    REQUIRE(slurp(dir + "/std.err").find("damaged") != std::string::npos);
   }
   SECTION("metadata overwritten: superblock and every object header") {
     std::vector<size_t> at = {20};  // in the superblock, before its checksum
@@ -404,7 +369,7 @@ TEST_CASE("inspect on foreign HDF5 files: one line, never a crash", "[app][safet
            }),
   };
   for (const auto& path : foreign) require_refused(path, dir);
-  REQUIRE(slurp(dir + "/stderr.txt").find("bad_software.h5") != std::string::npos);
+  REQUIRE(slurp(dir + "/std.err").find("bad_software.h5") != std::string::npos);
 }
 
 TEST_CASE("reading damaged files in-process throws one line and leaves no HDF5 object open",
