@@ -125,7 +125,7 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
   s += "\n";
   s += fmt::format("{:<15}{:<40}{}\n", "", "viscous (this run)", "ideal (potential flow, same scene)");
   auto row = [&](const std::string& label, const std::string& a, const std::string& b) {
-    s += fmt::format("{:<15}{:<40}{}\n", label, a, b);
+    s += fmt::format("{:<15}{:<39} {}\n", label, a, b);  // a space between the columns, always
   };
   const char* kind = v.steady ? "(steady)" : "(mean)";  // a steady flow's mean is its value
   if (moving) {
@@ -148,7 +148,7 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
     row("lift", fmt::format("{} N/m {}, across the flow", num(v.lift_mean, "{:.6g}"), kind),
         fmt::format("{} N/m (−ρUΓ)", num(r.forces.lift_kutta_joukowski, "{:.6g}")));
     row("drag", fmt::format("{} N/m {}, along the flow", num(v.drag_mean, "{:.6g}"), kind), "0 N/m");
-    row("Magnus S", fmt::format("{} kg/m", fmt_opt(r.forces.magnus_S, "{:.6g}")),
+    row("Magnus S", r.forces.magnus_S ? fmt::format("{} kg/m", fmt_opt(r.forces.magnus_S, "{:.6g}")) : "undefined",
         fmt::format("2πρa² = {} kg/m", fmt_opt(r.forces.magnus_S_exact, "{:.6g}")));
     // A finding only where the model holds: resolved, and 2D laminar flow is what a real cylinder sees.
     const std::string ratio = fmt_opt(v.magnus_ratio, "{:.4f}"), re = fmt_opt(v.reynolds, "{:.4g}"),
@@ -178,7 +178,7 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
   std::string sep;
   for (double th : v.separation) sep += (sep.empty() ? "" : ", ") + fmt::format("{:.2f}°", th * 180.0 / M_PI);
   line("separation", sep.empty() ? "none (no point where the wall flow leaves the wall)"
-                                 : "θ = " + sep + " (last step; τ_w changes sign from + to −)");
+                                 : "θ = " + sep + (v.steady ? " (steady" : " (last step") + "; τ_w changes sign from + to −)");
   if (v.recirculation_length)
     line("recirculation", *v.recirculation_length > 0.0
                               ? fmt::format("L/D = {:.4f} (steady)", *v.recirculation_length)

@@ -188,7 +188,12 @@ TEST_CASE("navier-stokes summary: an attached steady flow has no separation and 
   const std::string sep = test::line_of(b.out, "separation");
   CAPTURE(sep);
   CHECK(std::regex_match(
-      sep, std::regex("separation     θ = 5\\d\\.\\d\\d°, 30\\d\\.\\d\\d° \\(last step; τ_w .*")));
+      sep, std::regex("separation     θ = 5\\d\\.\\d\\d°, 30\\d\\.\\d\\d° \\(steady; τ_w .*")));
+  // No spin: S is undefined (no unit after it), and a long value keeps a space before the ideal column.
+  CHECK(test::line_of(b.out, "Magnus S").rfind("Magnus S       undefined  ", 0) == 0);
+  const std::string lift = test::line_of(b.out, "lift");
+  CAPTURE(lift);
+  CHECK(lift.find("across the flow ") != std::string::npos);
   CHECK(test::line_of(b.out, "recirculation").find("L/D = ") != std::string::npos);
 }
 
