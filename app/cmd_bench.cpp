@@ -77,7 +77,8 @@ void add_bench_command(CLI::App& app) {
   add_force_flag(b);
   output_file(b->add_option("--plot", o->plot, "write a log-log PNG of C_L error against time (the Pareto front)"));
   b->callback([o, b] {
-    const Case c = load_case(o->case_path, o->sets);
+    Case c = load_case(o->case_path, o->sets);
+    retitle_for_overrides(c, o->case_path, o->sets);
     if (c.model == FlowModel::navier_stokes) {
       for (const char* k : potential_only)
         if (b->count(k))

@@ -27,28 +27,6 @@ namespace magnus {
 
 namespace {
 
-/// With --set on a key of the scene (model, cylinder, flow, circulation) the case's title may describe
-/// another scene ("spin ratio 1" run at α = 0): the title becomes "<model> flow, <case file> with --set
-/// k=v, …", and the summary, the file and the pictures (which add the resolved α and Re) say what ran.
-/// A --set title=… is kept as given.
-void retitle_for_overrides(Case& c, const std::string& case_path, const std::vector<std::string>& sets) {
-  std::string changed;
-  for (const auto& s : sets) {
-    std::string key = s.substr(0, s.find('='));
-    key.erase(0, key.find_first_not_of(' '));
-    key.erase(key.find_last_not_of(' ') + 1);
-    if (key == "title") return;
-    const std::string section = key.substr(0, key.find('.'));
-    if (section == "model" || section == "cylinder" || section == "flow" || section == "circulation")
-      changed += (changed.empty() ? "" : " ") + s;
-  }
-  if (changed.empty()) return;
-  const std::string name = case_path.substr(case_path.find_last_of('/') + 1);
-  c.title = fmt::format("{} flow, {} with --set {}",
-                        c.model == FlowModel::navier_stokes ? "Navier–Stokes" : "Potential", name, changed);
-  c.source_text = to_toml(c);
-}
-
 void command_run(const std::string& case_path, const std::string& output,
                  const std::vector<std::string>& sets, int threads, bool quiet, size_t max_bytes, bool resume,
                  bool json) {

@@ -111,7 +111,8 @@ void command_stability(const StabilityCliOptions& o) {
   if (o.critical.empty() && !o.tolerance.empty())
     throw std::invalid_argument("--tolerance: only used with --critical-spin A:B (the bisection's bracket width)");
   const CriticalRange range = o.critical.empty() ? CriticalRange{} : parse_critical(o);
-  const Case c = load_case(o.case_path, o.sets);
+  Case c = load_case(o.case_path, o.sets);
+  retitle_for_overrides(c, o.case_path, o.sets);
   if (c.model != FlowModel::navier_stokes)
     throw std::runtime_error(o.case_path + ": magnus stability needs model.flow = \"navier-stokes\"");
   check_resolvable(c);

@@ -127,7 +127,8 @@ void command_ns_sweep(const SweepOptions& o, const Case& c, const SweepRange& al
 
 /// `--reynolds` alone: a navier-stokes case's own spin ratio, continued in Re.
 void command_ns_reynolds_sweep(const SweepOptions& o) {
-  const Case c = load_case(o.case_path, o.sets);
+  Case c = load_case(o.case_path, o.sets);
+  retitle_for_overrides(c, o.case_path, o.sets);
   if (c.model != FlowModel::navier_stokes)
     throw std::runtime_error(fmt::format(
         "{}: --reynolds alone sweeps a navier-stokes case; a potential case needs --spin-ratio or --circulation",
@@ -156,6 +157,7 @@ void command_sweep(const SweepOptions& o) {
   if (by_spin) sets.push_back(fmt::format("cylinder.spin_ratio={}", range.values.front()));
   sets.insert(sets.end(), o.sets.begin(), o.sets.end());
   Case c = load_case(o.case_path, sets);
+  retitle_for_overrides(c, o.case_path, o.sets);  // the user's --set, not the sweep's own spin
   if (c.model == FlowModel::navier_stokes) {
     if (!by_spin)
       throw std::runtime_error("--circulation: a navier-stokes sweep varies the spin ratio (--spin-ratio)");

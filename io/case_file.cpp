@@ -365,4 +365,22 @@ std::string to_toml(const Case& c) {
   return t;
 }
 
+void retitle_for_overrides(Case& c, const std::string& case_path, const std::vector<std::string>& sets) {
+  std::string changed;
+  for (const auto& s : sets) {
+    std::string key = s.substr(0, s.find('='));
+    key.erase(0, key.find_first_not_of(' '));
+    key.erase(key.find_last_not_of(' ') + 1);
+    if (key == "title") return;
+    const std::string section = key.substr(0, key.find('.'));
+    if (section == "model" || section == "cylinder" || section == "flow" || section == "circulation")
+      changed += (changed.empty() ? "" : " ") + s;
+  }
+  if (changed.empty()) return;
+  const std::string name = case_path.substr(case_path.find_last_of('/') + 1);
+  c.title = fmt::format("{} flow, {} with --set {}",
+                        c.model == FlowModel::navier_stokes ? "Navier–Stokes" : "Potential", name, changed);
+  c.source_text = to_toml(c);
+}
+
 }  // namespace magnus

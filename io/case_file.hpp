@@ -21,6 +21,12 @@ constexpr double kNsMinReynolds = 0.01;
 Case parse_case(const std::string& toml_text, const std::string& origin,
                 const std::vector<std::string>& overrides = {});
 
+/// With --set on a key of the scene (model, cylinder, flow, circulation) the case's title may describe
+/// another scene ("spin ratio 1" run at α = 0): the title becomes "<model> flow, <case file> with --set
+/// k=v, …" (and source_text follows), so the summary, the file and the pictures say what ran. A --set
+/// title=… is kept as given; other keys (grid, time, output) keep the case's title.
+void retitle_for_overrides(Case& c, const std::string& case_path, const std::vector<std::string>& sets);
+
 /// Read and parse a case file. Throws CaseError (missing file, bad TOML, bad keys or values).
 Case load_case(const std::string& path, const std::vector<std::string>& overrides = {});
 

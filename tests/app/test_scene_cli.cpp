@@ -191,7 +191,7 @@ TEST_CASE("flow.direction 90°: lift and drag labelled by the flow's frame, the 
   CHECK(a.out.find("world frame") == std::string::npos);
 }
 
-TEST_CASE("run --set on a scene key replaces the case title, other keys and --set title keep it",
+TEST_CASE("run and sweep --set on a scene key replace the case title, other keys and --set title keep it",
           "[app][scene]") {
   const std::string dir = test::temp_dir("scene-retitle");
   const std::string c = std::string(MAGNUS_SOURCE_DIR) + "/cases/spin_ratio_1.toml";
@@ -218,4 +218,14 @@ TEST_CASE("run --set on a scene key replaces the case title, other keys and --se
   INFO(t.err);
   REQUIRE(t.status == 0);
   CHECK(first_line(t.out).find("— still") != std::string::npos);
+  // A sweep is retitled by the user's --set, not by the spin ratio it sets itself.
+  const auto s = test::magnus_cmd({"sweep", c, "--spin-ratio", "0:1:0.5", "--set", "flow.speed=5", "--set",
+                                   "grid.n_theta=32", "-o", dir + "/s.h5"},
+                                  dir);
+  INFO(s.err);
+  REQUIRE(s.status == 0);
+  CHECK(first_line(s.out) == std::string("magnus ") + MAGNUS_VERSION +
+                                 " — sweep: Potential flow, spin_ratio_1.toml with --set flow.speed=5");
+  CHECK(ResultFile(dir + "/s.h5", std::vector<std::string>{"magnus-sweep"}).attr_string("/", "title") ==
+        "Potential flow, spin_ratio_1.toml with --set flow.speed=5");
 }
