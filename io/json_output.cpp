@@ -14,6 +14,7 @@
 #include "io/report_scene.hpp"
 #include "io/report_viscous.hpp"
 #include "io/rotor_data.hpp"
+#include "io/scene_forces.hpp"
 #include "io/schema.hpp"
 #include "postproc/forces.hpp"
 
@@ -218,6 +219,14 @@ Json result_json(const FlowResult& r, const std::string& output_path) {
     j["separation"] = quantity(r.viscous->separation, "rad");
   } else {
     j["derived"] = potential_derived(r, j);
+  }
+  if (r.c.scene.direction_deg != 0.0) {  // lift and drag are in the flow's frame; the world's F_x, F_y beside
+    const SceneForces f = scene_forces(r);
+    const WorldForce w = world_force(f.drag, f.lift, r.c.scene.direction_deg);
+    j["derived"]["force_world_x"] = quantity(w.x, "N/m");
+    j["derived"]["force_world_y"] = quantity(w.y, "N/m");
+  }
+  if (!r.viscous) {
     Json st;
     st["numeric"] = points_json(r.stagnation, r.c.scene.radius);
     st["exact"] = points_json(r.stagnation_exact, r.c.scene.radius);

@@ -56,6 +56,11 @@ TEST_CASE("flow.direction 90°: the same C_L, C_D and the flow turned, probed at
   CHECK(value(b["forces"]["cl"]) == value(a["forces"]["cl"]));
   CHECK(value(b["forces"]["cd"]) == value(a["forces"]["cd"]));
   CHECK(value(b["parameters"]["direction"]) == 90.0);
+  // The world frame's components of the same force: towards +y, drag D is F_y and lift L is −F_x.
+  CHECK(value(b["derived"]["force_world_x"]) == Approx(-value(b["forces"]["lift"])).margin(1e-12));
+  CHECK(value(b["derived"]["force_world_y"]) == Approx(value(b["forces"]["drag"])).margin(1e-12));
+  CHECK(b["derived"]["force_world_x"]["units"] == "N/m");
+  CHECK_FALSE(a["derived"].contains("force_world_x"));  // towards +x they are lift and drag themselves
   // A world point P of the turned flow sees the unturned flow at R(−90°)P, its velocity turned by +90°:
   // u_b(x, y) = R(90°) u_a(y, −x), i.e. (u_x, u_y)_b = (−u_y, u_x)_a; the pressure is the same.
   const std::vector<std::pair<double, double>> pts = {{0.15, 0.05}, {-0.2, 0.13}, {0.03, -0.31}, {0.0, 0.12}};
