@@ -225,9 +225,11 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
       }
       // Periodic: the last periods agree (full-grid periods only).
       if (!res.has_coefficients) continue;
-      const std::vector<PeriodWindow> w =
-          lift_periods(res.history, size_t(o.converged_periods) + 1, first_fine);
-      if (w.size() >= size_t(o.converged_periods) + 1) {
+      // The last periods, enough for both tests below (the means' agreement and the spectrum's).
+      const size_t n_same = size_t(o.converged_periods) + 1;
+      const std::vector<PeriodWindow> all = lift_periods(res.history, std::max<size_t>(8, n_same), first_fine);
+      const std::vector<PeriodWindow> w(all.end() - std::min(all.size(), n_same), all.end());
+      if (w.size() >= n_same) {
         bool same = true;
         for (size_t q = 1; q < w.size(); ++q) {
           const double T0 = w[q - 1].t1 - w[q - 1].t0, T1 = w[q].t1 - w[q].t0;
@@ -235,7 +237,7 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
                  std::fabs(w[q].C_D - w[q - 1].C_D) < o.mean_tol && std::fabs(T1 - T0) < o.mean_tol * T1;
         }
         // …and the spectrum of the last periods peaks at the same frequency (a false period never stops it).
-        if (same && period_disagreement(res.history, lift_periods(res.history, 8, first_fine)).empty()) {
+        if (same && period_disagreement(res.history, all).empty()) {  // it reads the last 8 periods
           res.converged = true;
           res.message = "periodic means converged";
           break;
