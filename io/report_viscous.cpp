@@ -24,7 +24,8 @@ std::string num(double v, const char* spec = "{:.6g}") { return figure(v + 0.0, 
 
 std::string wall(double seconds) {
   return seconds < 60.0 ? fmt::format("{:.3g} s", seconds)
-                        : fmt::format("{}:{:02d} min", saturate_cast<long>(seconds) / 60, saturate_cast<long>(seconds) % 60);
+                        : fmt::format("{}:{:02d} min", saturate_cast<long>(seconds) / 60,
+                                      saturate_cast<long>(seconds) % 60);
 }
 
 /// What took the time: Newton's method, the eigenvalue test and the march, each when run ("" if none).
@@ -43,49 +44,17 @@ std::string resolving_text(const Case& c) {
   return fmt::format("grid.n_theta ≥ {:.0f} with grid.n_r = 0, or grid.n_r ≥ {:.0f}", need.n_theta, need.n_r);
 }
 
-}  // namespace
-
-bool above_laminar_range(double reynolds) { return reynolds > kReynolds3D * (1.0 + 1e-9); }
-
-double wall_cells(const PolarGrid& g, double reynolds, double alpha) {
-  return (2.0 * g.a / std::sqrt(reynolds * (1.0 + alpha * alpha))) / (g.r[1] - g.r[0]);
+/// "label          text\n": a summary line, the label in a column of 15.
+std::string labelled(const std::string& label, const std::string& text) {
+  return fmt::format("{:<15}{}\n", label, text);
 }
 
-bool viscous_length_beyond_grid(const PolarGrid& g, double reynolds) {
-  return reynolds > 0.0 && 2.0 * g.a / reynolds > g.outer_radius();
-}
-
-std::string viscous_summary_text(const FlowResult& r, const std::string& output_path) {
-  check_finite(r);  // nothing that is not finite is printed
-  const Case& c = r.c;
-  const Scene& sc = c.scene;
+/// The boundary layer's line: the wall cells across D/√(Re(1 + α²)) and what they mean for the forces.
+std::string wall_text(const FlowResult& r, double cells, const std::string& raise) {
   const ViscousPart& v = *r.viscous;
-  const PolarGrid& g = r.grid;
-  const bool moving = sc.speed > 0.0;
-  std::string s;
-  auto line = [&s](const std::string& label, const std::string& text) {
-    s += fmt::format("{:<15}{}\n", label, text);
-  };
-  s += fmt::format("magnus {} — {}\n", MAGNUS_VERSION, c.title);
-  // Forces that mean nothing are said so first, before any figure could be read as a finding.
-  const double cells = v.reynolds && *v.reynolds > 0.0 ? wall_cells(g, *v.reynolds, sc.spin_ratio()) : 1e300;
   const bool unresolved = cells < kWallCellsResolved;
-  const std::string raise = cells < kWallCellsForPercent ? resolving_text(c) : std::string();
-  if (unresolved)
-    line("verdict", fmt::format("NOT RESOLVED: {} wall cells across the boundary layer D/√(Re(1 + α²)), below "
-                                "{:.0f}: the forces below are not meaningful ({} gives one cell)",
-                                num(cells, "{:.2g}"), kWallCellsResolved, raise));
-  line("case", fmt::format("a = {} m, ω = {} rad/s, U = {} m/s, α = aω/U = {}, ρ = {} kg/m³", num(sc.radius),
-                           num(sc.spin), num(sc.speed), moving ? num(sc.spin_ratio()) : "undefined (U = 0)",
-                           num(sc.density)));
-  line("", fmt::format("ν = {} m²/s, Re = U·2a/ν = {}", num(sc.viscosity),
-                       v.reynolds ? num(*v.reynolds, "{:.6g}") : "undefined (U = 0)"));
-  line("model",
-       fmt::format("navier-stokes: 2D incompressible laminar, vorticity–streamfunction, no slip held "
-                   "exactly; advection order {} in θ, {} in ξ (solver.advection_order, advection_order_xi)",
-                   c.solver.advection_order, c.solver.advection_order_xi));
-  line("grid", fmt::format("n_θ × n_r = {} × {} ({} nodes), geometric spacing, R/a = {:.6g}", g.n_theta,
-                           g.n_r, g.nodes(), g.outer_radius() / g.a));
+  std::string s;
+  auto line = [&s](const std::string& label, const std::string& text) { s += labelled(label, text); };
   // The boundary layer's thickness scales as D/√Re: the cells across it say how well the wall is resolved.
   if (v.reynolds && *v.reynolds > 0.0) {
     const std::string grade =
@@ -105,6 +74,15 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
     line("", fmt::format("boundary layer: {} wall cells across D/√(Re(1 + α²)){}",
                          cells < kWallCellsResolved ? num(cells, "{:.2g}") : num(cells, "{:.1f}"), grade));
   }
+  return s;
+}
+
+/// How the run went: Newton's method or the march (steps, Δt, speed), the phases' times, why it stopped.
+std::string run_text(const FlowResult& r) {
+  const Scene& sc = r.c.scene;
+  const ViscousPart& v = *r.viscous;
+  std::string s;
+  auto line = [&s](const std::string& label, const std::string& text) { s += labelled(label, text); };
   const double unit = v.time_unit;
   const long steps_here = v.steps - v.steps_resumed;  // this run's
   const double steps_per_s = r.timing.solve_s > 0.0 ? double(steps_here) / r.timing.solve_s : 0.0;
@@ -122,10 +100,22 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
   line("", fmt::format("stopped: {}{}", v.status, v.partial ? " — a PARTIAL result (the file says so)" : ""));
   if (!v.converged && !v.partial)
     line("", "not converged: the means below are the last period's (or the last step's); raise time.end");
+  return s;
+}
+
+/// The figures beside the ideal ones: C_L, C_D, St, lift, drag, S (a finding only where resolved), torque.
+std::string figures_text(const FlowResult& r, bool unresolved) {
+  const Scene& sc = r.c.scene;
+  const ViscousPart& v = *r.viscous;
+  const bool moving = sc.speed > 0.0;
+  std::string s;
+  auto line = [&s](const std::string& label, const std::string& text) { s += labelled(label, text); };
   s += "\n";
   s += fmt::format("{:<15}{:<40}{}\n", "", "viscous (this run)", "ideal (potential flow, same scene)");
   auto row = [&](const std::string& label, const std::string& a, const std::string& b) {
-    s += fmt::format("{:<15}{:<39} {}\n", label, a, b);  // a space between the columns, always
+    std::string cell = fmt::format("{:<40}", a);  // a column of 40, and a space before b when a fills it
+    if (!b.empty() && cell.back() != ' ') cell += ' ';
+    s += fmt::format("{:<15}{}{}\n", label, cell, b);
   };
   const char* kind = v.steady ? "(steady)" : "(mean)";  // a steady flow's mean is its value
   if (moving) {
@@ -148,20 +138,22 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
     row("lift", fmt::format("{} N/m {}, across the flow", num(v.lift_mean, "{:.6g}"), kind),
         fmt::format("{} N/m (−ρUΓ)", num(r.forces.lift_kutta_joukowski, "{:.6g}")));
     row("drag", fmt::format("{} N/m {}, along the flow", num(v.drag_mean, "{:.6g}"), kind), "0 N/m");
-    row("Magnus S", r.forces.magnus_S ? fmt::format("{} kg/m", fmt_opt(r.forces.magnus_S, "{:.6g}")) : "undefined",
+    row("Magnus S",
+        r.forces.magnus_S ? fmt::format("{} kg/m", fmt_opt(r.forces.magnus_S, "{:.6g}")) : "undefined",
         fmt::format("2πρa² = {} kg/m", fmt_opt(r.forces.magnus_S_exact, "{:.6g}")));
     // A finding only where the model holds: resolved, and 2D laminar flow is what a real cylinder sees.
     const std::string ratio = fmt_opt(v.magnus_ratio, "{:.4f}"), re = fmt_opt(v.reynolds, "{:.4g}"),
                       al = num(sc.spin_ratio(), "{:.4g}");
-    line("S/(2πρa²)",
-         !v.magnus_ratio ? std::string("undefined (ω = 0: no Magnus lift to compare)")
-         : unresolved    ? ratio + " — not meaningful: the boundary layer is not resolved (see the verdict)"
-         : v.reynolds && above_laminar_range(*v.reynolds)
-             ? fmt::format("{}: the 2D laminar model's share of the ideal lift at Re = {}, α = {} (not a real "
-                           "cylinder's: its flow is three-dimensional there)",
-                           ratio, re, al)
-             : fmt::format("{}: the share of the ideal lift a real cylinder gets at Re = {}, α = {}", ratio, re,
-                           al));
+    line(
+        "S/(2πρa²)",
+        !v.magnus_ratio ? std::string("undefined (ω = 0: no Magnus lift to compare)")
+        : unresolved    ? ratio + " — not meaningful: the boundary layer is not resolved (see the verdict)"
+        : v.reynolds && above_laminar_range(*v.reynolds)
+            ? fmt::format("{}: the 2D laminar model's share of the ideal lift at Re = {}, α = {} (not a real "
+                          "cylinder's: its flow is three-dimensional there)",
+                          ratio, re, al)
+            : fmt::format("{}: the share of the ideal lift a real cylinder gets at Re = {}, α = {}", ratio,
+                          re, al));
   } else {
     line("C_L, C_D", "undefined (U = 0: no dynamic pressure to scale by); forces in N/m below");
     line("forces", fmt::format("F_x = {} N/m, F_y = {} N/m (last step)", num(v.last.F_x, "{:.4g}"),
@@ -174,11 +166,22 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
     line("", fmt::format("steady potential vortex: −4πμa²ω = {} N·m/m (this run: {:+.2f}%)",
                          num(exact, "{:.6g}"), exact != 0.0 ? 100.0 * (v.torque_mean / exact - 1.0) : 0.0));
   }
-  s += scene_lines(r);  // direction, a rotor sail's course, the span's totals
+  return s;
+}
+
+/// Separation, recirculation, the steady study, stability, and the notes on Re, D/Re and R.
+std::string findings_text(const FlowResult& r) {
+  const Scene& sc = r.c.scene;
+  const ViscousPart& v = *r.viscous;
+  const PolarGrid& g = r.grid;
+  const bool moving = sc.speed > 0.0;
+  std::string s;
+  auto line = [&s](const std::string& label, const std::string& text) { s += labelled(label, text); };
   std::string sep;
   for (double th : v.separation) sep += (sep.empty() ? "" : ", ") + fmt::format("{:.2f}°", th * 180.0 / M_PI);
   line("separation", sep.empty() ? "none (no point where the wall flow leaves the wall)"
-                                 : "θ = " + sep + (v.steady ? " (steady" : " (last step") + "; τ_w changes sign from + to −)");
+                                 : "θ = " + sep + (v.steady ? " (steady" : " (last step") +
+                                       "; τ_w changes sign from + to −)");
   if (v.recirculation_length)
     line("recirculation", *v.recirculation_length > 0.0
                               ? fmt::format("L/D = {:.4f} (steady)", *v.recirculation_length)
@@ -211,8 +214,57 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
                     "−9%), and at R ≤ 1.5 D the flow came out steady (C_D 0.80 against 1.10); raise "
                     "domain.outer_radius (default 100 = 50 D)",
                     num(g.outer_radius() / (2.0 * g.a), "{:.3g}")));
+  return s;
+}
+
+}  // namespace
+
+bool above_laminar_range(double reynolds) { return reynolds > kReynolds3D * (1.0 + 1e-9); }
+
+double wall_cells(const PolarGrid& g, double reynolds, double alpha) {
+  return (2.0 * g.a / std::sqrt(reynolds * (1.0 + alpha * alpha))) / (g.r[1] - g.r[0]);
+}
+
+bool viscous_length_beyond_grid(const PolarGrid& g, double reynolds) {
+  return reynolds > 0.0 && 2.0 * g.a / reynolds > g.outer_radius();
+}
+
+std::string viscous_summary_text(const FlowResult& r, const std::string& output_path) {
+  check_finite(r);  // nothing that is not finite is printed
+  const Case& c = r.c;
+  const ViscousPart& v = *r.viscous;
+  const PolarGrid& g = r.grid;
+  const Scene& sc = c.scene;
+  std::string s = fmt::format("magnus {} — {}\n", MAGNUS_VERSION, c.title);
+  // Forces that mean nothing are said so first, before any figure could be read as a finding.
+  const double cells = v.reynolds && *v.reynolds > 0.0 ? wall_cells(g, *v.reynolds, sc.spin_ratio()) : 1e300;
+  const bool unresolved = cells < kWallCellsResolved;
+  const std::string raise = cells < kWallCellsForPercent ? resolving_text(c) : std::string();
+  if (unresolved)
+    s += labelled("verdict",
+                  fmt::format("NOT RESOLVED: {} wall cells across the boundary layer D/√(Re(1 + α²)), "
+                              "below {:.0f}: the forces below are not meaningful ({} gives one cell)",
+                              num(cells, "{:.2g}"), kWallCellsResolved, raise));
+  s += labelled("case",
+                fmt::format("a = {} m, ω = {} rad/s, U = {} m/s, α = aω/U = {}, ρ = {} kg/m³", num(sc.radius),
+                            num(sc.spin), num(sc.speed),
+                            sc.speed > 0.0 ? num(sc.spin_ratio()) : "undefined (U = 0)", num(sc.density)));
+  s += labelled("", fmt::format("ν = {} m²/s, Re = U·2a/ν = {}", num(sc.viscosity),
+                                v.reynolds ? num(*v.reynolds, "{:.6g}") : "undefined (U = 0)"));
+  s += labelled(
+      "model",
+      fmt::format("navier-stokes: 2D incompressible laminar, vorticity–streamfunction, no slip held "
+                  "exactly; advection order {} in θ, {} in ξ (solver.advection_order, advection_order_xi)",
+                  c.solver.advection_order, c.solver.advection_order_xi));
+  s += labelled("grid", fmt::format("n_θ × n_r = {} × {} ({} nodes), geometric spacing, R/a = {:.6g}",
+                                    g.n_theta, g.n_r, g.nodes(), g.outer_radius() / g.a));
+  s += wall_text(r, cells, raise);
+  s += run_text(r);
+  s += figures_text(r, unresolved);
+  s += scene_lines(r);  // direction, a rotor sail's course, the span's totals
+  s += findings_text(r);
   if (!output_path.empty())
-    line("output", fmt::format("{} (+ {} for ParaView)", output_path, xdmf_path(output_path)));
+    s += labelled("output", fmt::format("{} (+ {} for ParaView)", output_path, xdmf_path(output_path)));
   return s;
 }
 

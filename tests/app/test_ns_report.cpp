@@ -194,6 +194,10 @@ TEST_CASE("navier-stokes summary: an attached steady flow has no separation and 
   const std::string lift = test::line_of(b.out, "lift");
   CAPTURE(lift);
   CHECK(lift.find("across the flow ") != std::string::npos);
+  const std::string parts = test::line_of(b.out, "               last step");  // no second column: no space
+  CAPTURE(parts);
+  REQUIRE_FALSE(parts.empty());
+  CHECK(parts.back() != ' ');
   CHECK(test::line_of(b.out, "recirculation").find("L/D = ") != std::string::npos);
 }
 
