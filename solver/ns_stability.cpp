@@ -71,6 +71,62 @@ void set_mode(StabilityResult& res, const std::vector<cplx>& x, size_t nodes) {
   res.mode_Gamma_R = x.back() * scale;
 }
 
+/// The searches' eigenpairs into res (λ in U/D): each shift with its disk, the reach of the nearest
+/// search, the eigenvalues without repeats, rightmost first, a complex one followed by its conjugate (at
+/// most count), their residuals, and the leading eigenvector as the mode.
+void gather_eigenpairs(std::vector<ShiftSearch>& searches, double unit, int count, size_t nodes,
+                       StabilityResult& res) {
+  std::vector<Eigenpair> all;
+  double reach = -1.0;
+  for (auto& sr : searches) {
+    res.shifts.push_back({sr.sigma / unit, int(sr.found.size()), sr.radius / unit, sr.converged, sr.restarts});
+    double far = 0.0;
+    for (const auto& e : sr.found) far = std::max(far, std::abs(e.lambda - sr.sigma) / unit);
+    if (!sr.found.empty()) reach = reach < 0.0 ? far : std::min(reach, far);
+    for (auto& e : sr.found) all.push_back(std::move(e));
+  }
+
+  // Im λ ≥ 0 representatives, without repeats; then each complex one followed by its conjugate.
+  std::vector<Eigenpair> uniq;
+  for (auto& e : all) {
+    if (e.lambda.imag() < 0.0) {
+      e.lambda = std::conj(e.lambda);
+      for (auto& z : e.x) z = std::conj(z);
+    }
+    bool seen = false;
+    for (auto& u : uniq)
+      if (std::abs(u.lambda - e.lambda) <= 1e-6 * (unit + std::abs(e.lambda))) {
+        seen = true;
+        if (e.residual < u.residual) u.residual = e.residual;
+      }
+    if (!seen) uniq.push_back(std::move(e));
+  }
+  std::stable_sort(uniq.begin(), uniq.end(),
+                   [](const Eigenpair& u, const Eigenpair& v) { return u.lambda.real() > v.lambda.real(); });
+  for (const auto& e : uniq) {
+    const cplx l = e.lambda / unit;
+    const bool real = std::fabs(l.imag()) <= 1e-8 * (1.0 + std::abs(l));
+    res.eigenvalues.push_back(real ? cplx(l.real(), 0.0) : l);
+    res.residuals.push_back(e.residual);
+    if (!real) res.eigenvalues.push_back(std::conj(l)), res.residuals.push_back(e.residual);
+  }
+  if (res.eigenvalues.size() > size_t(count)) res.eigenvalues.resize(size_t(count)), res.residuals.resize(size_t(count));
+  res.reach = std::max(reach, 0.0);
+  if (!uniq.empty()) set_mode(res, uniq.front().x, nodes);
+}
+
+/// One line: stable or not, the leading eigenvalue, its growth rate and St, and whether the strip right of
+/// it was covered.
+std::string verdict_message(const StabilityResult& res) {
+  if (res.eigenvalues.empty()) return "no eigenvalue converged (shift-invert Arnoldi)";
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "%s: leading eigenvalue %.4g %+.4gi (U/D), growth rate %.4g, St %.4g%s",
+                res.stable ? "stable" : "unstable", res.eigenvalues.front().real(), res.eigenvalues.front().imag(),
+                res.growth_rate(), res.strouhal(),
+                res.covered ? "" : " (the search did not cover the strip right of it: not verified)");
+  return buf;
+}
+
 }  // namespace
 
 double stability_speed(const NsParams& p) {
@@ -141,54 +197,9 @@ StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, in
     throw;
   }
   if (symbolic) umfpack_zl_free_symbolic(&symbolic);
-  std::vector<Eigenpair> all;
-  double reach = -1.0;
-  for (auto& sr : searches) {
-    res.shifts.push_back({sr.sigma / unit, int(sr.found.size()), sr.radius / unit, sr.converged, sr.restarts});
-    double far = 0.0;
-    for (const auto& e : sr.found) far = std::max(far, std::abs(e.lambda - sr.sigma) / unit);
-    if (!sr.found.empty()) reach = reach < 0.0 ? far : std::min(reach, far);
-    for (auto& e : sr.found) all.push_back(std::move(e));
-  }
-
-  // Im λ ≥ 0 representatives, without repeats; then each complex one followed by its conjugate.
-  std::vector<Eigenpair> uniq;
-  for (auto& e : all) {
-    if (e.lambda.imag() < 0.0) {
-      e.lambda = std::conj(e.lambda);
-      for (auto& z : e.x) z = std::conj(z);
-    }
-    bool seen = false;
-    for (auto& u : uniq)
-      if (std::abs(u.lambda - e.lambda) <= 1e-6 * (unit + std::abs(e.lambda))) {
-        seen = true;
-        if (e.residual < u.residual) u.residual = e.residual;
-      }
-    if (!seen) uniq.push_back(std::move(e));
-  }
-  std::stable_sort(uniq.begin(), uniq.end(),
-                   [](const Eigenpair& u, const Eigenpair& v) { return u.lambda.real() > v.lambda.real(); });
-  for (const auto& e : uniq) {
-    const cplx l = e.lambda / unit;
-    const bool real = std::fabs(l.imag()) <= 1e-8 * (1.0 + std::abs(l));
-    res.eigenvalues.push_back(real ? cplx(l.real(), 0.0) : l);
-    res.residuals.push_back(e.residual);
-    if (!real) res.eigenvalues.push_back(std::conj(l)), res.residuals.push_back(e.residual);
-  }
-  if (res.eigenvalues.size() > size_t(count)) res.eigenvalues.resize(size_t(count)), res.residuals.resize(size_t(count));
-  res.reach = std::max(reach, 0.0);
-  if (!uniq.empty()) set_mode(res, uniq.front().x, size_t(g.nodes()));
+  gather_eigenpairs(searches, unit, count, size_t(g.nodes()), res);
   res.stable = !res.eigenvalues.empty() && res.eigenvalues.front().real() < 0.0;
-  char buf[256];
-  if (res.eigenvalues.empty()) {
-    res.message = "no eigenvalue converged (shift-invert Arnoldi)";
-  } else {
-    std::snprintf(buf, sizeof buf, "%s: leading eigenvalue %.4g %+.4gi (U/D), growth rate %.4g, St %.4g%s",
-                  res.stable ? "stable" : "unstable", res.eigenvalues.front().real(),
-                  res.eigenvalues.front().imag(), res.growth_rate(), res.strouhal(),
-                  res.covered ? "" : " (the search did not cover the strip right of it: not verified)");
-    res.message = buf;
-  }
+  res.message = verdict_message(res);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }
