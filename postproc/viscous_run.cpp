@@ -177,10 +177,11 @@ FlowResult viscous_result(const Case& c, const NsParams& p, const UnsteadyResult
 
 namespace {
 
-/// The steady result of a converged Newton solve, with its status line and solve time (one history sample)
-/// and, when computed, the leading eigenvalue of its linear stability.
+/// The steady result of a converged Newton solve, with its status line (one history sample), Newton's wall
+/// time (s) and, when computed, the leading eigenvalue of its linear stability and its time; the run's
+/// time is their sum.
 FlowResult steady_result(const Case& c, const NsParams& p, const PolarGrid& g, NsState state,
-                         const std::string& status, double wall_seconds, const StabilityResult* stab) {
+                         const std::string& status, double newton_seconds, const StabilityResult* stab) {
   UnsteadyResult u;
   u.state = std::move(state);
   u.steady = u.converged = true;
@@ -191,9 +192,11 @@ FlowResult steady_result(const Case& c, const NsParams& p, const PolarGrid& g, N
   u.C_L_mean = f.C_L.value_or(0.0), u.C_D_mean = f.C_D.value_or(0.0), u.C_M_mean = f.C_M.value_or(0.0);
   u.M_mean = f.M;
   u.reference_speed = c.scene.reference_speed();
-  u.wall_seconds = wall_seconds;
+  u.wall_seconds = newton_seconds + (stab ? stab->seconds : 0.0);
   FlowResult r = viscous_result(c, p, u, {});
   r.viscous->newton = true;
+  r.viscous->newton_seconds = newton_seconds;
+  if (stab) r.viscous->stability_seconds = stab->seconds;
   if (stab && !stab->eigenvalues.empty()) {
     r.viscous->eigenvalue_real = stab->eigenvalues.front().real();
     r.viscous->eigenvalue_imag = stab->eigenvalues.front().imag();
@@ -223,7 +226,6 @@ FlowResult steady_by_newton(const Case& c, const NsParams& p, const PolarGrid& g
   NsState state = std::move(study.state);
   study.state = NsState{};
   FlowResult r = steady_result(c, p, g, std::move(state), status, study.wall_seconds, nullptr);
-  r.viscous->newton_seconds = study.wall_seconds;
   r.viscous->steady_study = std::move(study);
   return r;
 }
@@ -264,7 +266,6 @@ AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g) {
   if (plan.start == AutoStart::newton_only) {
     a.steady = steady_result(c, p, g, nr.state, "auto: steady (" + plan.why + "); " + newton_text(nr),
                              nr.wall_seconds, nullptr);
-    a.steady->viscous->newton_seconds = nr.wall_seconds;
     return a;
   }
   StabilityResult st;
@@ -295,9 +296,7 @@ AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g) {
                              fmt::format("auto: stable ({}{}); {}", lam,
                                          st.covered ? "" : "; not verified: the search left a gap right of it",
                                          newton_text(nr)),
-                             nr.wall_seconds + st.seconds, &st);
-    a.steady->viscous->newton_seconds = nr.wall_seconds;
-    a.steady->viscous->stability_seconds = st.seconds;
+                             nr.wall_seconds, &st);
   } else
     a.why = fmt::format("auto: marched in time (the steady state is unstable: {}); ", lam);
   return a;
