@@ -11,7 +11,7 @@
 #include "io/bench_table.hpp"
 #include "io/case_file.hpp"
 #include "io/hdf5_io.hpp"
-#include "postproc/ns_bench.hpp"
+#include "postproc/navier_stokes/bench.hpp"
 #include "plot/curves.hpp"
 
 namespace magnus {

@@ -19,9 +19,9 @@
 #include "io/output_size.hpp"
 #include "io/report.hpp"
 #include "io/result_reader.hpp"
-#include "postproc/pipeline.hpp"
-#include "postproc/plan.hpp"
-#include "solver/memory.hpp"
+#include "postproc/potential/pipeline.hpp"
+#include "postproc/potential/plan.hpp"
+#include "solver/potential/memory.hpp"
 
 namespace magnus {
 

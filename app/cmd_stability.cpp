@@ -14,9 +14,9 @@
 #include "io/case_keys.hpp"
 #include "io/json_output.hpp"
 #include "io/text_format.hpp"
-#include "postproc/ns_critical.hpp"
-#include "postproc/ns_resolution.hpp"
-#include "postproc/viscous_run.hpp"
+#include "postproc/navier_stokes/critical.hpp"
+#include "postproc/navier_stokes/resolution.hpp"
+#include "postproc/navier_stokes/run.hpp"
 
 namespace magnus {
 

@@ -13,7 +13,7 @@
 #include "io/checkpoint.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/report.hpp"
-#include "postproc/viscous_run.hpp"
+#include "postproc/navier_stokes/run.hpp"
 
 namespace magnus {
 

@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "postproc/bench.hpp"
-#include "postproc/ns_bench.hpp"
+#include "postproc/potential/bench.hpp"
+#include "postproc/navier_stokes/bench.hpp"
 
 namespace magnus {
 

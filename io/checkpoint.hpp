@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "postproc/viscous_run.hpp"
+#include "postproc/navier_stokes/run.hpp"
 
 namespace magnus {
 

@@ -16,7 +16,7 @@
 #include "io/rotor_data.hpp"
 #include "io/scene_forces.hpp"
 #include "io/schema.hpp"
-#include "postproc/forces.hpp"
+#include "postproc/potential/forces.hpp"
 
 namespace magnus {
 

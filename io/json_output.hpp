@@ -14,7 +14,7 @@
 #include "io/compare.hpp"
 #include "physics/reference_data.hpp"
 #include "postproc/result.hpp"
-#include "postproc/sweep.hpp"
+#include "postproc/potential/sweep.hpp"
 
 namespace magnus {
 

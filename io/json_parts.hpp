@@ -4,7 +4,7 @@
 #include <string>
 
 #include "io/json_output.hpp"
-#include "postproc/steady_study.hpp"
+#include "postproc/navier_stokes/steady_study.hpp"
 
 namespace magnus::json_parts {
 

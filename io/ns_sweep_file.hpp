@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "postproc/ns_continuation.hpp"
+#include "postproc/navier_stokes/continuation.hpp"
 
 namespace magnus {
 

@@ -7,10 +7,10 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "postproc/fields.hpp"
-#include "postproc/viscous_run.hpp"
-#include "solver/memory.hpp"
-#include "solver/navier_stokes.hpp"
+#include "postproc/potential/fields.hpp"
+#include "postproc/navier_stokes/run.hpp"
+#include "solver/potential/memory.hpp"
+#include "solver/navier_stokes/operator.hpp"
 
 namespace magnus {
 

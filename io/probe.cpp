@@ -11,7 +11,7 @@
 #include "io/case_keys.hpp"
 #include "io/inspect.hpp"
 #include "io/text_format.hpp"
-#include "postproc/fields.hpp"
+#include "postproc/potential/fields.hpp"
 #include "postproc/probe.hpp"
 
 namespace magnus {

@@ -9,7 +9,7 @@
 #include "io/report_scene.hpp"
 #include "io/report_viscous.hpp"
 #include "io/text_format.hpp"
-#include "postproc/forces.hpp"
+#include "postproc/potential/forces.hpp"
 
 namespace magnus {
 

@@ -13,8 +13,8 @@
 #include "io/report_scene.hpp"
 #include "io/report_steady.hpp"
 #include "io/text_format.hpp"
-#include "postproc/ns_resolution.hpp"
-#include "postproc/viscous_run.hpp"
+#include "postproc/navier_stokes/resolution.hpp"
+#include "postproc/navier_stokes/run.hpp"
 
 namespace magnus {
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "physics/reference_data.hpp"
-#include "postproc/sweep.hpp"
+#include "postproc/potential/sweep.hpp"
 
 namespace magnus {
 

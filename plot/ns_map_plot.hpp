@@ -3,7 +3,7 @@
 #include <string>
 
 #include "plot/curves.hpp"
-#include "postproc/ns_continuation.hpp"
+#include "postproc/navier_stokes/continuation.hpp"
 
 namespace magnus {
 

@@ -1,6 +1,6 @@
 #include "postproc/result.hpp"
 
-#include "solver/flow_solver.hpp"
+#include "solver/potential/flow_solver.hpp"
 
 namespace magnus {
 

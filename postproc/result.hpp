@@ -4,10 +4,10 @@
 #include <vector>
 #include <optional>
 
-#include "postproc/fields.hpp"
-#include "postproc/forces.hpp"
-#include "postproc/steady_study.hpp"
-#include "postproc/unsteady.hpp"
+#include "postproc/potential/fields.hpp"
+#include "postproc/potential/forces.hpp"
+#include "postproc/navier_stokes/steady_study.hpp"
+#include "postproc/navier_stokes/unsteady.hpp"
 
 namespace magnus {
 

@@ -12,8 +12,8 @@
 #include "io/hdf5_io.hpp"
 #include "io/output_owner.hpp"
 #include "io/result_reader.hpp"
-#include "postproc/plan.hpp"
-#include "postproc/viscous_run.hpp"
+#include "postproc/potential/plan.hpp"
+#include "postproc/navier_stokes/run.hpp"
 #include "bindings.hpp"
 
 namespace magnus::python {

@@ -8,7 +8,7 @@
 
 #include <functional>
 
-#include "postproc/sweep.hpp"
+#include "postproc/potential/sweep.hpp"
 #include "bindings.hpp"
 
 namespace magnus::python {

@@ -1,5 +1,5 @@
 #pragma once
-// What the two FFT-in-θ solvers share (solver/fft_solver.cpp, solver/mode_solver.cpp): the one lock on
+// What the two FFT-in-θ solvers share (solver/potential/fft_solver.cpp, solver/mode_solver.cpp): the one lock on
 // FFTW's planner, work split over Fourier modes, and FFTW-aligned buffers.
 #include <fftw3.h>
 

@@ -15,6 +15,12 @@
 
 namespace magnus {
 
+std::mutex& fftw_planner_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+
 namespace {
 
 using cplx = std::complex<double>;

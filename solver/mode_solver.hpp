@@ -3,7 +3,7 @@
 //     u_ξξ + u_θθ − σ_i·u = f_ij   on rings i = 0…n_r−1 (ξ = ln r/a), θ_j = 2πj/n_θ,
 // i.e. ∇²u − λ(r)·u = F with σ_i = r_i²·λ(r_i) and f = r²·F. A real FFT in θ splits it into n_θ/2+1
 // symmetric tridiagonal systems in ξ, one per Fourier mode k, factored once (Thomas) and reused.
-// Discretisation: the 5-point flux form of solver/stencil.cpp (any ξ spacing), per mode
+// Discretisation: the 5-point flux form of solver/potential/stencil.cpp (any ξ spacing), per mode
 //     [(û_{i+1}−û_i)/Δξ_{i+1/2} − (û_i−û_{i−1})/Δξ_{i−1/2}]/h_i − (λ_k + σ_i)·û_i = f̂_i,
 //     h_i = (Δξ_{i−1/2} + Δξ_{i+1/2})/2,  λ_k = (2 − 2cos kΔθ)/Δθ².
 // Wall ring 0: Dirichlet. Outer ring n_r−1: Dirichlet, or Neumann u_ξ = h through a mirror ghost ring

@@ -6,8 +6,8 @@
 #include <string>
 #include <utility>
 #include <vector>
-#include "postproc/pipeline.hpp"
-#include "solver/navier_stokes.hpp"
+#include "postproc/potential/pipeline.hpp"
+#include "solver/navier_stokes/operator.hpp"
 
 namespace magnus::test {
 

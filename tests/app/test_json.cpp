@@ -11,7 +11,7 @@
 #include <set>
 #include <sstream>
 
-#include "solver/ns_stability.hpp"
+#include "solver/navier_stokes/stability.hpp"
 #include "support.hpp"
 
 using namespace magnus;

@@ -13,7 +13,7 @@
 #include "io/case_file.hpp"
 #include "io/checkpoint.hpp"
 #include "io/result_reader.hpp"
-#include "postproc/viscous_run.hpp"
+#include "postproc/navier_stokes/run.hpp"
 #include "run_child.hpp"
 #include "support.hpp"
 

@@ -10,7 +10,7 @@
 #include "io/hdf5_io.hpp"
 #include "io/result_reader.hpp"
 #include "app/run_viscous.hpp"
-#include "postproc/ns_resolution.hpp"
+#include "postproc/navier_stokes/resolution.hpp"
 #include "run_child.hpp"
 #include "support.hpp"
 

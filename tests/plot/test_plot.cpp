@@ -19,7 +19,7 @@
 #include "plot/field_plots.hpp"
 #include "plot/figures.hpp"
 #include "plot/png_image.hpp"
-#include "postproc/pipeline.hpp"
+#include "postproc/potential/pipeline.hpp"
 #include "support.hpp"
 
 using namespace magnus;

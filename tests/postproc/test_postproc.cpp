@@ -3,7 +3,7 @@
 
 #include "mesh/fd_weights.hpp"
 #include "physics/exact.hpp"
-#include "postproc/forces.hpp"
+#include "postproc/potential/forces.hpp"
 #include "support.hpp"
 
 using namespace magnus;

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "solver/mode_solver.hpp"
-#include "solver/stencil.hpp"
+#include "solver/potential/stencil.hpp"
 #include "support.hpp"
 
 using namespace magnus;

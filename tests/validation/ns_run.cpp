@@ -7,7 +7,7 @@
 #include <fmt/core.h>
 
 #include "io/atomic_file.hpp"
-#include "postproc/unsteady.hpp"
+#include "postproc/navier_stokes/unsteady.hpp"
 
 int main(int argc, char** argv) {
   using namespace magnus;

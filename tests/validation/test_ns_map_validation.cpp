@@ -7,7 +7,7 @@
 #include <cstdio>
 
 #include "io/case_file.hpp"
-#include "postproc/ns_continuation.hpp"
+#include "postproc/navier_stokes/continuation.hpp"
 
 using namespace magnus;
 

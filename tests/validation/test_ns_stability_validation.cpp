@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "postproc/ns_critical.hpp"
-#include "postproc/unsteady.hpp"
+#include "postproc/navier_stokes/critical.hpp"
+#include "postproc/navier_stokes/unsteady.hpp"
 
 using namespace magnus;
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <tuple>
 
-#include "postproc/unsteady.hpp"
+#include "postproc/navier_stokes/unsteady.hpp"
 
 using namespace magnus;
 

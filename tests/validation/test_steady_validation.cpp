@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "io/report_steady.hpp"
-#include "postproc/steady_study.hpp"
+#include "postproc/navier_stokes/steady_study.hpp"
 
 using namespace magnus;
 

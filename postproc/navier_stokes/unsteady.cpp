@@ -1,0 +1,273 @@
+#include "postproc/navier_stokes/unsteady.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "postproc/navier_stokes/periodic.hpp"
+
+namespace magnus {
+
+namespace {
+
+bool analyse_periodic_from(const std::vector<ForceSample>& h, size_t first, double D, double U,
+                           UnsteadyResult& out) {
+  if (h.size() < first + 5 || !(U > 0.0)) return false;
+  const std::vector<PeriodWindow> w = lift_periods(h, 8, first);
+  if (w.empty()) return false;
+  const PeriodWindow& p = w.back();
+  out.period = p.length();
+  out.period_note = period_disagreement(h, w);
+  out.period_confirmed = out.period_note.empty();
+  out.St = out.period > 0.0 && out.period_confirmed ? D / (U * out.period) : 0.0;
+  out.C_L_mean = p.C_L, out.C_D_mean = p.C_D, out.C_M_mean = p.C_M, out.M_mean = p.M;
+  out.C_L_amplitude = p.amp_L, out.C_D_amplitude = p.amp_D;
+  return true;
+}
+
+/// The rate (1/s) whose product with Δt advance() compares with kNsCflLimit, or a bound above it:
+/// cfl_number's (every ring) and the wall ring's |ω|/Δθ.
+double step_rate(const NsParams& p, const PolarGrid& g, const NsState& s) {
+  const double r = cfl_number(g, s.psi, 1.0, p.advection_order, p.advection_order_xi);
+  return p.stokes ? r : std::max(r, std::fabs(p.omega) / g.d_theta);
+}
+
+/// The Δt (s) for the next step from the state s, the current dt (returned unchanged unless it must move).
+/// A user's time.dt (p.dt > 0) is replaced only when its CFL number passes 0.95·kNsCflLimit. Magnus's own
+/// Δt: before `follow` (the impulsive start) rebuilt when the CFL number passes min(1.25·cfl, 0.95·limit);
+/// after, whenever it leaves ±20% of the target cfl (back to the target). In both, never a step above
+/// 0.99·kNsCflLimit: past it Δt drops to min(cfl, 0.95·limit) (CFL 0.8, the limit, runs at 0.76 then).
+double next_time_step(const NsParams& p, const PolarGrid& g, const NsState& s, double dt, bool follow) {
+  const double rate = step_rate(p, g, s), cfl = rate * dt;
+  if (p.dt > 0.0) return cfl > 0.95 * kNsCflLimit ? cfl_time_step(p, g, s.psi, p.cfl) : dt;
+  double dt_new = dt;
+  if (follow) {
+    if (cfl > 1.2 * p.cfl || cfl < 0.8 * p.cfl) dt_new = rate > 0.0 ? p.cfl / rate : dt;
+  } else if (cfl > std::min(1.25 * p.cfl, 0.95 * kNsCflLimit)) {
+    dt_new = cfl_time_step(p, g, s.psi, p.cfl);
+  }
+  if (rate * dt_new > 0.99 * kNsCflLimit) dt_new = std::min(p.cfl, 0.95 * kNsCflLimit) / rate;
+  return dt_new;
+}
+
+/// The field f of grid `from` on grid `to` (same body), bilinear in (ξ, θ), periodic in θ; rings beyond
+/// from's R take its outer ring.
+std::vector<double> interpolate(const PolarGrid& from, const std::vector<double>& f, const PolarGrid& to) {
+  const int nf = from.n_theta, nt = to.n_theta;
+  std::vector<double> out(size_t(to.n_r) * nt);
+  for (int i = 0; i < to.n_r; ++i) {
+    const double x = std::min(to.xi[i], from.xi.back());
+    int a = int(std::upper_bound(from.xi.begin(), from.xi.end(), x) - from.xi.begin()) - 1;
+    a = std::max(0, std::min(a, from.n_r - 2));
+    const double s = std::max(0.0, std::min(1.0, (x - from.xi[a]) / (from.xi[a + 1] - from.xi[a])));
+    for (int j = 0; j < nt; ++j) {
+      const double u = to.theta[j] / from.d_theta;
+      const int b = int(std::floor(u)) % nf, c = (b + 1) % nf;
+      const double v = u - std::floor(u);
+      const double* r0 = &f[size_t(a) * nf];
+      const double* r1 = &f[size_t(a + 1) * nf];
+      out[size_t(i) * nt + j] =
+          (1.0 - s) * ((1.0 - v) * r0[b] + v * r0[c]) + s * ((1.0 - v) * r1[b] + v * r1[c]);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+ForceSample force_sample(double t, const ViscousForces& f) {
+  ForceSample x;
+  x.t = t;
+  x.has_coefficients = f.C_L.has_value();
+  x.C_L = f.C_L.value_or(0.0), x.C_D = f.C_D.value_or(0.0), x.C_M = f.C_M.value_or(0.0);
+  x.F_x = f.F_x, x.F_y = f.F_y, x.M = f.M;
+  return x;
+}
+
+bool analyse_periodic(const std::vector<ForceSample>& h, double D, double U, UnsteadyResult& out) {
+  return analyse_periodic_from(h, 0, D, U, out);
+}
+
+double choose_time_step(const NsParams& p, const PolarGrid& g, const NsState& s, std::string* note) {
+  const double dt_cfl = cfl_time_step(p, g, s.psi, p.cfl);
+  if (!(p.dt > 0.0)) return dt_cfl;
+  const double dt_limit = cfl_time_step(p, g, s.psi, 0.9 * kNsCflLimit);
+  if (p.dt <= dt_limit) return p.dt;
+  if (note)
+    *note = "time step " + std::to_string(p.dt) + " s is above the stability limit " +
+            std::to_string(dt_limit) + " s (CFL " + std::to_string(0.9 * kNsCflLimit) + "): using " +
+            std::to_string(dt_cfl) + " s (CFL " + std::to_string(p.cfl) + ")";
+  return dt_cfl;
+}
+
+UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState start,
+                            std::vector<ForceSample> history) {
+  using clock = std::chrono::steady_clock;
+  const auto clock0 = clock::now();
+  if (!(p.U >= 0.0) || !std::isfinite(p.U) || !std::isfinite(p.omega) || !(p.a > 0.0))
+    throw std::invalid_argument("run_unsteady: needs a > 0, U >= 0 and a finite spin");
+  const double U_ref = p.U > 0.0 ? p.U : std::fabs(p.a * p.omega);
+  if (!(U_ref > 0.0))
+    throw std::invalid_argument(
+        "run_unsteady: U = 0 and omega = 0: nothing moves (give a freestream U > 0 or a spin omega != 0)");
+  UnsteadyResult res;
+  res.history = std::move(history);
+  res.has_coefficients = p.U > 0.0;
+  res.reference_speed = U_ref;
+  const PolarGrid g = ns_grid(p);
+  const double D = 2.0 * p.a, t_conv = D / U_ref;
+  std::string note, warm_note;
+  size_t first_fine = 0;  // convergence tests use samples from here on (the full grid's)
+  const double t_start = start.t;
+
+  // Warm start on the grid with half the points each way.
+  if (o.coarse_start && res.history.empty() && start.t == 0.0 && p.n_theta >= 96 && g.n_r >= 32) {
+    NsParams pc = p;
+    pc.n_theta = (p.n_theta / 2 + 1) / 2 * 2;
+    pc.n_r = (g.n_r + 1) / 2;
+    pc.outer_over_a = g.outer_radius() / p.a;
+    const PolarGrid gc = ns_grid(pc);
+    NsState sc;
+    sc.zeta = interpolate(g, start.zeta, gc);
+    sc.psi = interpolate(g, start.psi, gc);
+    sc.Gamma_R = start.Gamma_R;
+    UnsteadyOptions oc = o;
+    oc.coarse_start = false;
+    oc.mean_tol = 10.0 * o.mean_tol;
+    oc.steady_tol = 10.0 * o.steady_tol;
+    oc.on_step = nullptr;
+    UnsteadyResult rc = run_unsteady(pc, oc, std::move(sc));
+    res.coarse_steps = rc.steps;
+    res.steps += rc.steps;
+    if (o.steps_taken) *o.steps_taken = res.steps;
+    res.times += rc.times;
+    if (rc.ok && rc.state.t < o.t_end) {
+      NsState s;
+      s.t = rc.state.t;
+      s.Gamma_R = rc.state.Gamma_R;
+      s.zeta = interpolate(gc, rc.state.zeta, g);
+      s.psi = interpolate(gc, rc.state.psi, g);
+      const NsOperator op0(p, choose_time_step(p, g, s, nullptr));
+      op0.close_wall(s.psi, s.zeta, s.Gamma_R);
+      start = std::move(s);
+      res.history = std::move(rc.history);
+      first_fine = res.history.size();
+      res.t_fine = start.t;
+      warm_note = "warm start on " + std::to_string(gc.n_r) + " x " + std::to_string(gc.n_theta) +
+                  " to t = " + std::to_string(start.t) + " s (" + rc.message + ")";
+    } else {
+      warm_note = "warm start skipped (" + rc.message + ")";
+    }
+  }
+
+  std::string dt_note;
+  double dt = choose_time_step(p, g, start, &dt_note);
+  auto op = std::make_unique<NsOperator>(p, dt);
+  NsState cur = std::move(start), nxt;
+  const double q_ref = 0.5 * o.rho * U_ref * U_ref;
+  // Record a state's forces (a resumed history already holds its first sample); false: asked to stop.
+  auto sample = [&](const NsState& s) {
+    const auto c0 = clock::now();
+    const ViscousForces f = viscous_forces(g, p, o.rho, s);
+    if (res.history.empty() || s.t > res.history.back().t) res.history.push_back(force_sample(s.t, f));
+    res.times.forces += std::chrono::duration<double>(clock::now() - c0).count();
+    return !o.on_step || o.on_step(s, f);
+  };
+  bool go_on = sample(cur);
+  // The starting vortex must have left (U > 0); a fresh start also waits out the impulsive transient.
+  const double t_min = o.t_min >= 0.0     ? o.t_min
+                       : res.t_fine > 0.0 ? res.t_fine
+                       : p.U > 0.0        ? (g.outer_radius() - p.a) / U_ref + 10.0 * t_conv
+                                          : 10.0 * t_conv;
+  // Δt: the CFL floor of cfl_time_step covers the impulsive start; after 2 D/U_ref (or at once after a warm
+  // start) Δt follows the measured CFL number (next_time_step); when magnus chose Δt, each step also
+  // checks the previous step's rate (a time.dt of the user's is checked every 10 steps and refused by
+  // advance() beyond the limit).
+  const bool own_dt = !(p.dt > 0.0);
+  const double t_floor_off = res.t_fine > 0.0 ? cur.t : t_start + 2.0 * t_conv;
+  res.message = "reached t_end";
+  try {
+    while (go_on && cur.t < o.t_end - 1e-12 * o.t_end) {
+      // Every 10 steps, and whenever the last step's rate (known from the step itself) puts the next one
+      // above 0.95 × the limit: then the exact rate of this state decides (one pass over the grid).
+      if (res.steps % 10 == 0 || (own_dt && cur.rate_prev * dt > 0.95 * kNsCflLimit)) {
+        const double dt_new = next_time_step(p, g, cur, dt, cur.t >= t_floor_off);
+        if (dt_new != dt) {
+          dt = dt_new;
+          op = std::make_unique<NsOperator>(p, dt);
+        }
+      }
+      const double step = std::min(dt, o.t_end - cur.t);
+      if (step < 0.999 * dt) op = std::make_unique<NsOperator>(p, step);  // land on t_end
+      advance(*op, cur, nxt, &res.times);
+      std::swap(cur, nxt);
+      ++res.steps;
+      if (o.steps_taken) *o.steps_taken = res.steps;
+      go_on = sample(cur);
+      if (cur.t < t_min || res.steps % 50 != 0) continue;
+      // Steady: forces flat over the window (on ½ρU_ref²D; torque on ½ρU_ref²D²).
+      const double t_from = cur.t - o.steady_window * t_conv;
+      if (t_from > 0.0 && (res.history.size() - first_fine) > 2 && res.history[first_fine].t <= t_from) {
+        double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+        for (size_t q = res.history.size(); q-- > first_fine && res.history[q].t >= t_from;) {
+          const ForceSample& x = res.history[q];
+          const double v[3] = {x.F_x / (q_ref * D), x.F_y / (q_ref * D), x.M / (q_ref * D * D)};
+          for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], v[c]), hi[c] = std::max(hi[c], v[c]);
+        }
+        if (hi[0] - lo[0] < o.steady_tol && hi[1] - lo[1] < o.steady_tol &&
+            (p.U > 0.0 || hi[2] - lo[2] < o.steady_tol)) {
+          res.steady = res.converged = true;
+          res.message = "steady";
+          break;
+        }
+      }
+      // Periodic: the last periods agree (full-grid periods only).
+      if (!res.has_coefficients) continue;
+      // The last periods, enough for both tests below (the means' agreement and the spectrum's).
+      const size_t n_same = size_t(o.converged_periods) + 1;
+      const std::vector<PeriodWindow> all = lift_periods(res.history, std::max<size_t>(8, n_same), first_fine);
+      const std::vector<PeriodWindow> w(all.end() - std::min(all.size(), n_same), all.end());
+      if (w.size() >= n_same) {
+        bool same = true;
+        for (size_t q = 1; q < w.size(); ++q) {
+          const double T0 = w[q - 1].t1 - w[q - 1].t0, T1 = w[q].t1 - w[q].t0;
+          same = same && std::fabs(w[q].C_L - w[q - 1].C_L) < o.mean_tol &&
+                 std::fabs(w[q].C_D - w[q - 1].C_D) < o.mean_tol && std::fabs(T1 - T0) < o.mean_tol * T1;
+        }
+        // …and the spectrum of the last periods peaks at the same frequency (a false period never stops it).
+        if (same && period_disagreement(res.history, all).empty()) {  // it reads the last 8 periods
+          res.converged = true;
+          res.message = "periodic means converged";
+          break;
+        }
+      }
+    }
+  } catch (const std::exception& e) {
+    res.ok = false;
+    res.message = res.error = e.what();
+  }
+  if (!go_on) {
+    res.interrupted = true;
+    res.message = "interrupted";
+  }
+  if (!warm_note.empty()) res.message += "; " + warm_note;
+  if (!dt_note.empty()) res.message += "; " + dt_note;
+  res.periodic = !res.steady && analyse_periodic_from(res.history, first_fine, D, p.U, res);
+  if (res.periodic && !res.period_confirmed) {
+    res.converged = false;
+    res.message += "; " + res.period_note;
+  }
+  if (!res.periodic) {
+    const ForceSample& last = res.history.back();
+    res.C_L_mean = last.C_L, res.C_D_mean = last.C_D, res.C_M_mean = last.C_M, res.M_mean = last.M;
+  }
+  res.dt = dt;
+  res.state = std::move(cur);
+  res.wall_seconds = std::chrono::duration<double>(clock::now() - clock0).count();
+  res.steps_per_second = res.wall_seconds > 0.0 ? double(res.steps) / res.wall_seconds : 0.0;
+  return res;
+}
+
+}  // namespace magnus

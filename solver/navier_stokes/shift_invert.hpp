@@ -1,0 +1,39 @@
+#pragma once
+// Shift-invert Arnoldi for J x = λ M x at one complex shift σ (the operator (J − σM)⁻¹M, UMFPACK's complex
+// LU), restarted in Krylov–Schur form until the Ritz values nearest σ have converged: leading_eigenvalues
+// (ns_stability.hpp) runs it at each of its shifts.
+#include <complex>
+#include <random>
+#include <vector>
+
+#include "solver/navier_stokes/newton.hpp"
+
+namespace magnus {
+
+/// One accepted eigenpair of J x = λ M x.
+struct Eigenpair {
+  std::complex<double> lambda;           ///< 1/s
+  std::vector<std::complex<double>> x;   ///< the eigenvector (packed as SteadyJacobian::pack)
+  double residual = 0.0;                 ///< ‖Jx − λMx‖/(‖Jx‖ + |λ|‖Mx‖)
+};
+
+/// What one shift found.
+struct ShiftSearch {
+  std::complex<double> sigma;  ///< the shift, 1/s
+  std::vector<Eigenpair> found;
+  /// Every Ritz value within this distance of σ was accepted (1/s; 0 when the nearest was not): with
+  /// shift-invert the eigenvalues nearest σ come first, so none is missing inside the disk |λ − σ| < radius.
+  double radius = 0.0;
+  bool converged = false;  ///< the `want` Ritz values nearest σ were all accepted
+  int restarts = 0;        ///< Krylov–Schur restarts taken
+  int solves = 0;          ///< solves with J − σM
+};
+
+/// Shift-invert Arnoldi at σ (1/s) with `krylov` vectors, restarted (keeping the nearest Ritz vectors) up to
+/// max_restarts times until the `want` Ritz values nearest σ have a relative residual ≤ tol. symbolic: the
+/// UMFPACK symbolic analysis, made at the first call and reused.
+ShiftSearch shift_invert_arnoldi(const SteadyJacobian& jac, const std::vector<double>& m, std::complex<double> sigma,
+                                 int want, int krylov, int max_restarts, double tol, void** symbolic,
+                                 std::mt19937& rng);
+
+}  // namespace magnus

@@ -1,0 +1,104 @@
+// The state side of the viscous model: its grid, the impulsive start, a symmetry-breaking vortex, the
+// velocity of a state and its CFL number (solver/navier_stokes/operator.hpp declares them; the step is in
+// navier_stokes.cpp).
+#include <algorithm>
+#include <cmath>
+
+#include "solver/navier_stokes/arakawa.hpp"
+#include "solver/navier_stokes/operator.hpp"
+
+namespace magnus {
+
+namespace {
+
+/// ∂ψ/∂θ at node (i, j), centred across the periodic seam; psi row-major (n_r, n).
+double psi_theta_at(const std::vector<double>& psi, int i, int j, int n, double d_theta) {
+  const int e = j + 1 == n ? 0 : j + 1, w = j == 0 ? n - 1 : j - 1;
+  return (psi[size_t(i) * n + e] - psi[size_t(i) * n + w]) / (2.0 * d_theta);
+}
+
+/// ∂ψ/∂ξ at node (i, j), second order: one-sided at the wall (i = 0) and at R (i = nr − 1), centred inside;
+/// uniform Δξ = h.
+double psi_xi_at(const std::vector<double>& psi, int i, int j, int n, int nr, double h) {
+  const size_t q = size_t(i) * n + j;
+  if (i == 0) return (-3.0 * psi[q] + 4.0 * psi[q + n] - psi[q + 2 * n]) / (2.0 * h);
+  if (i == nr - 1) return (3.0 * psi[q] - 4.0 * psi[q - n] + psi[q - 2 * n]) / (2.0 * h);
+  return (psi[q + n] - psi[q - n]) / (2.0 * h);
+}
+
+}  // namespace
+
+PolarGrid ns_grid(const NsParams& p) {
+  GridRequest req;
+  req.outer_radius = p.outer_over_a;
+  req.n_theta = p.n_theta;
+  req.n_r = p.n_r;
+  if (p.n_r <= 0 && p.radial_refinement > 1.0 && p.n_theta > 0 && p.outer_over_a > 1.0) {
+    const double d_xi = 2.0 * M_PI / p.n_theta / p.radial_refinement;
+    req.n_r = int(std::ceil(std::log(p.outer_over_a) / d_xi - 1e-9)) + 1;
+  }
+  req.spacing = Spacing::geometric;
+  return make_grid(req, p.a);
+}
+
+double cfl_number(const PolarGrid& g, const std::vector<double>& psi, double dt, int order_theta,
+                  int order_xi) {
+  const int nr = g.n_r, n = g.n_theta;
+  const double h = g.d_xi(0), kappa = advection_factor(order_theta), kappa_xi = advection_factor(order_xi);
+  double rate = 0.0;
+  for (int i = 0; i < nr; ++i) {
+    const double J = g.r[i] * g.r[i];
+    for (int j = 0; j < n; ++j) {
+      const double p_theta = psi_theta_at(psi, i, j, n, g.d_theta);
+      const double p_xi = psi_xi_at(psi, i, j, n, nr, h);
+      rate =
+          std::max(rate, kappa_xi * std::fabs(p_theta) / (J * h) + kappa * std::fabs(p_xi) / (J * g.d_theta));
+    }
+  }
+  return rate * dt;
+}
+
+double cfl_time_step(const NsParams& p, const PolarGrid& g, const std::vector<double>& psi, double cfl) {
+  const double floor_rate =
+      advection_factor(p.advection_order) * (2.0 * p.U + std::fabs(p.a * p.omega)) / (p.a * g.d_theta);
+  const double rate = std::max(cfl_number(g, psi, 1.0, p.advection_order, p.advection_order_xi), floor_rate);
+  if (!(rate > 0.0)) return 0.1 * p.a * p.a / p.nu;  // nothing moves: the diffusion time of a cell
+  return cfl / rate;
+}
+
+NsState impulsive_start(const NsParams& p, const PolarGrid& g) {
+  NsState s;
+  const int nr = g.n_r, n = g.n_theta;
+  s.psi.resize(size_t(nr) * n);
+  s.zeta.assign(size_t(nr) * n, 0.0);
+  for (int i = 0; i < nr; ++i)
+    for (int j = 0; j < n; ++j)
+      s.psi[size_t(i) * n + j] = p.U * (g.r[i] - p.a * p.a / g.r[i]) * std::sin(g.theta[j]);
+  return s;
+}
+
+void add_vortex_blob(const PolarGrid& g, NsState& s, double x_b, double y_b, double radius, double Gamma_b) {
+  const int n = g.n_theta;
+  for (int i = 1; i < g.n_r - 1; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double dx = g.r[i] * std::cos(g.theta[j]) - x_b, dy = g.r[i] * std::sin(g.theta[j]) - y_b;
+      s.zeta[size_t(i) * n + j] +=
+          Gamma_b / (M_PI * radius * radius) * std::exp(-(dx * dx + dy * dy) / (radius * radius));
+    }
+}
+
+void ns_velocity(const PolarGrid& g, const std::vector<double>& psi, std::vector<double>& u_r,
+                 std::vector<double>& u_theta) {
+  const int nr = g.n_r, n = g.n_theta;
+  const double h = g.d_xi(0);
+  u_r.assign(size_t(nr) * n, 0.0);
+  u_theta.assign(size_t(nr) * n, 0.0);
+  for (int i = 0; i < nr; ++i)
+    for (int j = 0; j < n; ++j) {
+      const size_t q = size_t(i) * n + j;
+      u_r[q] = psi_theta_at(psi, i, j, n, g.d_theta) / g.r[i];
+      u_theta[q] = -psi_xi_at(psi, i, j, n, nr, h) / g.r[i];
+    }
+}
+
+}  // namespace magnus
