@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "app/commands.hpp"
-#include "io/atomic_file.hpp"
+#include "base/atomic_file.hpp"
 #include "io/compare.hpp"
 #include "io/json_output.hpp"
 

@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "app/commands.hpp"
-#include "io/atomic_file.hpp"
+#include "base/atomic_file.hpp"
 #include "io/ns_sweep_file.hpp"
 
 namespace magnus {

@@ -15,7 +15,7 @@
 #include "io/hdf5_io.hpp"
 #include "io/inspect.hpp"
 #include "io/json_output.hpp"
-#include "io/output_lock.hpp"
+#include "base/output_lock.hpp"
 #include "io/output_size.hpp"
 #include "io/report.hpp"
 #include "io/result_reader.hpp"

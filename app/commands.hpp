@@ -3,7 +3,7 @@
 // A callback throws std::exception with one line on failure; main prints it and exits non-zero.
 #include <CLI/CLI.hpp>
 
-#include "io/output_owner.hpp"
+#include "base/output_owner.hpp"
 
 namespace magnus {
 

@@ -18,7 +18,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "io/atomic_file.hpp"
+#include "base/atomic_file.hpp"
 #include "io/h5_util.hpp"
 
 namespace magnus {

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 #include <vector>
-#include "io/atomic_file.hpp"
+#include "base/atomic_file.hpp"
 #include "postproc/result.hpp"
 
 namespace magnus {

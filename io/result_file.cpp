@@ -8,6 +8,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "base/output_owner.hpp"
 #include "io/h5_util.hpp"
 #include "io/hdf5_io.hpp"
 
@@ -15,6 +16,23 @@ namespace magnus {
 
 using h5::fail;
 using h5::Handle;
+
+namespace {
+
+/// A magnus HDF5 output (result, sweep, checkpoint): what base/output_owner lets magnus replace.
+bool hdf5_by_magnus(const std::string& target) {
+  try {
+    const ResultFile f(target, {"magnus-flow", "magnus-sweep", "magnus-checkpoint"});
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+/// Installed before main: any program that links the HDF5 reader recognises magnus's HDF5 outputs.
+const bool hdf5_owner_check_installed = (set_hdf5_owner_check(&hdf5_by_magnus), true);
+
+}  // namespace
 
 ResultFile::ResultFile(const std::string& path) : ResultFile(path, std::vector<std::string>{"magnus-flow"}) {}
 

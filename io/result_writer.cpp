@@ -5,7 +5,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "io/atomic_file.hpp"
+#include "base/atomic_file.hpp"
 #include "physics/checked_cast.hpp"
 #include "io/finite.hpp"
 #include "io/hdf5_io.hpp"

@@ -14,8 +14,8 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "io/atomic_file.hpp"
-#include "io/output_owner.hpp"
+#include "base/atomic_file.hpp"
+#include "base/output_owner.hpp"
 #include "plot/png_output.hpp"
 
 namespace magnus {

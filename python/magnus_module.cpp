@@ -7,10 +7,10 @@
 #include <atomic>
 #include <stdexcept>
 
-#include "io/atomic_file.hpp"
+#include "base/atomic_file.hpp"
 #include "io/case_file.hpp"
 #include "io/hdf5_io.hpp"
-#include "io/output_owner.hpp"
+#include "base/output_owner.hpp"
 #include "io/result_reader.hpp"
 #include "postproc/potential/plan.hpp"
 #include "postproc/navier_stokes/run.hpp"

@@ -21,7 +21,7 @@
 #include <thread>
 
 #include "io/inspect.hpp"
-#include "io/output_lock.hpp"
+#include "base/output_lock.hpp"
 #include "io/report.hpp"
 #include "run_child.hpp"
 #include "support.hpp"

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "io/output_owner.hpp"
+#include "base/output_owner.hpp"
 #include "support.hpp"
 
 using namespace magnus;

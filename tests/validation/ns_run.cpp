@@ -6,7 +6,7 @@
 
 #include <fmt/core.h>
 
-#include "io/atomic_file.hpp"
+#include "base/atomic_file.hpp"
 #include "postproc/navier_stokes/unsteady.hpp"
 
 int main(int argc, char** argv) {

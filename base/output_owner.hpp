@@ -16,6 +16,12 @@ namespace magnus {
 /// a magnus output by the rules above). Reads at most the first 64 KiB (and the HDF5 root attributes).
 std::string not_a_magnus_output(const std::string& target);
 
+/// Whether an HDF5 file is one magnus wrote (its root `format` is one of magnus's). Reading HDF5 is io's:
+/// io installs its reader with set_hdf5_owner_check; until then every HDF5 file counts as not magnus's.
+using Hdf5OwnerCheck = bool (*)(const std::string& target);
+/// Installs the HDF5 half of not_a_magnus_output (io/result_file.cpp does, when it is linked in).
+void set_hdf5_owner_check(Hdf5OwnerCheck check);
+
 /// --force: allow replacing any existing regular file (process-wide; off by default).
 void set_replace_any_file(bool yes);
 

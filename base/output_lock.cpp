@@ -1,4 +1,4 @@
-#include "io/output_lock.hpp"
+#include "base/output_lock.hpp"
 
 #include <fcntl.h>
 #include <fmt/core.h>
@@ -9,7 +9,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "io/atomic_file.hpp"
+#include "base/atomic_file.hpp"
 
 namespace magnus {
 

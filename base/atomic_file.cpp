@@ -1,5 +1,5 @@
-#include "io/atomic_file.hpp"
-#include "io/output_owner.hpp"
+#include "base/atomic_file.hpp"
+#include "base/output_owner.hpp"
 
 #include <dirent.h>
 #include <fcntl.h>
@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "io/output_lock.hpp"
+#include "base/output_lock.hpp"
 
 namespace magnus {
 
