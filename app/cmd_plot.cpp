@@ -2,7 +2,7 @@
 #include <memory>
 
 #include "app/commands.hpp"
-#include "plot/figures.hpp"
+#include "app/plot_files.hpp"
 
 namespace magnus {
 

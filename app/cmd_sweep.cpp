@@ -13,15 +13,16 @@
 #include <utility>
 
 #include "app/commands.hpp"
+#include "app/plot_files.hpp"
 #include "io/case_file.hpp"
 #include "io/case_keys.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/json_output.hpp"
 #include "io/ns_sweep_file.hpp"
 #include "io/reference_file.hpp"
+#include "io/rotor_data.hpp"
 #include "io/sweep_file.hpp"
 #include "plot/curves.hpp"
-#include "plot/figures.hpp"
 #include "plot/ns_map_plot.hpp"
 
 namespace magnus {

@@ -1,23 +1,21 @@
 #pragma once
-// `magnus plot FILE [-o DIR] [--size WxH]`: the pictures of a result file (streamlines, Cp field,
-// surface Cp) or of a sweep file (C_L against α or Γ), rebuilt from the HDF5 alone. This is where the
-// physics meets the plots: the exact curves, the models and the windows are built here from physics/
-// and handed to the plot functions, which only draw.
+// The pictures of a result (streamlines, Cp field, surface Cp; a navier-stokes result's vorticity, forces
+// against time and wall shear) and of a lift sweep (C_L against α or Γ), built from the data (FlowResult,
+// LiftSweep; app/plot_files reads them from files). This is where the physics meets the plots: the exact
+// curves, the models and the windows are built here from physics/ and handed to the plot functions,
+// which only draw.
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "io/rotor_data.hpp"
 #include "physics/reference_data.hpp"
 #include "physics/scene.hpp"
 #include "plot/curves.hpp"
 #include "plot/field_plots.hpp"
 #include "postproc/result.hpp"
+#include "postproc/rotor_data.hpp"
 
 namespace magnus {
-
-/// "WxH" (e.g. 900x700), each 16 … 16384 pixels. Throws std::invalid_argument with one line.
-PlotSize parse_plot_size(const std::string& text);
 
 /// A curve plot ready to draw: its page, lines and point sets.
 struct CurveFigure {
@@ -89,28 +87,5 @@ struct LiftSweep {
 /// viscosity there is no Re and all are drawn): see add_rotor_overlays.
 CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference,
                         const RotorData* rotor = nullptr);
-
-/// Reads a "magnus-sweep" file's /parameters and /sweep columns (alpha, circulation, cl) into a LiftSweep.
-/// Throws std::runtime_error with one line.
-LiftSweep read_lift_sweep(const std::string& path);
-
-/// The pictures written by `magnus plot`, in order.
-struct PlotOutcome {
-  std::vector<std::string> written;  ///< PNG paths
-  std::vector<std::string> skipped;  ///< one line each: which picture and why
-};
-
-/// A result file: dir/<stem>_streamlines.png, _cp.png and _surface_cp.png (a navier-stokes result adds
-/// _vorticity.png, _forces.png: C_L, C_D against t, and _shear.png); a sweep file: dir/<stem>_cl.png
-/// (stem: the file name without its extension; dir "" means the file's directory). A picture whose data
-/// the file lacks is skipped; throws if nothing can be drawn.
-/// `window`: the field pictures' window (units of a), default view_window.
-PlotOutcome plot_result_file(const std::string& path, const std::string& dir, PlotSize size,
-                             const std::optional<PlotWindow>& window = {});
-
-/// `magnus plot`: plot_result_file, the skipped pictures noted on stderr, the written ones on stdout;
-/// window "" is the default (else parse_plot_window).
-void command_plot(const std::string& path, const std::string& dir, const std::string& size,
-                  const std::string& window, bool quiet);
 
 }  // namespace magnus

@@ -1,8 +1,8 @@
 #pragma once
-// The rotor-sail data (io/rotor_data) on the lift-sweep figure: the datasets whose Reynolds number fits
+// The rotor-sail data (postproc/rotor_data) on the lift-sweep figure: the datasets whose Reynolds number fits
 // the scene's, as markers (tabulated) or dashed lines (fits), each named in the legend with its Re.
-#include "io/rotor_data.hpp"
 #include "plot/figures.hpp"
+#include "postproc/rotor_data.hpp"
 
 namespace magnus {
 

@@ -10,9 +10,9 @@
 
 #include <hdf5.h>
 
+#include "app/plot_files.hpp"
 #include "io/compare.hpp"
 #include "io/hdf5_io.hpp"
-#include "plot/figures.hpp"
 #include "plot/png_image.hpp"
 #include "support.hpp"
 

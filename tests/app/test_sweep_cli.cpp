@@ -8,10 +8,11 @@
 #include <fstream>
 #include <sstream>
 
+#include "app/plot_files.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/reference_file.hpp"
+#include "io/rotor_data.hpp"
 #include "io/sweep_file.hpp"
-#include "plot/figures.hpp"
 #include "support.hpp"
 
 using namespace magnus;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "app/plot_files.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/viscous_fixture.hpp"
 #include "plot/curves.hpp"
