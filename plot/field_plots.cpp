@@ -133,44 +133,49 @@ void check_field(const PolarField& f, const char* what) {
     throw std::runtime_error(fmt::format("plot: the {} field does not match its grid", what));
 }
 
-}  // namespace
+/// The ψ levels of a streamline picture: multiples of a round step (ψ = 0 drawn apart, as the dividing
+/// streamline); with a saddle at r_s, the separatrix ψ_s and the closed streamlines inside it, and the
+/// patches inside and outside r_s that keep the two families apart.
+struct StreamLevels {
+  double step = 0.0;                                     ///< Δψ of the regular levels
+  std::vector<PLFLT> regular, dividing, closed, open_inner;  ///< open_inner: regular levels between 0 and ψ_s
+  std::unique_ptr<PolarPatch> inner, outer;              ///< rings 0…i_s and i_s…i_view (saddle only)
+};
 
-PlotFrame plot_streamlines(const StreamlinePicture& pic, const std::string& png, PlotSize size) {
-  check_field(pic.psi, "psi");
-  const FieldView& v = pic.view;
-  const PlotWindow& w = v.window;
-  const double unit = v.unit;
-  const PolarField f = refine_polar_field(pic.psi, reach(w) * unit);
-  const int i_view = int(f.r.size()) - 1;
-  PolarPatch all(f, unit, 0, i_view);
-
+StreamLevels stream_levels(const StreamlinePicture& pic, const PolarField& f, const PolarPatch& all,
+                           double unit, int i_view) {
+  StreamLevels L;
   // Levels: multiples of a round step, so that ψ = 0 (the body, and the dividing streamline while the
   // stagnation points are on the surface) is one of them.
-  const auto [lo, hi] = all.range_in(w);
-  const double step = nice_step((hi - lo) / 24.0);
-  std::vector<PLFLT> regular;
+  const auto [lo, hi] = all.range_in(pic.view.window);
+  L.step = nice_step((hi - lo) / 24.0);
+  const double step = L.step;
   if (hi > lo)
     for (long k = long(std::ceil(lo / step)); k <= long(std::floor(hi / step)); ++k)
-      if (k != 0) regular.push_back(k * step);
+      if (k != 0) L.regular.push_back(k * step);
 
   // A saddle at r_s: the separatrix ψ = ψ_s through it encloses the closed streamlines, 0 < ψ/ψ_s < 1 at
   // r < r_s; the same values at r > r_s are open streamlines.
-  std::vector<PLFLT> dividing = {0.0}, closed, open_inner;
-  std::unique_ptr<PolarPatch> inner, outer;
+  L.dividing = {0.0};
   if (pic.has_saddle) {
     const double rs = std::hypot(pic.saddle.x, pic.saddle.y) * unit;
     const double ps = polar_value(pic.psi, rs, std::atan2(pic.saddle.y, pic.saddle.x));
-    dividing.push_back(ps);
-    for (double q : {0.2, 0.4, 0.6, 0.8}) closed.push_back(q * ps);
+    L.dividing.push_back(ps);
+    for (double q : {0.2, 0.4, 0.6, 0.8}) L.closed.push_back(q * ps);
     const int i_s = ring_at_or_below(f.r, rs);
-    inner = std::make_unique<PolarPatch>(f, unit, 0, i_s);
-    outer = std::make_unique<PolarPatch>(f, unit, i_s, std::max(i_view, i_s + 1));
+    L.inner = std::make_unique<PolarPatch>(f, unit, 0, i_s);
+    L.outer = std::make_unique<PolarPatch>(f, unit, i_s, std::max(i_view, i_s + 1));
     auto between = [&](double x) { return x * (x - ps) < 0.0; };  // strictly between 0 and ψ_s
-    for (double x : regular)
-      if (between(x)) open_inner.push_back(x);
-    regular.erase(std::remove_if(regular.begin(), regular.end(), between), regular.end());
+    for (double x : L.regular)
+      if (between(x)) L.open_inner.push_back(x);
+    L.regular.erase(std::remove_if(L.regular.begin(), L.regular.end(), between), L.regular.end());
   }
+  return L;
+}
 
+/// The legend of a streamline picture: the contours' Δψ, the dividing streamline or the separatrix and
+/// the closed streamlines, the stagnation points shown, and the notes.
+std::vector<LegendEntry> stream_legend(const StreamlinePicture& pic, double step) {
   std::vector<LegendEntry> legend;
   legend.push_back(
       line_entry(plplot_text(fmt::format("ψ contours, Δψ = {} {}", num(step), pic.psi_unit)), kBlue, 1, 1.2));
@@ -184,6 +189,61 @@ PlotFrame plot_streamlines(const StreamlinePicture& pic, const std::string& png,
     legend.push_back(symbol_entry("stagnation point, numeric", kRed, "●", 0.75));
   if (!pic.exact_points.empty()) legend.push_back(symbol_entry("stagnation point, exact", kBlack, "○", 1.3));
   for (const auto& n : pic.notes) legend.push_back(text_entry(plplot_text(n)));
+  return legend;
+}
+
+/// The colour bar of a contour field right of the box (as tall as 80% of it, its label on top) over the
+/// shade edges, its numbers in a power of ten of their own; its place and scale recorded in frame.
+void colour_bar(plstream& pls, PlotSize size, const std::string& bar_label_in, const std::vector<PLFLT>& edges,
+                double lo, double hi, double lx, PlotFrame& frame) {
+  PLFLT vx0 = 0, vx1 = 0, vy0 = 0, vy1 = 0;
+  pls.gvpd(vx0, vx1, vy0, vy1);  // the box's viewport, set by window_box
+  set_text(pls, 0.85);
+  // Gap and width of two body lines each (fractions of the box's width: a wide window's box is wide).
+  const double bx = 2.0 * lx / (vx1 - vx0), bw = 2.0 * lx / (vx1 - vx0), bh = 0.80;
+  const char* axis_opts[] = {"bcvtm"};
+  // The bar's numbers in a power of ten of their own (in its label) when they are small or large.
+  const int eb = axis_scale::exponent(lo, hi);
+  const std::string bar_label = axis_scale::label(bar_label_in, eb);
+  const std::string label = plplot_text(bar_label);
+  std::vector<PLFLT> shown = edges;
+  for (auto& e : shown) e *= std::pow(10.0, -eb);
+  const char* labels[] = {label.c_str()};
+  PLINT label_opts[] = {PL_COLORBAR_LABEL_TOP};
+  PLFLT ticks[] = {0.0};
+  PLINT sub_ticks[] = {0};
+  PLINT n_values[] = {PLINT(edges.size())};
+  const PLFLT* values[] = {shown.data()};
+  PLFLT cw = 0.0, ch = 0.0;
+  pls.colorbar(&cw, &ch, PL_COLORBAR_SHADE, PL_POSITION_RIGHT | PL_POSITION_OUTSIDE | PL_POSITION_VIEWPORT,
+               bx, 0.0, bw, bh, kWhite, kBlack, 1, 0, 0.0, 0, 0.0, 1, label_opts, labels, 1, axis_opts,
+               ticks, sub_ticks, n_values, values);
+  const double dx = vx1 - vx0, dy = vy1 - vy0, ymid = 0.5 * (vy0 + vy1);
+  frame.colour_bar =
+      to_pixels(size, vx1 + bx * dx, vx1 + (bx + bw) * dx, ymid - 0.5 * bh * dy, ymid + 0.5 * bh * dy);
+  frame.bar_lo = lo;
+  frame.bar_hi = hi;
+  frame.bar_exponent = eb;
+  frame.bar_label = bar_label;
+}
+
+/// The field checked against its grid and refined to reach the view's farthest corner.
+PolarField refined(const PolarField& field, const FieldView& v, const char* what) {
+  check_field(field, what);
+  return refine_polar_field(field, reach(v.window) * v.unit);
+}
+
+}  // namespace
+
+PlotFrame plot_streamlines(const StreamlinePicture& pic, const std::string& png, PlotSize size) {
+  const FieldView& v = pic.view;
+  const PlotWindow& w = v.window;
+  const double unit = v.unit;
+  const PolarField f = refined(pic.psi, v, "psi");
+  const int i_view = int(f.r.size()) - 1;
+  PolarPatch all(f, unit, 0, i_view);
+  const StreamLevels L = stream_levels(pic, f, all, unit, i_view);
+  const std::vector<LegendEntry> legend = stream_legend(pic, L.step);
 
   PlotFrame frame;
   render_png(png, size, [&](plstream& pls) {
@@ -204,22 +264,22 @@ PlotFrame plot_streamlines(const StreamlinePicture& pic, const std::string& png,
       set_text(pls);
     }
     window_box(pls, size, w, 4.5, beside ? 0.0 : lh + 0.5 * ly, 7.0 * lx);
-    contour(pls, all, regular, kBlue, 1.2);
+    contour(pls, all, L.regular, kBlue, 1.2);
     if (pic.has_saddle) {
-      contour(pls, *outer, open_inner, kBlue, 1.2);
-      contour(pls, *inner, closed, kPurple, 1.4);
+      contour(pls, *L.outer, L.open_inner, kBlue, 1.2);
+      contour(pls, *L.inner, L.closed, kPurple, 1.4);
     }
-    contour(pls, all, dividing, kBlack, 2.4);
+    contour(pls, all, L.dividing, kBlack, 2.4);
     disc(pls, 0.0, 0.0, v.body_radius, kGrey, kBlack, 2.0);
     const double dot = std::min(w.x1 - w.x0, w.y1 - w.y0) / 120.0;
     for (const auto& s : pic.exact_points) disc(pls, s.x, s.y, 2.0 * dot, -1, kBlack, 1.5);
     for (const auto& s : pic.numeric_points) disc(pls, s.x, s.y, dot, kRed, kBlack, 1.0);
     frame_axes(pls, "bcnst", "bcnstv", plplot_text(v.xlabel), plplot_text(v.ylabel), plplot_text(v.title));
     frame = frame_of(pls, size);
-    frame.levels.assign(regular.begin(), regular.end());
-    frame.levels.insert(frame.levels.end(), open_inner.begin(), open_inner.end());
-    frame.levels.insert(frame.levels.end(), closed.begin(), closed.end());
-    frame.levels.insert(frame.levels.end(), dividing.begin(), dividing.end());
+    frame.levels.assign(L.regular.begin(), L.regular.end());
+    frame.levels.insert(frame.levels.end(), L.open_inner.begin(), L.open_inner.end());
+    frame.levels.insert(frame.levels.end(), L.closed.begin(), L.closed.end());
+    frame.levels.insert(frame.levels.end(), L.dividing.begin(), L.dividing.end());
     PLFLT vx0 = 0, vx1 = 0, vy0 = 0, vy1 = 0;
     pls.gvpd(vx0, vx1, vy0, vy1);
     set_text(pls, 0.8);
@@ -231,12 +291,10 @@ PlotFrame plot_streamlines(const StreamlinePicture& pic, const std::string& png,
 }
 
 PlotFrame plot_contour_field(const ContourFieldPicture& pic, const std::string& png, PlotSize size) {
-  check_field(pic.field, "contour");
   const FieldView& v = pic.view;
   const PlotWindow& w = v.window;
-  const double unit = v.unit;
-  const PolarField f = refine_polar_field(pic.field, reach(w) * unit);
-  PolarPatch patch(f, unit, 0, int(f.r.size()) - 1);
+  const PolarField f = refined(pic.field, v, "contour");
+  PolarPatch patch(f, v.unit, 0, int(f.r.size()) - 1);
   auto [lo, hi] = patch.range_in(w);
   const double data_lo = lo, data_hi = hi;
   if (pic.diverging) {
@@ -266,8 +324,6 @@ PlotFrame plot_contour_field(const ContourFieldPicture& pic, const std::string& 
       sequential_cmap1(pls);
     // Right of the box: the bar (7% of the box) and its numbers (~6 characters).
     window_box(pls, size, w, pic.footnote.empty() ? 4.5 : 6.0, 0.0, 8.0 * lx);
-    PLFLT vx0 = 0, vx1 = 0, vy0 = 0, vy1 = 0;
-    pls.gvpd(vx0, vx1, vy0, vy1);
     pls.psty(0);
     pls.shades(patch.z(), patch.nx, patch.ny, nullptr, w.x0, w.x1, w.y0, w.y1, fill_edges.data(),
                PLINT(fill_edges.size()), 1.0, 0, 0.0, plcallback::fill, false, plcallback::tr2,
@@ -283,34 +339,7 @@ PlotFrame plot_contour_field(const ContourFieldPicture& pic, const std::string& 
       pls.mtex("b", 5.8, 0.5, 0.5, plplot_text(pic.footnote).c_str());
       set_text(pls);
     }
-    // Colour bar right of the box, as tall as 80% of it, with its label on top.
-    set_text(pls, 0.85);
-    // Gap and width of two body lines each (fractions of the box's width: a wide window's box is wide).
-    const double bx = 2.0 * lx / (vx1 - vx0), bw = 2.0 * lx / (vx1 - vx0), bh = 0.80;
-    const char* axis_opts[] = {"bcvtm"};
-    // The bar's numbers in a power of ten of their own (in its label) when they are small or large.
-    const int eb = axis_scale::exponent(lo, hi);
-    const std::string bar_label = axis_scale::label(pic.bar_label, eb);
-    const std::string label = plplot_text(bar_label);
-    std::vector<PLFLT> shown = edges;
-    for (auto& e : shown) e *= std::pow(10.0, -eb);
-    const char* labels[] = {label.c_str()};
-    PLINT label_opts[] = {PL_COLORBAR_LABEL_TOP};
-    PLFLT ticks[] = {0.0};
-    PLINT sub_ticks[] = {0};
-    PLINT n_values[] = {PLINT(edges.size())};
-    const PLFLT* values[] = {shown.data()};
-    PLFLT cw = 0.0, ch = 0.0;
-    pls.colorbar(&cw, &ch, PL_COLORBAR_SHADE, PL_POSITION_RIGHT | PL_POSITION_OUTSIDE | PL_POSITION_VIEWPORT,
-                 bx, 0.0, bw, bh, kWhite, kBlack, 1, 0, 0.0, 0, 0.0, 1, label_opts, labels, 1, axis_opts,
-                 ticks, sub_ticks, n_values, values);
-    const double dx = vx1 - vx0, dy = vy1 - vy0, ymid = 0.5 * (vy0 + vy1);
-    frame.colour_bar =
-        to_pixels(size, vx1 + bx * dx, vx1 + (bx + bw) * dx, ymid - 0.5 * bh * dy, ymid + 0.5 * bh * dy);
-    frame.bar_lo = lo;
-    frame.bar_hi = hi;
-    frame.bar_exponent = eb;
-    frame.bar_label = bar_label;
+    colour_bar(pls, size, pic.bar_label, edges, lo, hi, lx, frame);
   });
   return frame;
 }

@@ -108,56 +108,35 @@ CurveFigure surface_cp_figure(const FlowResult& r) {
   return f;
 }
 
-CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference, const RotorData* rotor) {
-  CurveFigure f;
+namespace {
+
+/// The scene at one x of a sweep: a spin ratio (spin model) or a given circulation with the base spin.
+Scene scene_at(const LiftSweep& s, double x) {
+  Scene sc = s.base;
+  if (s.by_circulation) {
+    sc.circulation_given = true;
+    sc.circulation_value = x;
+  } else {
+    sc.circulation_given = false;
+    sc.spin = x * s.base.speed / s.base.radius;
+  }
+  return sc;
+}
+
+/// Kutta–Joukowski over [xlo, xhi], and the seed estimate: −4α, or in a circulation sweep the constant
+/// −4aω/U of the fixed spin (none when ω = 0).
+void add_model_lines(CurveFigure& f, const LiftSweep& s, double xlo, double xhi) {
   const bool by_gamma = s.by_circulation;
-  const double a = s.base.radius, U = s.base.speed;
-  std::string grid;
-  if (s.n_theta > 0) grid = fmt::format(", n_θ × n_r = {} × {}", s.n_theta, s.n_r);
-  f.page.title = fmt::format("{}: lift against {} (potential flow{})", case_title(s.title),
-                             by_gamma ? "circulation" : "spin ratio", grid);
-  f.page.xlabel = by_gamma ? "circulation Γ (m^2/s)" : "spin ratio α = aω/U";
-  f.page.ylabel = "lift coefficient C_L = L/(½ρU^2·2a), lift L ⊥ U";
-  double xlo = 0.0, xhi = 0.0;
-  bool any = false;
-  for (double x : s.x)
-    if (std::isfinite(x)) {
-      xlo = any ? std::min(xlo, x) : x;
-      xhi = any ? std::max(xhi, x) : x;
-      any = true;
-    }
-  if (!any) throw std::runtime_error("plot: the sweep has no points");
-  if (!by_gamma) xlo = std::min(xlo, 0.0);
-
-  // The scene at one x: a spin ratio (spin model) or a given circulation with the base spin.
-  auto scene_at = [&](double x) {
-    Scene sc = s.base;
-    if (by_gamma) {
-      sc.circulation_given = true;
-      sc.circulation_value = x;
-    } else {
-      sc.circulation_given = false;
-      sc.spin = x * U / a;
-    }
-    return sc;
-  };
-  // Where the two stagnation points merge on the top (Prandtl's bound on potential-flow lift).
-  Scene merge = s.base;
-  merge.circulation_given = false;
-  merge.spin = 2.0 * U / a;
-  const double x_merge = by_gamma ? merge.Gamma() : merge.spin_ratio();
-  const double bound = std::fabs(exact_flow(merge).cl());
-
   LineCurve kj{by_gamma ? "Kutta–Joukowski, C_L = −Γ/(Ua)" : "Kutta–Joukowski, C_L = −2πα",
                {},
                Colour::blue,
                LineStyle::solid,
                2.0};
-  for (double x : {xlo, xhi}) kj.points.push_back({x, exact_flow(scene_at(x)).cl()});
+  for (double x : {xlo, xhi}) kj.points.push_back({x, exact_flow(scene_at(s, x)).cl()});
   f.lines.push_back(kj);
   if (!by_gamma) {
     LineCurve seed{"seed estimate, C_L = −4α", {}, Colour::green, LineStyle::dashed, 2.0};
-    for (double x : {xlo, xhi}) seed.points.push_back({x, seed_cl(scene_at(x))});
+    for (double x : {xlo, xhi}) seed.points.push_back({x, seed_cl(scene_at(s, x))});
     f.lines.push_back(seed);
   } else if (s.base.spin != 0.0) {
     const double c = seed_cl(s.base);
@@ -169,7 +148,17 @@ CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference, c
         2.0};
     f.lines.push_back(seed);
   }
-  // The bound on the side of the data, and where it is reached.
+}
+
+/// Prandtl's bound |C_L| = 4π (where the two stagnation points merge on the top, α = 2) on the side(s) of
+/// the data and the lines drawn so far, with a vertical line where Kutta–Joukowski reaches it.
+void add_prandtl_bound(CurveFigure& f, const LiftSweep& s, double xlo, double xhi) {
+  const bool by_gamma = s.by_circulation;
+  Scene merge = s.base;
+  merge.circulation_given = false;
+  merge.spin = 2.0 * s.base.speed / s.base.radius;
+  const double x_merge = by_gamma ? merge.Gamma() : merge.spin_ratio();
+  const double bound = std::fabs(exact_flow(merge).cl());
   double ylo = 0.0, yhi = 0.0;
   for (const auto& p : f.lines)
     for (const auto& q : p.points) ylo = std::min(ylo, q.y), yhi = std::max(yhi, q.y);
@@ -195,32 +184,62 @@ CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference, c
     if (xm >= xlo && xm <= xhi) {
       LineCurve vline = prandtl;
       vline.label.clear();
-      vline.points = {{xm, std::min(ylo, -bound)}, {xm, std::max(yhi, bound)}};
       vline.points = {{xm, sign < 0 ? std::min(ylo, -bound) : 0.0},
                       {xm, sign < 0 ? 0.0 : std::max(yhi, bound)}};
       f.lines.push_back(vline);
     }
   }
+}
+
+/// The viscous reference datasets measured within a factor 3 of the scene's Re (re = 0: all of them),
+/// clipped to α in [xlo, xhi], each in its colour and marker.
+void add_reference_points(CurveFigure& f, const ViscousReference& reference, double re, double xlo,
+                          double xhi) {
+  int k = 0;
+  const Colour colours[] = {Colour::teal, Colour::purple, Colour::brown, Colour::olive, Colour::magenta};
+  for (const auto& d : reference.datasets) {
+    if (re > 0.0 && !(d.reynolds >= re / 3.0 && d.reynolds <= 3.0 * re)) {
+      ++k;
+      continue;
+    }
+    PointSet ps;
+    ps.label = literal_text(d.label);
+    ps.colour = colours[k % 5];
+    ps.marker = 1 + k % 7;
+    for (const auto& p : d.points)
+      if (p.alpha >= xlo && p.alpha <= xhi) ps.points.push_back({p.alpha, p.cl});
+    ++k;
+    if (!ps.points.empty()) f.points.push_back(std::move(ps));
+  }
+}
+
+}  // namespace
+
+CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference, const RotorData* rotor) {
+  CurveFigure f;
+  const bool by_gamma = s.by_circulation;
+  const double U = s.base.speed;
+  std::string grid;
+  if (s.n_theta > 0) grid = fmt::format(", n_θ × n_r = {} × {}", s.n_theta, s.n_r);
+  f.page.title = fmt::format("{}: lift against {} (potential flow{})", case_title(s.title),
+                             by_gamma ? "circulation" : "spin ratio", grid);
+  f.page.xlabel = by_gamma ? "circulation Γ (m^2/s)" : "spin ratio α = aω/U";
+  f.page.ylabel = "lift coefficient C_L = L/(½ρU^2·2a), lift L ⊥ U";
+  double xlo = 0.0, xhi = 0.0;
+  bool any = false;
+  for (double x : s.x)
+    if (std::isfinite(x)) {
+      xlo = any ? std::min(xlo, x) : x;
+      xhi = any ? std::max(xhi, x) : x;
+      any = true;
+    }
+  if (!any) throw std::runtime_error("plot: the sweep has no points");
+  if (!by_gamma) xlo = std::min(xlo, 0.0);
+  add_model_lines(f, s, xlo, xhi);
+  add_prandtl_bound(f, s, xlo, xhi);
   // The scene's Re (0: no viscosity, no Re): reference data measured at another Re are left out.
   const double re = s.base.viscosity > 0.0 && U > 0.0 ? s.base.reynolds() : 0.0;
-  if (reference && !by_gamma) {
-    int k = 0;
-    const Colour colours[] = {Colour::teal, Colour::purple, Colour::brown, Colour::olive, Colour::magenta};
-    for (const auto& d : reference->datasets) {
-      if (re > 0.0 && !(d.reynolds >= re / 3.0 && d.reynolds <= 3.0 * re)) {
-        ++k;
-        continue;
-      }
-      PointSet ps;
-      ps.label = literal_text(d.label);
-      ps.colour = colours[k % 5];
-      ps.marker = 1 + k % 7;
-      for (const auto& p : d.points)
-        if (p.alpha >= xlo && p.alpha <= xhi) ps.points.push_back({p.alpha, p.cl});
-      ++k;
-      if (!ps.points.empty()) f.points.push_back(std::move(ps));
-    }
-  }
+  if (reference && !by_gamma) add_reference_points(f, *reference, re, xlo, xhi);
   if (rotor && !by_gamma)
     add_rotor_overlays(f, *rotor, re, xlo, xhi);
   PointSet numeric{"numeric (potential flow)", {}, Colour::red, 0, false};
