@@ -139,7 +139,7 @@ FlowResult run_viscous_case(const Case& c, const std::string& case_path, bool re
   std::unique_ptr<Checkpoint> start;
   if (resume) start = std::make_unique<Checkpoint>(read_checkpoint(ckpt, c));
 
-  const double unit = 2.0 * c.scene.radius / c.scene.reference_speed();
+  const double unit = c.scene.time_unit();
   Progress progress{c, unit, start ? start->state.t : 0.0};
   const bool show = !quiet && isatty(STDERR_FILENO);
 

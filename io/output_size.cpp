@@ -47,7 +47,7 @@ size_t chunked_bytes(size_t rows, size_t row_values) {
 /// (its flow is the fastest of the run). None for a scene the run refuses (U = 0 and ω = 0, ν = 0).
 size_t history_samples(const Case& c, const NsParams& p, const PolarGrid& g) {
   if (!(c.scene.reference_speed() > 0.0) || !(c.scene.viscosity > 0.0)) return 0;
-  const double unit = 2.0 * c.scene.radius / c.scene.reference_speed();
+  const double unit = c.scene.time_unit();
   const double dt0 = p.dt > 0.0 ? p.dt : cfl_time_step(p, g, impulsive_start(p, g).psi, p.cfl);
   return dt0 > 0.0 ? size_t(std::min(kNsMaxSteps + 2.0, c.time.end * unit / dt0 + 2.0)) : 0;  // a run takes no more
 }

@@ -21,6 +21,8 @@ double Scene::reynolds() const {
 
 double Scene::reference_speed() const { return speed > 0.0 ? speed : radius * std::fabs(spin); }
 
+double Scene::time_unit() const { return 2.0 * radius / reference_speed(); }
+
 double Scene::rpm() const { return spin * 60.0 / (2.0 * M_PI); }
 
 namespace {

@@ -49,6 +49,8 @@ struct Scene {
   /// The reference speed of the time unit and the coefficients' dynamic pressure: U, or the wall speed
   /// a|ω| when U = 0 (a spinning cylinder in still fluid), m/s.
   double reference_speed() const;
+  /// The convective time unit D/U_ref = 2a/U_ref (U_ref = reference_speed()), s.
+  double time_unit() const;
   /// The spin in revolutions per minute, ω·60/(2π), 1/min.
   double rpm() const;
 };

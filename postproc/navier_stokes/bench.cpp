@@ -21,7 +21,7 @@ std::vector<NsBenchRow> run_ns_bench(const Case& c, const std::vector<int>& ladd
     const NsOperator op(p, dt);
     NsBenchRow row;
     row.n_theta = g.n_theta, row.n_r = g.n_r, row.nodes = long(g.nodes()), row.dt = dt;
-    row.time_unit = 2.0 * c.scene.radius / c.scene.reference_speed();
+    row.time_unit = c.scene.time_unit();
     for (int k = 0; k < warmup; ++k) {
       advance(op, cur, nxt);
       std::swap(cur, nxt);

@@ -22,9 +22,6 @@ namespace magnus {
 
 namespace {
 
-/// The convective time unit D/U_ref, s.
-double time_unit(const Scene& s) { return 2.0 * s.radius / s.reference_speed(); }
-
 /// A weak vortex (Γ = 0.1% of U·D) off the axis behind the body: it breaks the mirror symmetry of the
 /// start so that a flow that sheds starts shedding (round-off alone takes hundreds of D/U at α = 0).
 void break_symmetry(const NsParams& p, const PolarGrid& g, NsState& s) {
@@ -61,7 +58,7 @@ NsParams ns_params(const Case& c) {
   p.cfl = c.time.cfl;
   p.advection_order = c.solver.advection_order;
   p.advection_order_xi = c.solver.advection_order_xi;
-  p.dt = c.time.dt > 0.0 && s.reference_speed() > 0.0 ? c.time.dt * time_unit(s) : 0.0;
+  p.dt = c.time.dt > 0.0 && s.reference_speed() > 0.0 ? c.time.dt * s.time_unit() : 0.0;
   return p;
 }
 
@@ -137,7 +134,7 @@ FlowResult viscous_result(const Case& c, const NsParams& p, const UnsteadyResult
   ViscousPart& v = r.viscous.emplace();
   v.viscosity = sc.viscosity;
   if (U > 0.0) v.reynolds = sc.reynolds();
-  v.time_unit = D / sc.reference_speed();
+  v.time_unit = sc.time_unit();
   v.status = run.message;
   v.steady = run.steady, v.periodic = run.periodic, v.converged = run.converged;
   v.partial = run.interrupted || !run.ok;
@@ -315,7 +312,7 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
   NsParams p = ns_params(c);
   p.threads = std::max(1, threads);
   const PolarGrid g = ns_grid(p);
-  const double unit = time_unit(sc);
+  const double unit = sc.time_unit();
 
   if (c.time.mode == TimeMode::steady) return steady_by_newton(c, p, g, resume);
   AutoChoice choice;
