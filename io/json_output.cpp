@@ -14,7 +14,7 @@
 #include "io/report_scene.hpp"
 #include "io/report_viscous.hpp"
 #include "io/rotor_data.hpp"
-#include "io/scene_forces.hpp"
+#include "postproc/scene_forces.hpp"
 #include "io/schema.hpp"
 #include "postproc/potential/forces.hpp"
 
@@ -80,9 +80,9 @@ namespace {
 using json_parts::key_of;
 using json_parts::point_json;
 
-Json points_json(const std::vector<StagnationPoint>& unsorted, double a) {
+Json points_json(const std::vector<StagnationPoint>& sorted, double a) {
   Json list = Json::array();
-  for (const auto& p : sorted_stagnation_points(unsorted)) list.push_back(point_json(p, a));
+  for (const auto& p : sorted) list.push_back(point_json(p, a));
   return list;
 }
 
@@ -222,7 +222,7 @@ Json result_json(const FlowResult& r, const std::string& output_path) {
   }
   if (r.c.scene.direction_deg != 0.0) {  // lift and drag are in the flow's frame; the world's F_x, F_y beside
     const SceneForces f = scene_forces(r);
-    const WorldForce w = world_force(f.drag, f.lift, r.c.scene.direction_deg);
+    const WorldForce w = f.world;
     j["derived"]["force_world_x"] = quantity(w.x, "N/m");
     j["derived"]["force_world_y"] = quantity(w.y, "N/m");
   }
@@ -230,11 +230,7 @@ Json result_json(const FlowResult& r, const std::string& output_path) {
     Json st;
     st["numeric"] = points_json(r.stagnation, r.c.scene.radius);
     st["exact"] = points_json(r.stagnation_exact, r.c.scene.radius);
-    bool outside = false;
-    if (r.stagnation.empty())
-      for (const auto& p : r.stagnation_exact)
-        outside = outside || (!p.on_surface && p.r > r.grid.outer_radius());
-    st["numeric_outside_grid"] = outside;
+    st["numeric_outside_grid"] = stagnation_outside_grid(r).has_value();
     j["stagnation"] = std::move(st);
   }
   if (!output_path.empty()) {

@@ -9,7 +9,6 @@
 #include "io/report_scene.hpp"
 #include "io/report_viscous.hpp"
 #include "io/text_format.hpp"
-#include "postproc/potential/forces.hpp"
 
 namespace magnus {
 
@@ -21,11 +20,11 @@ namespace {
 
 std::string deg(double rad) { return fmt::format("{:.3f}°", rad * 180.0 / M_PI); }
 
-/// The points in the one order every table uses (sorted_stagnation_points: θ in [0, 2π), ascending).
-std::string points(const std::vector<StagnationPoint>& unsorted, double a) {
-  if (unsorted.empty()) return "none";
+/// The points, in the result's order (θ in [0, 2π), ascending).
+std::string points(const std::vector<StagnationPoint>& sorted, double a) {
+  if (sorted.empty()) return "none";
   std::string s;
-  for (const auto& p : sorted_stagnation_points(unsorted)) {
+  for (const auto& p : sorted) {
     if (!s.empty()) s += ", ";
     s += p.on_surface ? fmt::format("θ = {} on the surface", deg(p.theta))
                       : fmt::format("θ = {}, r = {:.6g} m = {:.6g} a (free)", deg(p.theta), p.r, p.r / a);
@@ -36,12 +35,9 @@ std::string points(const std::vector<StagnationPoint>& unsorted, double a) {
 /// "none", and why when the exact free point lies beyond the grid's outer radius R.
 std::string numeric_points(const FlowResult& r) {
   const double a = r.c.scene.radius, R = r.grid.outer_radius();
-  if (r.stagnation.empty())
-    for (const auto& p : r.stagnation_exact)
-      if (!p.on_surface && p.r > R)
-        return fmt::format(
-            "none: the free point lies outside the grid (exact r_s/a = {:.6g}, grid R/a = {:.6g})", p.r / a,
-            R / a);
+  if (const auto p = stagnation_outside_grid(r))
+    return fmt::format("none: the free point lies outside the grid (exact r_s/a = {:.6g}, grid R/a = {:.6g})",
+                       p->r / a, R / a);
   return points(r.stagnation, a);
 }
 

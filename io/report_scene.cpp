@@ -8,7 +8,7 @@
 #include "io/reference_file.hpp"
 #include "io/rotor_data.hpp"
 #include "io/report.hpp"
-#include "io/scene_forces.hpp"
+#include "postproc/scene_forces.hpp"
 
 namespace magnus {
 
@@ -81,7 +81,7 @@ std::string scene_lines(const FlowResult& r) {
                           "the freestream",
                           deg(sc.direction_deg)));
     // Lift and drag are in the flow's frame; the world's components of the same force beside them.
-    const WorldForce w = world_force(f.drag, f.lift, sc.direction_deg);
+    const WorldForce& w = f.world;
     s += line("", fmt::format("force in the world frame: F_x = {} N/m, F_y = {} N/m{}", num(w.x, "{:.6g}"),
                               num(w.y, "{:.6g}"), per));
   }

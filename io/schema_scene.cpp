@@ -1,6 +1,6 @@
 // The scene's place in the world in the schema table: the spin in rpm, the flow direction, the ship's course,
 // the span, and the forces they give (thrust, side force, totals in N). Absent keys are undefined.
-#include "io/scene_forces.hpp"
+#include "postproc/scene_forces.hpp"
 #include "io/schema_build.hpp"
 
 namespace magnus::schema_build {

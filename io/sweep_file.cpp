@@ -78,7 +78,7 @@ std::string pressure_cell(double v, double q) { return cell(std::fabs(v) < 1e-10
 
 std::string stagnation_text(const SweepPoint& p) {
   if (p.stagnation.empty()) return "none";
-  const std::vector<StagnationPoint> pts = sorted_stagnation_points(p.stagnation);
+  const std::vector<StagnationPoint>& pts = p.stagnation;  // sorted by θ (find_stagnation_points)
   if (!pts[0].on_surface)
     return fmt::format("{}° at r = {}a (free)", figure(deg(pts[0].theta), "{:.2f}"),
                        figure(pts[0].r / p.scene.radius, "{:.4f}"));

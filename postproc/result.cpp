@@ -20,9 +20,16 @@ FlowResult postprocess(const PolarGrid& g, const Case& c, const std::vector<doub
   r.forces = compute_forces(scene, r.surface);
   r.stagnation = find_stagnation_points(g, scene, r.surface.u_theta,
                                         [&](double theta) { return u_theta_on_ray(g, psi, theta, order); });
-  r.stagnation_exact = exact_flow(scene).stagnation_points();
+  r.stagnation_exact = sorted_stagnation_points(exact_flow(scene).stagnation_points());
   r.errors = compute_errors(scene, psi, psi_exact, r.surface, r.forces);
   return r;
+}
+
+std::optional<StagnationPoint> stagnation_outside_grid(const FlowResult& r) {
+  if (r.stagnation.empty())
+    for (const auto& p : r.stagnation_exact)
+      if (!p.on_surface && p.r > r.grid.outer_radius()) return p;
+  return std::nullopt;
 }
 
 }  // namespace magnus

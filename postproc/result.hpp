@@ -75,7 +75,7 @@ struct FlowResult {
   Surface surface;
   Forces forces;
   Errors errors;
-  std::vector<StagnationPoint> stagnation, stagnation_exact;
+  std::vector<StagnationPoint> stagnation, stagnation_exact;  ///< θ in [0, 2π), sorted by θ
   Timing timing;
   RunInfo info;
   std::optional<ViscousPart> viscous;  ///< present for navier-stokes results
@@ -85,5 +85,9 @@ struct FlowResult {
 /// (ψ = U·ψ_U + Γ·ψ_Γ; the surface split of surface_from_basis keeps the forces free of ε·α round-off).
 FlowResult postprocess(const PolarGrid& g, const Case& c, const std::vector<double>& psi_U,
                        const std::vector<double>& psi_Gamma, const FieldSelection& sel);
+
+/// The exact free stagnation point when the numeric flow has none because it lies beyond the grid's outer
+/// radius (r_s > R): why the numeric list is empty; empty otherwise.
+std::optional<StagnationPoint> stagnation_outside_grid(const FlowResult& r);
 
 }  // namespace magnus

@@ -30,7 +30,8 @@ struct Forces {
 Forces compute_forces(const Scene& scene, const Surface& s);
 
 /// Stagnation points from the computed flow: sign changes of the surface u_θ, or else of u_θ along
-/// the y axis on the side of Γ (a free point, |Γ| > 4πaU); ray(θ) gives u_θ(r_i, θ), m/s.
+/// the y axis on the side of Γ (a free point, |Γ| > 4πaU); ray(θ) gives u_θ(r_i, θ), m/s. θ in [0, 2π),
+/// sorted by θ (sorted_stagnation_points).
 std::vector<StagnationPoint> find_stagnation_points(const PolarGrid& g, const Scene& scene,
                                                     const std::vector<double>& surface_u_theta,
                                                     const std::function<std::vector<double>(double)>& ray);

@@ -1,4 +1,4 @@
-#include "io/scene_forces.hpp"
+#include "postproc/scene_forces.hpp"
 
 #include <cmath>
 
@@ -19,6 +19,7 @@ SceneForces scene_forces(const FlowResult& r) {
   SceneForces f;
   f.lift = r.viscous ? r.viscous->lift_mean : r.forces.lift;
   f.drag = r.viscous ? r.viscous->drag_mean : r.forces.drag;
+  f.world = world_force(f.drag, f.lift, sc.direction_deg);
   if (sc.course_deg) {
     const CourseForce c = course_force(f.drag, f.lift, sc.direction_deg, *sc.course_deg);
     f.thrust = c.thrust, f.side = c.side;
