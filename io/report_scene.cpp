@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "io/reference_file.hpp"
-#include "io/rotor_data.hpp"
 #include "io/report.hpp"
+#include "io/rotor_data.hpp"
 #include "postproc/scene_forces.hpp"
 
 namespace magnus {
@@ -16,9 +16,6 @@ namespace {
 
 /// A number as {spec} would print it, with −0 printed as 0.
 std::string num(double v, const char* spec = "{:.6g}") { return fmt::format(fmt::runtime(spec), v + 0.0); }
-
-/// One summary line: the label in 15 columns, then the text.
-std::string line(const std::string& label, const std::string& text) { return fmt::format("{:<15}{}\n", label, text); }
 
 /// "Stojković et al. 2002" from a label "viscous, Re = 100 (Stojković et al. 2002)"; else the label.
 std::string who(const std::string& label) {
@@ -32,6 +29,10 @@ std::string who(const std::string& label) {
 std::string deg(double d) { return num(d, "{:.6g}") + "°"; }
 
 }  // namespace
+
+std::string summary_line(const std::string& label, const std::string& text) {
+  return fmt::format("{:<15}{}\n", label, text);
+}
 
 std::optional<NearestReference> nearest_reference(const Scene& sc, const ViscousReference& ref) {
   if (sc.speed <= 0.0) return std::nullopt;
@@ -76,54 +77,59 @@ std::string scene_lines(const FlowResult& r) {
   const char* per = r.viscous ? " (means)" : "";
   std::string s;
   if (sc.direction_deg != 0.0) {
-    s += line("direction",
-              fmt::format("freestream towards {} (CCW from +x); x, y, u_x, u_y in this world frame, θ from "
-                          "the freestream",
-                          deg(sc.direction_deg)));
+    s += summary_line(
+        "direction",
+        fmt::format("freestream towards {} (CCW from +x); x, y, u_x, u_y in this world frame, θ from "
+                    "the freestream",
+                    deg(sc.direction_deg)));
     // Lift and drag are in the flow's frame; the world's components of the same force beside them.
     const WorldForce& w = f.world;
-    s += line("", fmt::format("force in the world frame: F_x = {} N/m, F_y = {} N/m{}", num(w.x, "{:.6g}"),
-                              num(w.y, "{:.6g}"), per));
+    s += summary_line("", fmt::format("force in the world frame: F_x = {} N/m, F_y = {} N/m{}",
+                                      num(w.x, "{:.6g}"), num(w.y, "{:.6g}"), per));
   }
   if (f.thrust)
-    s += line("course", fmt::format("{}: thrust {} N/m (ahead +), side force {} N/m (to port +){}",
-                                    deg(*sc.course_deg), num(*f.thrust, "{:.8g}"), num(*f.side, "{:.6g}"), per));
+    s += summary_line(
+        "course", fmt::format("{}: thrust {} N/m (ahead +), side force {} N/m (to port +){}",
+                              deg(*sc.course_deg), num(*f.thrust, "{:.8g}"), num(*f.side, "{:.6g}"), per));
   if (sc.span > 0.0) {
     std::string t = fmt::format("b = {} m: lift {}, drag {}", num(sc.span), newtons(*f.lift_total),
                                 newtons(*f.drag_total));
     if (f.thrust_total) t += fmt::format(", thrust {}, side force {}", newtons(*f.thrust_total), newtons(*f.side_total));
-    s += line("span", t);
+    s += summary_line("span", t);
     if (f.torque_total)
-      s += line("", fmt::format("torque {}, spin power {}", newtons(*f.torque_total, "N·m"),
-                                newtons(*f.spin_power_total, "W")));
+      s += summary_line("", fmt::format("torque {}, spin power {}", newtons(*f.torque_total, "N·m"),
+                                        newtons(*f.spin_power_total, "W")));
   }
   return s;
 }
 
 std::string reynolds_line(const Scene& sc) {
   if (sc.viscosity <= 0.0) return "";
-  return line("Reynolds", sc.speed > 0.0
-                              ? fmt::format("Re = U·2a/ν = {} (ν = {} m²/s; potential flow does not use it)",
-                                            num(sc.reynolds(), "{:.6g}"), num(sc.viscosity))
-                              : fmt::format("undefined (U = 0; ν = {} m²/s)", num(sc.viscosity)));
+  return summary_line("Reynolds",
+                      sc.speed > 0.0
+                          ? fmt::format("Re = U·2a/ν = {} (ν = {} m²/s; potential flow does not use it)",
+                                        num(sc.reynolds(), "{:.6g}"), num(sc.viscosity))
+                          : fmt::format("undefined (U = 0; ν = {} m²/s)", num(sc.viscosity)));
 }
 
 std::string inviscid_bound_lines(const FlowResult& r) {
   const Scene& sc = r.c.scene;
   std::string s;
   if (sc.speed <= 0.0 || !r.forces.cl) return s;
-  s += line("ideal", "potential flow is the inviscid upper bound: a real (viscous) cylinder gets less lift "
-                     "and some drag");
+  s += summary_line("ideal",
+                    "potential flow is the inviscid upper bound: a real (viscous) cylinder gets less lift "
+                    "and some drag");
   const ViscousReference* ref = shipped_reference();
-  if (!ref) return s + line("", "viscous reference: the data file cannot be read");
+  if (!ref) return s + summary_line("", "viscous reference: the data file cannot be read");
   if (const auto n = nearest_reference(sc, *ref))
-    s += line("", fmt::format("viscous reference at Re = {}, α = {}: C_L = {} = {} of −2πα ({}, {}){}",
-                              num(n->reynolds), num(n->alpha), num(n->cl, "{:.4g}"),
-                              n->alpha != 0.0 ? num(n->cl / (-2.0 * M_PI * n->alpha), "{:.3f}") : "—",
-                              who(n->label), n->source,
-                              sc.viscosity > 0.0 && std::fabs(std::log(sc.reynolds() / n->reynolds)) > std::log(2.0)
-                                  ? fmt::format(" — not this Re ({})", num(sc.reynolds(), "{:.3g}"))
-                                  : ""));
+    s += summary_line(
+        "", fmt::format("viscous reference at Re = {}, α = {}: C_L = {} = {} of −2πα ({}, {}){}",
+                        num(n->reynolds), num(n->alpha), num(n->cl, "{:.4g}"),
+                        n->alpha != 0.0 ? num(n->cl / (-2.0 * M_PI * n->alpha), "{:.3f}") : "—",
+                        who(n->label), n->source,
+                        sc.viscosity > 0.0 && std::fabs(std::log(sc.reynolds() / n->reynolds)) > std::log(2.0)
+                            ? fmt::format(" — not this Re ({})", num(sc.reynolds(), "{:.3g}"))
+                            : ""));
   else {
     double amax = 0.0;
     std::string res;
@@ -132,8 +138,9 @@ std::string inviscid_bound_lines(const FlowResult& r) {
       const std::string re = num(d.reynolds);
       if (res.find(re) == std::string::npos) res += (res.empty() ? "" : ", ") + re;
     }
-    s += line("", fmt::format("viscous reference: none within Δα = {} of α = {} (tabulated: |α| ≤ {} at Re = {})",
-                              kReferenceAlphaReach, num(sc.spin_ratio(), "{:.4g}"), num(amax), res));
+    s += summary_line(
+        "", fmt::format("viscous reference: none within Δα = {} of α = {} (tabulated: |α| ≤ {} at Re = {})",
+                        kReferenceAlphaReach, num(sc.spin_ratio(), "{:.4g}"), num(amax), res));
   }
   return s + rotor_lines(sc);
 }
@@ -141,14 +148,14 @@ std::string inviscid_bound_lines(const FlowResult& r) {
 std::string rotor_lines(const Scene& sc) {
   if (!(sc.span > 0.0) || sc.speed <= 0.0) return "";
   const RotorData* data = shipped_rotor_data();
-  if (!data) return "\n" + line("rotor data", "cannot be read: " + rotor_data_error());
+  if (!data) return "\n" + summary_line("rotor data", "cannot be read: " + rotor_data_error());
   const double re = sc.viscosity > 0.0 ? sc.reynolds() : 0.0;
   // The block's heading goes on the "rotor data" label; its lines are indented under it.
   const std::string block = rotor_comparison_text(*data, re, sc.spin_ratio(), sc.span / (2.0 * sc.radius));
   std::string out;
   size_t start = 0;
   for (size_t end; (end = block.find('\n', start)) != std::string::npos; start = end + 1)
-    out += line(start == 0 ? "rotor data" : "", block.substr(start, end - start));
+    out += summary_line(start == 0 ? "rotor data" : "", block.substr(start, end - start));
   return out;
 }
 

@@ -30,6 +30,9 @@ std::optional<NearestReference> nearest_reference(const Scene& sc, const Viscous
 /// (the summary then says so rather than failing the run).
 const ViscousReference* shipped_reference();
 
+/// One summary line: the label in 15 columns, then the text ("{:<15}{}\n").
+std::string summary_line(const std::string& label, const std::string& text);
+
 /// "272031 N (272 kN)": a total force, with kN or MN beside N when it is that large.
 std::string newtons(double v, const char* unit = "N");
 
