@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "app/commands.hpp"
+#include "app/compare.hpp"
 #include "base/atomic_file.hpp"
 #include "io/compare.hpp"
 #include "io/json_output.hpp"

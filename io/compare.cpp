@@ -1,68 +1,76 @@
 #include "io/compare.hpp"
 
-#include "io/text_format.hpp"
-
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <map>
-#include <memory>
-#include <optional>
+#include <utility>
 
 #include "io/hdf5_io.hpp"
 #include "io/inspect.hpp"
-#include "io/schema.hpp"
+#include "io/text_format.hpp"
 
 namespace magnus {
 
 namespace {
 
-/// The parameters compared: the root title, the model and every /parameters attribute of the schema.
-std::vector<const AttrSpec*> params() {
+/// The marker of a row that does not apply to a file's model.
+constexpr const char* kNotApplicable = "—";
+
+std::string show(const CompareParam& p) {
+  if (p.text) return *p.text;
+  if (p.number) return figure(*p.number, "{:.10g}");
+  return "—";
+}
+
+/// A row of the table: its label and one cell per file.
+using TableRow = std::pair<std::string, std::vector<std::string>>;
+
+/// The parameters that differ (but the title, which heads the table), one row each.
+std::vector<TableRow> param_rows(const ComparedFiles& d) {
+  std::vector<TableRow> rows;
+  for (size_t k : d.differ) {
+    if (k == 0) continue;  // the titles head the table already
+    std::vector<std::string> cells;
+    for (const auto& f : d.files) cells.push_back(show(f.params[k]));
+    const AttrSpec& p = *d.params[k];
+    const std::string units = p.kind == AttrKind::number ? p.units : "";
+    rows.push_back({units.empty() ? p.name : fmt::format("{} ({})", p.name, units), cells});
+  }
+  return rows;
+}
+
+/// One row per quantity: the figure, "(last step)" after a navier-stokes value of the last step, "undefined",
+/// or "—" where the row is not of the file's model.
+std::vector<TableRow> value_rows(const ComparedFiles& d) {
+  std::vector<TableRow> rows;
+  for (size_t q = 0; q < d.quantities.size(); ++q) {
+    std::vector<std::string> cells;
+    for (const auto& f : d.files)
+      cells.push_back(!f.has(d.quantities[q].models()) ? kNotApplicable
+                      : f.values[q]                    ? figure(*f.values[q], d.quantities[q].spec.c_str()) +
+                                          (f.last_step[q] ? " (last step)" : "")
+                                    : "undefined");
+    rows.push_back({d.quantities[q].label, cells});
+  }
+  return rows;
+}
+
+bool any_viscous(const ComparedFiles& d) {
+  return std::any_of(d.files.begin(), d.files.end(), [](const ComparedFile& f) { return f.viscous; });
+}
+
+}  // namespace
+
+std::vector<const AttrSpec*> compare_parameters() {
   std::vector<const AttrSpec*> out = {find_attribute("/", "title"), find_attribute("/", "model")};
   for (const AttrSpec& a : result_attributes())
     if (std::string(a.group) == "/parameters") out.push_back(&a);
   return out;
 }
 
-struct Param {
-  std::optional<double> number;
-  std::optional<std::string> text;
-  bool present() const { return number || text; }
-};
-
-bool same(const Param& a, const Param& b) {
-  if (a.present() != b.present()) return false;
-  if (a.text || b.text) return a.text == b.text;
-  if (!a.number) return true;
-  const double x = *a.number, y = *b.number;
-  return x == y || std::fabs(x - y) <= 1e-12 * std::max(std::fabs(x), std::fabs(y));
-}
-
-std::string show(const Param& p) {
-  if (p.text) return *p.text;
-  if (p.number) return figure(*p.number, "{:.10g}");
-  return "—";
-}
-
-/// One row of the comparison: a schema attribute with a compare label, or a ratio of two of them.
-struct Quantity {
-  std::string label, csv, spec;
-  const AttrSpec* attr = nullptr;  ///< the value, or
-  const AttrSpec* num = nullptr;   ///< num / den (− 1 when minus_one)
-  const AttrSpec* den = nullptr;
-  bool minus_one = false;
-  /// The results the row belongs to: a file of the other model shows "—" there (not "undefined").
-  Models models() const { return (attr ? attr : num)->models; }
-};
-
-/// The marker of a row that does not apply to a file's model.
-constexpr const char* kNotApplicable = "—";
-
-std::vector<Quantity> quantities() {
-  std::vector<Quantity> out;
+std::vector<CompareQuantity> compare_quantities() {
+  std::vector<CompareQuantity> out;
   for (const AttrSpec& a : result_attributes()) {
     if (!a.compare_label) continue;
     out.push_back({a.compare_label, a.compare_csv, a.compare_format, &a});
@@ -76,28 +84,17 @@ std::vector<Quantity> quantities() {
   return out;
 }
 
-struct FileData {
-  std::string path;
-  bool viscous = false;  // a navier-stokes result
-  bool partial = false;  // a navier-stokes run stopped before its end (/@partial = 1)
-  std::string status;    // why it stopped (navier-stokes)
-  bool has(Models m) const { return m == Models::all || (m == Models::viscous) == viscous; }
-  std::vector<Param> params;                  // as params()
-  std::vector<std::optional<double>> values;  // as quantities()
-  std::vector<bool> last_step;                // as quantities(): a navier-stokes value of the last step
-};
-
-FileData read(const std::string& path, const std::vector<const AttrSpec*>& ps,
-              const std::vector<Quantity>& qs) {
+ComparedFile read_compared(const std::string& path, const std::vector<const AttrSpec*>& ps,
+                           const std::vector<CompareQuantity>& qs) {
   check_result(path);  // a file inspect refuses is refused here too, not shown with "—" or "undefined"
   const ResultFile f(path);
-  FileData d;
+  ComparedFile d;
   d.path = path;
   d.viscous = f.has_attr("/", "model") && f.attr_string("/", "model") == "navier-stokes";
   d.partial = d.viscous && f.has_attr("/", "partial") && f.attr_int("/", "partial") != 0;
   if (d.viscous && f.has_attr("/", "status")) d.status = f.attr_string("/", "status");
   for (const AttrSpec* p : ps) {
-    Param v;
+    CompareParam v;
     if (std::string(p->group) == "/" && std::string(p->name) == "model") {
       v.text = d.viscous ? "navier-stokes" : "potential";  // version 1 files hold potential flow only
     } else if (f.has_attr(p->group, p->name)) {
@@ -118,7 +115,7 @@ FileData read(const std::string& path, const std::vector<const AttrSpec*>& ps,
   auto last = [&](const AttrSpec* a) {
     return a && d.viscous && viscous_last_step(a->group, a->name) && !viscous_mean_of(a->group, a->name);
   };
-  for (const Quantity& q : qs) {
+  for (const CompareQuantity& q : qs) {
     d.last_step.push_back(last(q.attr) || last(q.num) || last(q.den));
     if (q.attr) {
       d.values.push_back(attr(q.attr));
@@ -131,80 +128,25 @@ FileData read(const std::string& path, const std::vector<const AttrSpec*>& ps,
   return d;
 }
 
-}  // namespace
-
-Comparison compare_results(const std::vector<std::string>& paths) {
-  if (paths.empty()) throw std::invalid_argument("compare: no result files given");
-  const std::vector<const AttrSpec*> kParams = params();
-  std::vector<Quantity> kQuantities = quantities();
-  std::vector<FileData> files;
-  for (const auto& p : paths) files.push_back(read(p, kParams, kQuantities));
-  // Only the rows of the files' models: potential results alone show no viscous rows, and the other way
-  // round; in a mixed comparison each file shows "—" in the other model's rows.
-  {
-    std::vector<Quantity> kept;
-    std::vector<std::vector<std::optional<double>>> values(files.size());
-    std::vector<std::vector<bool>> last(files.size());
-    for (size_t q = 0; q < kQuantities.size(); ++q) {
-      if (std::none_of(files.begin(), files.end(),
-                       [&](const FileData& f) { return f.has(kQuantities[q].models()); }))
-        continue;
-      kept.push_back(kQuantities[q]);
-      for (size_t i = 0; i < files.size(); ++i)
-        values[i].push_back(files[i].values[q]), last[i].push_back(files[i].last_step[q]);
-    }
-    kQuantities = std::move(kept);
-    for (size_t i = 0; i < files.size(); ++i)
-      files[i].values = std::move(values[i]), files[i].last_step = std::move(last[i]);
-  }
-
-  Comparison out;
-  std::vector<size_t> differ;
-  for (size_t k = 0; k < std::size(kParams); ++k)
-    for (size_t i = 1; i < files.size(); ++i)
-      if (!same(files[0].params[k], files[i].params[k])) {
-        differ.push_back(k);
-        out.differing.push_back(kParams[k]->name);
-        break;
-      }
-
-  // Cells, then widths.
-  const size_t n = files.size();
+std::string comparison_table(const ComparedFiles& d) {
+  const size_t n = d.files.size();
   std::vector<std::string> head(n);
   for (size_t i = 0; i < n; ++i) head[i] = fmt::format("[{}]", i + 1);
-  std::vector<std::pair<std::string, std::vector<std::string>>> param_rows, value_rows;
-  for (size_t k : differ) {
-    if (k == 0) continue;  // the titles head the table already
-    std::vector<std::string> cells;
-    for (const auto& f : files) cells.push_back(show(f.params[k]));
-    const std::string units = kParams[k]->kind == AttrKind::number ? kParams[k]->units : "";
-    param_rows.push_back(
-        {units.empty() ? kParams[k]->name : fmt::format("{} ({})", kParams[k]->name, units), cells});
-  }
-  for (size_t q = 0; q < std::size(kQuantities); ++q) {
-    std::vector<std::string> cells;
-    for (const auto& f : files)
-      cells.push_back(!f.has(kQuantities[q].models()) ? kNotApplicable
-                      : f.values[q] ? figure(*f.values[q], kQuantities[q].spec.c_str()) +
-                                          (f.last_step[q] ? " (last step)" : "")
-                                    : "undefined");
-    value_rows.push_back({kQuantities[q].label, cells});
-  }
+  const std::vector<TableRow> params = param_rows(d), values = value_rows(d);
   size_t label_w = 24;
   std::vector<size_t> col_w(n, 12);
-  for (const auto* rows : {&param_rows, &value_rows})
+  for (const auto* rows : {&params, &values})
     for (const auto& [label, cells] : *rows) {
       label_w = std::max(label_w, display_width(label) + 2);
       for (size_t i = 0; i < n; ++i) col_w[i] = std::max(col_w[i], display_width(cells[i]));
     }
 
-  std::string& t = out.table;
-  t += fmt::format("magnus compare: {} result file{}\n", n, n == 1 ? "" : "s");
+  std::string t = fmt::format("magnus compare: {} result file{}\n", n, n == 1 ? "" : "s");
   for (size_t i = 0; i < n; ++i) {
-    const Param& title = files[i].params[0];
-    t += fmt::format("  {} {}{}{}\n", head[i], files[i].path,
-                     title.text ? "  — " + *title.text : std::string(),
-                     files[i].partial ? "  (PARTIAL: " + files[i].status + ")" : std::string());
+    const ComparedFile& f = d.files[i];
+    const CompareParam& title = f.params[0];
+    t += fmt::format("  {} {}{}{}\n", head[i], f.path, title.text ? "  — " + *title.text : std::string(),
+                     f.partial ? "  (PARTIAL: " + f.status + ")" : std::string());
   }
   auto row = [&](const std::string& label, const std::vector<std::string>& cells) {
     std::string s = pad_right("  " + label, label_w + 2);
@@ -215,57 +157,49 @@ Comparison compare_results(const std::vector<std::string>& paths) {
   row("", head);
   if (n == 1) {
     t += "parameters: one file, nothing to compare\n";
-  } else if (param_rows.empty()) {
-    t += differ.empty() ? "parameters: all the same\n" : "parameters: all the same but the title\n";
+  } else if (params.empty()) {
+    t += d.differ.empty() ? "parameters: all the same\n" : "parameters: all the same but the title\n";
   } else {
     t += "parameters that differ\n";
-    for (const auto& [label, cells] : param_rows) row(label, cells);
+    for (const auto& [label, cells] : params) row(label, cells);
   }
-  const bool any_viscous =
-      std::any_of(files.begin(), files.end(), [](const FileData& f) { return f.viscous; });
-  t += any_viscous ? "lift, drag, errors; viscous beside ideal (— : not of that file's model); navier-stokes "
-                     "lift, drag, C_L, C_D: time means\n"
-                   : "lift, drag, errors\n";
-  for (const auto& [label, cells] : value_rows) row(label, cells);
+  t += any_viscous(d)
+           ? "lift, drag, errors; viscous beside ideal (— : not of that file's model); navier-stokes "
+             "lift, drag, C_L, C_D: time means\n"
+           : "lift, drag, errors\n";
+  for (const auto& [label, cells] : values) row(label, cells);
+  return t;
+}
 
-  // CSV: one row per file; with navier-stokes files, a column partial: 1, 0, or "" for a potential file.
-  std::string& c = out.csv;
-  c += any_viscous ? "file,title,partial" : "file,title";
-  for (size_t k : differ)
-    if (k != 0) c += std::string(",") + kParams[k]->name;
-  for (const auto& q : kQuantities) c += std::string(",") + q.csv;
+std::string comparison_csv(const ComparedFiles& d) {
+  // One row per file; with navier-stokes files, a column partial: 1, 0, or "" for a potential file.
+  const bool viscous = any_viscous(d);
+  std::string c = viscous ? "file,title,partial" : "file,title";
+  for (size_t k : d.differ)
+    if (k != 0) c += std::string(",") + d.params[k]->name;
+  for (const auto& q : d.quantities) c += std::string(",") + q.csv;
   // With navier-stokes files: the columns that hold a file's last-step values (space-separated; the rest of
   // its lift, drag, C_L, C_D columns are time means).
-  if (any_viscous) c += ",last_step";
+  if (viscous) c += ",last_step";
   c += "\n";
-  for (const auto& f : files) {
+  for (const auto& f : d.files) {
     c += csv_field(f.path) + "," + csv_field(f.params[0].text.value_or(""));
-    if (any_viscous) c += f.viscous ? (f.partial ? ",1" : ",0") : ",";
-    for (size_t k : differ)
+    if (viscous) c += f.viscous ? (f.partial ? ",1" : ",0") : ",";
+    for (size_t k : d.differ)
       if (k != 0)
         c += "," + csv_field(f.params[k].text     ? *f.params[k].text
                              : f.params[k].number ? csv_number(*f.params[k].number)
                                                   : "");
     for (const auto& v : f.values) c += "," + (v ? csv_number(*v) : std::string());
-    if (any_viscous) {
+    if (viscous) {
       std::string names;
-      for (size_t q = 0; q < kQuantities.size(); ++q)
-        if (f.last_step[q] && f.values[q]) names += (names.empty() ? "" : " ") + kQuantities[q].csv;
+      for (size_t q = 0; q < d.quantities.size(); ++q)
+        if (f.last_step[q] && f.values[q]) names += (names.empty() ? "" : " ") + d.quantities[q].csv;
       c += "," + csv_field(names);
     }
     c += "\n";
   }
-  return out;
-}
-
-void command_compare(const std::vector<std::string>& paths, const std::string& csv) {
-  check_distinct_paths(paths, {csv});
-  if (!csv.empty()) check_writable(csv);
-  const Comparison c = compare_results(paths);
-  if (!csv.empty()) write_text_output(csv, c.csv);
-  // With --csv -, standard output carries the CSV alone (for a pipe); the table, which says the same, is
-  // not printed.
-  if (!is_stdout(csv)) std::fputs(c.table.c_str(), stdout);
+  return c;
 }
 
 }  // namespace magnus

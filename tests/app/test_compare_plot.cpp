@@ -10,6 +10,7 @@
 
 #include <hdf5.h>
 
+#include "app/compare.hpp"
 #include "app/plot_files.hpp"
 #include "io/compare.hpp"
 #include "io/hdf5_io.hpp"

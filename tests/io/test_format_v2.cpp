@@ -12,7 +12,7 @@
 #include <fstream>
 #include <set>
 
-#include "io/compare.hpp"
+#include "app/compare.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/inspect.hpp"
 #include "io/result_reader.hpp"

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "io/compare.hpp"
+#include "app/compare.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/inspect.hpp"
 #include "io/ns_sweep_file.hpp"

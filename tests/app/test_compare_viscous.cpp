@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "io/compare.hpp"
+#include "app/compare.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/viscous_fixture.hpp"
 #include "support.hpp"
@@ -43,7 +43,7 @@ std::vector<std::string> split(const std::string& s) {
 }  // namespace
 
 TEST_CASE("compare: viscous and ideal side by side, '—' where a row is not of the file's model",
-          "[io][compare][viscous]") {
+          "[app][compare][viscous]") {
   const std::string dir = test::temp_dir("compare-ns");
   Case c = test::make_case(1.0, 32);
   c.title = "potential";
@@ -97,7 +97,7 @@ TEST_CASE("compare: viscous and ideal side by side, '—' where a row is not of 
   CHECK(rows[1][col("model")] == "navier-stokes");
 }
 
-TEST_CASE("compare: rows of a model no file has are left out", "[io][compare][viscous]") {
+TEST_CASE("compare: rows of a model no file has are left out", "[app][compare][viscous]") {
   const std::string dir = test::temp_dir("compare-ns-only");
   Case c = test::make_case(1.0, 32);
   write_result(run_case(c), dir + "/a.h5");
@@ -121,7 +121,7 @@ TEST_CASE("compare: rows of a model no file has are left out", "[io][compare][vi
 }
 
 TEST_CASE("compare: a navier-stokes file's lift, drag, C_L, C_D are its means, last-step values say so",
-          "[io][compare][viscous]") {
+          "[app][compare][viscous]") {
   const std::string dir = test::temp_dir("compare-ns-means");
   Case c = test::make_case(1.0, 32);
   write_result(run_case(c), dir + "/ideal.h5");
