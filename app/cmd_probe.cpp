@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "app/commands.hpp"
+#include "app/probe.hpp"
 #include "base/atomic_file.hpp"
 #include "io/probe.hpp"
 

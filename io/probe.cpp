@@ -2,58 +2,31 @@
 
 #include <fmt/core.h>
 
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <stdexcept>
 
 #include "io/hdf5_io.hpp"
-#include "io/case_keys.hpp"
 #include "io/inspect.hpp"
 #include "io/text_format.hpp"
-#include "postproc/potential/fields.hpp"
-#include "postproc/probe.hpp"
 
 namespace magnus {
 
-std::pair<double, double> parse_probe_point(const std::string& text) {
-  const size_t comma = text.find(',');
-  auto number = [&](const std::string& s, double& v) {
-    const char* begin = s.c_str();
-    char* end = nullptr;
-    errno = 0;
-    v = std::strtod(begin, &end);
-    return !s.empty() && end == begin + s.size() && errno != ERANGE && std::isfinite(v);
-  };
-  double x = 0.0, y = 0.0;
-  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos ||
-      !number(text.substr(0, comma), x) || !number(text.substr(comma + 1), y))
-    throw std::invalid_argument(
-        fmt::format("point '{}': expected x,y in metres (two finite numbers, e.g. 0.2,-0.05)", cut_input(text)));
-  return {x, y};
-}
-
-ProbeTable probe_file(const std::string& path, const std::vector<std::pair<double, double>>& points) {
+ProbeFields read_probe_fields(const std::string& path) {
   check_result(path);  // what inspect refuses is refused here too
   const ResultFile f(path);
-  ProbeTable t;
-  t.file = path;
-  t.model = f.has_attr("/", "model") ? f.attr_string("/", "model") : "potential";
-  t.stencil = f.has_attr("/parameters", "stencil") ? f.attr_string("/parameters", "stencil") : "5-point";
-  t.field_order =
-      derivative_order(t.stencil == "9-point" ? StencilKind::nine_point : StencilKind::five_point);
-  t.points = probe_points(t.field_order);
+  ProbeFields d;
+  d.model = f.has_attr("/", "model") ? f.attr_string("/", "model") : "potential";
+  d.stencil = f.has_attr("/parameters", "stencil") ? f.attr_string("/parameters", "stencil") : "5-point";
   for (const char* p : {"/grid/r", "/grid/theta"})
     if (!f.has(p))
       throw std::runtime_error(fmt::format("'{}' is not a complete magnus result: no {}", path, p));
-  PolarGrid g;
+  PolarGrid& g = d.grid;
   g.r = f.dataset("/grid/r");
   g.theta = f.dataset("/grid/theta");
   g.n_r = int(g.r.size());
   g.n_theta = int(g.theta.size());
   if (g.r.empty()) throw std::runtime_error(fmt::format("'{}': /grid/r is empty", path));
   g.a = g.r.front();
-  t.radius = g.a;
   const size_t n = g.r.size() * g.theta.size();
   auto field = [&](const char* name, bool required) {
     const std::string p = std::string("/fields/") + name;
@@ -68,23 +41,11 @@ ProbeTable probe_file(const std::string& path, const std::vector<std::pair<doubl
           fmt::format("'{}' is damaged: {} has {} values, not n_r·n_θ = {}", path, p, v.size(), n));
     return v;
   };
-  const auto ux = field("u_x", true), uy = field("u_y", true), p = field("pressure", true),
-             cp = field("cp", false);
+  d.u_x = field("u_x", true), d.u_y = field("u_y", true), d.pressure = field("pressure", true);
+  d.cp = field("cp", false);
   // The grid is the wind frame, the points and the stored u_x, u_y the world's (turned by flow.direction).
-  const double beta = f.has_attr("/parameters", "direction") ? f.attr_double("/parameters", "direction") : 0.0;
-  for (const auto& [x, y] : points) {
-    const WorldForce w = rotate_deg(x, y, -beta);
-    const ProbeStencil s = probe_stencil(g, w.x, w.y, t.points);
-    ProbeSample q;
-    q.x = x, q.y = y, q.r = s.r, q.theta = beta == 0.0 ? s.theta : std::atan2(y, x);
-    if (q.theta < 0.0) q.theta += 2.0 * M_PI;
-    q.u_x = probe_value(s, ux, g.n_theta);
-    q.u_y = probe_value(s, uy, g.n_theta);
-    q.pressure = probe_value(s, p, g.n_theta);
-    if (!cp.empty()) q.cp = probe_value(s, cp, g.n_theta);
-    t.samples.push_back(q);
-  }
-  return t;
+  d.direction_deg = f.has_attr("/parameters", "direction") ? f.attr_double("/parameters", "direction") : 0.0;
+  return d;
 }
 
 namespace {

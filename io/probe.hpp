@@ -1,13 +1,13 @@
 #pragma once
-// `magnus probe FILE x,y …`: velocity, pressure and Cp of a stored result at points given in metres,
-// interpolated from the stored fields (postproc/probe.hpp: 4-point Lagrange in r and θ for 2nd-order
-// fields, 6-point for the 9-point stencil's 6th-order ones), as a table, CSV or JSON.
+// `magnus probe`'s formats: the grid and fields it reads of a result file, and its table, CSV and JSON of
+// the probed points (the interpolation is app/probe.hpp's, through postproc/probe.hpp).
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "io/json_output.hpp"
+#include "mesh/polar_grid.hpp"
 
 namespace magnus {
 
@@ -28,12 +28,18 @@ struct ProbeTable {
   std::vector<ProbeSample> samples;
 };
 
-/// "x,y" (two finite numbers in metres). Throws std::invalid_argument with one line naming the text.
-std::pair<double, double> parse_probe_point(const std::string& text);
+/// What probe reads of a result file: its model and stencil, the grid in the wind frame (r, θ; a = r[0]),
+/// the stored (n_r, n_θ) fields and the flow direction β.
+struct ProbeFields {
+  std::string model, stencil;                  ///< "potential" | "navier-stokes"; "5-point" | "9-point"
+  PolarGrid grid;                              ///< r, θ, n_r, n_θ and a only
+  std::vector<double> u_x, u_y, pressure, cp;  ///< m/s, Pa, 1 (world frame); cp empty when not stored
+  double direction_deg = 0.0;                  ///< β, deg
+};
 
-/// Probe a magnus-flow file at points (x, y) in metres. Throws one line: an unreadable file, a field the
-/// file does not hold, a point outside the grid (naming the point).
-ProbeTable probe_file(const std::string& path, const std::vector<std::pair<double, double>>& points);
+/// Read a magnus-flow file's grid and fields. Throws one line: an unreadable file (what inspect refuses), a
+/// field the file does not hold, a field of the wrong size.
+ProbeFields read_probe_fields(const std::string& path);
 
 /// The table printed on stdout.
 std::string probe_text(const ProbeTable& t);
