@@ -42,17 +42,90 @@ void bench_viscous(const Case& c, std::vector<int> ladder, int steps, int thread
   if (!csv.empty()) write_text_output(csv, ns_bench_csv(rows));
 }
 
+/// The options of magnus bench as given.
+struct BenchArgs {
+  std::string case_path, csv, plot;
+  std::vector<std::string> sets, methods, stencils;
+  std::vector<int> ladder;
+  int repeats = 5, threads = 1, steps = 200;
+  long cholmod_max = 300000;
+};
+
+/// The potential-flow bench's options: the ladder (each rung even), the methods, the stencils, the repeats.
+BenchOptions bench_options(const BenchArgs& o) {
+  BenchOptions opt;
+  if (!o.ladder.empty()) opt.ladder = o.ladder;
+  for (int n : opt.ladder)
+    if (n % 2) throw std::runtime_error(fmt::format("--ladder: n_theta = {} must be even", n));
+  if (!o.methods.empty()) {
+    opt.methods.clear();
+    for (const auto& m : o.methods) opt.methods.push_back(m == "fft" ? Method::fft : Method::cholmod);
+  }
+  if (!o.stencils.empty()) {
+    opt.stencils.clear();
+    for (const auto& s : o.stencils)
+      opt.stencils.push_back(s == "9-point" ? StencilKind::nine_point : StencilKind::five_point);
+  }
+  opt.repeats = o.repeats;
+  opt.threads = usable_threads(o.threads);
+  opt.cholmod_max_unknowns = o.cholmod_max;
+  return opt;
+}
+
+/// The Pareto front as a log-log PNG: C_L error against time, one joined point set per method and stencil;
+/// the legend goes beside the plot, off the data.
+void plot_bench_front(const std::vector<BenchRow>& rows, const std::string& title, const std::string& path) {
+  std::map<std::string, PointSet> by;
+  for (const auto& r : rows) {
+    PointSet& s = by[r.method + " " + r.stencil];
+    s.label = r.method + ", " + r.stencil;
+    s.joined = true;
+    if (r.cl_rel > 0) s.points.push_back({r.total_s * 1e3, r.cl_rel});
+  }
+  const Colour colours[] = {Colour::blue, Colour::red, Colour::green, Colour::purple};
+  std::vector<PointSet> series;
+  for (auto& [k, s] : by) {
+    s.colour = colours[series.size() % 4];
+    s.marker = int(series.size());
+    series.push_back(s);
+  }
+  CurvePage page;
+  page.title = "C_L error against time: " + literal_text(title);
+  page.xlabel = "time for one lift figure (ms)";
+  page.ylabel = "relative C_L error";
+  page.log_x = page.log_y = true;
+  plot_curves(page, {}, series, path);
+}
+
+/// magnus bench on a potential-flow case: speed against error on a ladder of grids per solver and stencil.
+void bench_potential(const Case& c, const BenchArgs& o) {
+  const BenchOptions opt = bench_options(o);
+  check_distinct_paths({o.case_path}, {o.csv, o.plot});
+  if (!o.csv.empty()) check_writable(o.csv);
+  if (!o.plot.empty()) check_file_writable(o.plot, "the PNG plot");
+  const bool tty = ::isatty(2);
+  auto progress = [tty](const std::string& text) {
+    if (tty) std::fprintf(stderr, "\r\033[K%s", text.c_str());
+  };
+  const auto rows = run_bench(c, opt, progress);
+  if (tty) std::fprintf(stderr, "\r\033[K");
+  if (rows.empty())
+    throw std::runtime_error(
+        "bench: no rung ran (the 9-point stencil needs geometric spacing, or every CHOLMOD "
+        "rung is above --cholmod-max-unknowns)");
+  std::FILE* table = is_stdout(o.csv) ? stderr : stdout;  // --csv -: the CSV alone on standard output
+  std::fprintf(table, "magnus bench — %s (α = %.6g, far field %s, %d thread%s, median of %d)\n",
+               c.title.c_str(), c.scene.spin_ratio(), to_string(c.grid.far_field), opt.threads,
+               opt.threads == 1 ? "" : "s", opt.repeats);
+  std::fputs(bench_table(rows).c_str(), table);
+  if (!o.csv.empty()) write_text_output(o.csv, bench_csv(rows));
+  if (!o.plot.empty()) plot_bench_front(rows, c.title, o.plot);
+}
+
 }  // namespace
 
 void add_bench_command(CLI::App& app) {
-  struct Options {
-    std::string case_path, csv, plot;
-    std::vector<std::string> sets, methods, stencils;
-    std::vector<int> ladder;
-    int repeats = 5, threads = 1, steps = 200;
-    long cholmod_max = 300000;
-  };
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<BenchArgs>();
   auto* b = app.add_subcommand("bench", "speed against error: a ladder of grids for each solver and stencil");
   // Options of one model only: given to the other, they are refused rather than ignored.
   static const char* const potential_only[] = {"--repeats", "--method", "--stencil", "--cholmod-max-unknowns"};
@@ -91,64 +164,7 @@ void add_bench_command(CLI::App& app) {
     if (b->count("--steps"))
       throw std::runtime_error(
           fmt::format("--steps: only used by a navier-stokes bench ({} is potential flow)", o->case_path));
-    BenchOptions opt;
-    if (!o->ladder.empty()) opt.ladder = o->ladder;
-    for (int n : opt.ladder)
-      if (n % 2) throw std::runtime_error(fmt::format("--ladder: n_theta = {} must be even", n));
-    if (!o->methods.empty()) {
-      opt.methods.clear();
-      for (const auto& m : o->methods) opt.methods.push_back(m == "fft" ? Method::fft : Method::cholmod);
-    }
-    if (!o->stencils.empty()) {
-      opt.stencils.clear();
-      for (const auto& s : o->stencils)
-        opt.stencils.push_back(s == "9-point" ? StencilKind::nine_point : StencilKind::five_point);
-    }
-    opt.repeats = o->repeats;
-    opt.threads = usable_threads(o->threads);
-    opt.cholmod_max_unknowns = o->cholmod_max;
-    check_distinct_paths({o->case_path}, {o->csv, o->plot});
-    if (!o->csv.empty()) check_writable(o->csv);
-    if (!o->plot.empty()) check_file_writable(o->plot, "the PNG plot");
-    const bool tty = ::isatty(2);
-    auto progress = [tty](const std::string& text) {
-      if (tty) std::fprintf(stderr, "\r\033[K%s", text.c_str());
-    };
-    const auto rows = run_bench(c, opt, progress);
-    if (tty) std::fprintf(stderr, "\r\033[K");
-    if (rows.empty())
-      throw std::runtime_error(
-          "bench: no rung ran (the 9-point stencil needs geometric spacing, or every CHOLMOD "
-          "rung is above --cholmod-max-unknowns)");
-    std::FILE* table = is_stdout(o->csv) ? stderr : stdout;  // --csv -: the CSV alone on standard output
-    std::fprintf(table, "magnus bench — %s (α = %.6g, far field %s, %d thread%s, median of %d)\n", c.title.c_str(),
-                c.scene.spin_ratio(), to_string(c.grid.far_field), opt.threads, opt.threads == 1 ? "" : "s",
-                opt.repeats);
-    std::fputs(bench_table(rows).c_str(), table);
-    if (!o->csv.empty()) write_text_output(o->csv, bench_csv(rows));
-    if (!o->plot.empty()) {
-      // One joined point set per method and stencil; the legend goes beside the plot, off the data.
-      std::map<std::string, PointSet> by;
-      for (const auto& r : rows) {
-        PointSet& s = by[r.method + " " + r.stencil];
-        s.label = r.method + ", " + r.stencil;
-        s.joined = true;
-        if (r.cl_rel > 0) s.points.push_back({r.total_s * 1e3, r.cl_rel});
-      }
-      const Colour colours[] = {Colour::blue, Colour::red, Colour::green, Colour::purple};
-      std::vector<PointSet> series;
-      for (auto& [k, s] : by) {
-        s.colour = colours[series.size() % 4];
-        s.marker = int(series.size());
-        series.push_back(s);
-      }
-      CurvePage page;
-      page.title = "C_L error against time: " + literal_text(c.title);
-      page.xlabel = "time for one lift figure (ms)";
-      page.ylabel = "relative C_L error";
-      page.log_x = page.log_y = true;
-      plot_curves(page, {}, series, o->plot);
-    }
+    bench_potential(c, *o);
   });
 }
 
