@@ -4,7 +4,6 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <fstream>
 
 #include "io/case_file.hpp"
 #include "io/hdf5_io.hpp"
@@ -21,11 +20,6 @@ namespace {
 std::string scene(const std::string& cylinder = "", const std::string& flow = "", const std::string& more = "") {
   return "[cylinder]\nradius = 0.1\nspin = 100.0\n" + cylinder + "[flow]\nspeed = 10.0\n" + flow +
          "[grid]\nn_theta = 32\n" + more;
-}
-
-std::string write(const std::string& path, const std::string& text) {
-  std::ofstream(path) << text;
-  return path;
 }
 
 }  // namespace
