@@ -75,7 +75,9 @@ struct FlowResult {
   Surface surface;
   Forces forces;
   Errors errors;
-  std::vector<StagnationPoint> stagnation, stagnation_exact;  ///< θ in [0, 2π), sorted by θ
+  /// Numeric and exact: θ in [0, 2π), sorted by θ as postprocess computes them (read_result keeps the order
+  /// a file stores).
+  std::vector<StagnationPoint> stagnation, stagnation_exact;
   Timing timing;
   RunInfo info;
   std::optional<ViscousPart> viscous;  ///< present for navier-stokes results
