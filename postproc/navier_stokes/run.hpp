@@ -2,6 +2,8 @@
 // The navier-stokes chain, written once: case → parameters → time marching from rest (or from a
 // checkpoint) → the last state post-processed into a FlowResult with its viscous part (fields, surface,
 // forces, means, history, snapshots), beside the potential-flow figures for the same scene.
+// run.cpp checks the case and takes one path (run_paths.hpp): Newton's method and the choice of time.mode
+// "auto" in run_steady.cpp, the march in run_march.cpp; the FlowResult of a state in viscous_result.cpp.
 #include <functional>
 
 #include "postproc/result.hpp"

@@ -1,0 +1,144 @@
+// The steady paths of a viscous run: time.mode "steady" (Newton's method on four grids), and what
+// time.mode "auto" does before it would march (auto_plan, then Newton and the eigenvalue test).
+#include <fmt/core.h>
+
+#include <cmath>
+#include <complex>
+#include <stdexcept>
+#include <string>
+
+#include "postproc/navier_stokes/forces.hpp"
+#include "postproc/navier_stokes/run_paths.hpp"
+#include "postproc/navier_stokes/steady_study.hpp"
+#include "postproc/navier_stokes/unsteady.hpp"
+#include "solver/navier_stokes/newton.hpp"
+#include "solver/navier_stokes/stability.hpp"
+
+namespace magnus {
+
+AutoPlan auto_plan(const NsParams& p) {
+  const double Re = p.reynolds(), alpha = p.U > 0.0 ? std::fabs(p.a * p.omega / p.U) : 0.0;
+  if (Re >= 60.0 && alpha <= 1.0)
+    return {AutoStart::march, fmt::format("Re {:.4g} ≥ 60, α {:.3g} ≤ 1: the wake sheds", Re, alpha)};
+  if (p.U > 0.0 && Re <= 35.0 && alpha <= 3.0)
+    return {AutoStart::newton_only,
+            fmt::format("Re {:.4g} ≤ 35, α {:.3g} ≤ 3: below the onset of shedding, Re ≈ 47 at α = 0; no "
+                        "eigenvalue test",
+                        Re, alpha)};
+  return {};
+}
+
+namespace {
+
+/// The steady result of a converged Newton solve, with its status line (one history sample), Newton's wall
+/// time (s) and, when computed, the leading eigenvalue of its linear stability and its time; the run's
+/// time is their sum.
+FlowResult steady_result(const Case& c, const NsParams& p, const PolarGrid& g, NsState state,
+                         const std::string& status, double newton_seconds, const StabilityResult* stab) {
+  UnsteadyResult u;
+  u.state = std::move(state);
+  u.steady = u.converged = true;
+  u.message = status;
+  const ViscousForces f = viscous_forces(g, p, c.scene.density, u.state);
+  u.history = {force_sample(0.0, f)};
+  u.has_coefficients = f.C_L.has_value();
+  u.C_L_mean = f.C_L.value_or(0.0), u.C_D_mean = f.C_D.value_or(0.0), u.C_M_mean = f.C_M.value_or(0.0);
+  u.M_mean = f.M;
+  u.reference_speed = c.scene.reference_speed();
+  u.wall_seconds = newton_seconds + (stab ? stab->seconds : 0.0);
+  FlowResult r = viscous_result(c, p, u, {});
+  r.viscous->newton = true;
+  r.viscous->newton_seconds = newton_seconds;
+  if (stab) r.viscous->stability_seconds = stab->seconds;
+  if (stab && !stab->eigenvalues.empty()) {
+    r.viscous->eigenvalue_real = stab->eigenvalues.front().real();
+    r.viscous->eigenvalue_imag = stab->eigenvalues.front().imag();
+    if (!stab->residuals.empty()) r.viscous->eigenvalue_residual = stab->residuals.front();
+  }
+  return r;
+}
+
+/// The status tail of a converged Newton solve.
+std::string newton_text(const NewtonResult& nr) {
+  return fmt::format("steady, by Newton's method: {} steps, residual {:.1e}", nr.iterations,
+                     nr.residuals.empty() ? 0.0 : nr.residuals.back());
+}
+
+}  // namespace
+
+FlowResult steady_by_newton(const Case& c, const NsParams& p, const PolarGrid& g, const Checkpoint* resume) {
+  SteadyStudyOptions o;
+  if (resume) o.scales = {1.0};
+  SteadyStudy study = steady_study(p, o, resume ? &resume->state : nullptr);
+  if (!study.converged) {
+    const NewtonResult& nr = study.levels.back().newton;
+    throw std::runtime_error(fmt::format(
+        "time.mode = \"steady\": Newton's method did not converge ({}; residual {:.2e} after {} steps): the "
+        "flow may have no steady state here; time.mode = \"auto\" marches in time instead",
+        study.message, nr.residuals.empty() ? 0.0 : nr.residuals.back(), nr.iterations));
+  }
+  const NewtonResult& nr = study.levels.back().newton;
+  const std::string status = fmt::format("steady, by Newton's method: {}, residual {:.1e}", study.message,
+                                         nr.residuals.empty() ? 0.0 : nr.residuals.back());
+  NsState state = std::move(study.state);
+  study.state = NsState{};
+  FlowResult r = steady_result(c, p, g, std::move(state), status, study.wall_seconds, nullptr);
+  r.viscous->steady_study = std::move(study);
+  return r;
+}
+
+AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g) {
+  AutoChoice a;
+  const AutoPlan plan = auto_plan(p);
+  if (plan.start == AutoStart::march) {
+    a.why = "auto: marched in time (" + plan.why + "); ";
+    return a;
+  }
+  NewtonOptions o;
+  o.max_iterations = 15;
+  const NewtonResult nr = solve_steady(p, potential_guess(p, g), o);
+  a.newton_seconds = nr.wall_seconds;
+  if (!nr.converged) {
+    a.why = fmt::format("auto: marched in time (no steady state by Newton: {}); ", nr.message);
+    return a;
+  }
+  if (plan.start == AutoStart::newton_only) {
+    a.steady = steady_result(c, p, g, nr.state, "auto: steady (" + plan.why + "); " + newton_text(nr),
+                             nr.wall_seconds, nullptr);
+    return a;
+  }
+  StabilityResult st;
+  try {
+    // Cheaper than `magnus stability`: fewer restarts and no shifts added for gaps (the status says when
+    // the strip right of the leading eigenvalue was not covered).
+    StabilityOptions so;
+    so.restarts = 4, so.extra_shifts = 0;
+    st = leading_eigenvalues(p, nr.state, 4, so);
+  } catch (const std::exception& e) {
+    a.why = fmt::format("auto: marched in time (stability not computed: {}); ", e.what());
+    return a;
+  }
+  a.stability_seconds = st.seconds;
+  if (st.eigenvalues.empty()) {
+    a.why = fmt::format("auto: marched in time (steady state found, {}); ", st.message);
+    return a;
+  }
+  const std::complex<double> l = st.eigenvalues.front();
+  a.eigenvalue = l;
+  if (!st.residuals.empty()) a.eigenvalue_residual = st.residuals.front();
+  // St = f·D/U needs a stream: in still fluid (U = 0) the eigenvalues are in a|ω|/D and St is undefined.
+  const std::string lam =
+      fmt::format("leading eigenvalue {:.4g} {:+.4g}i {}, St {}", l.real(), l.imag(), rate_unit_name(c.scene),
+                  p.U > 0.0 ? fmt::format("{:.4g}", st.strouhal()) : "undefined (U = 0)");
+  if (st.stable) {
+    a.steady = steady_result(
+        c, p, g, nr.state,
+        fmt::format("auto: stable ({}{}); {}", lam,
+                    st.covered ? "" : "; not verified: the search left a gap right of it", newton_text(nr)),
+        nr.wall_seconds, &st);
+  } else
+    a.why = fmt::format("auto: marched in time (the steady state is unstable: {}); ", lam);
+  return a;
+}
+
+}  // namespace magnus
