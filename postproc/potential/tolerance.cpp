@@ -39,9 +39,9 @@ double relative(double diff, double cl) {
 /// stability suite: the discrete Laplacian's conditioning times the wall derivative's 1/h).
 double roundoff(int n) { return 0.25 * 2.220446049250313e-16 * double(n) * n; }
 
-}  // namespace
-
-GridChoice choose_grid(const Case& base, int threads, size_t max_bytes, long max_nodes) {
+/// Refuses a tolerance no grid can meet: U = 0 (C_L undefined), or below the freestream far field's error
+/// floor (a/R)².
+void check_reachable(const Case& base) {
   const double tol = base.grid.tolerance;
   if (!(base.scene.speed > 0.0))
     throw std::runtime_error(
@@ -55,6 +55,49 @@ GridChoice choose_grid(const Case& base, int threads, size_t max_bytes, long max
                       "floor is (a/R)² = {:.3g}; use far_field = \"exact\" (no floor)",
                       tol, base.grid.outer_radius, floor));
   }
+}
+
+/// Refuses the search once the grid the order predicts (n_θ = n_pred) has more than max_nodes nodes,
+/// naming the geometric spacing's grid for the tolerance when c's spacing is uniform.
+[[noreturn]] void refuse_too_large(const Case& base, const Case& c, int n_pred, int threads, size_t max_bytes,
+                                   long max_nodes) {
+  const double tol = base.grid.tolerance;
+  Case shape = c;
+  shape.grid.n_theta = n_pred;
+  shape.grid.n_r = 0;
+  const GridShape g = grid_shape(shape.grid);
+  std::string alternative;
+  if (c.grid.spacing == Spacing::uniform) {
+    Case geo = base;
+    geo.grid.spacing = Spacing::geometric;
+    geo.grid.spacing_given = true;
+    try {
+      const GridChoice gc = choose_grid(geo, threads, max_bytes, max_nodes);
+      geo.grid.n_theta = gc.n_theta;
+      geo.grid.n_r = 0;
+      const GridShape gg = grid_shape(geo.grid);
+      alternative =
+          fmt::format("; grid.spacing = \"geometric\" (9-point stencil, order 6) meets it with {} × {}",
+                      gg.n_theta, gg.n_r);
+    } catch (const std::runtime_error&) {
+      alternative = "; try grid.spacing = \"geometric\" (9-point stencil, order 6)";
+    }
+  } else {
+    alternative = "; ask for a larger tolerance";
+  }
+  throw std::runtime_error(
+      fmt::format("grid.tolerance = {:g} with grid.spacing = \"{}\" needs about n_θ × n_r = {} × {} "
+                  "({:.3g} nodes, {} per "
+                  "field), more than the limit of {} nodes{}",
+                  tol, to_string(c.grid.spacing), g.n_theta, g.n_r, double(g.n_r) * g.n_theta,
+                  format_bytes(size_t(8 * g.n_r * g.n_theta)), max_nodes, alternative));
+}
+
+}  // namespace
+
+GridChoice choose_grid(const Case& base, int threads, size_t max_bytes, long max_nodes) {
+  const double tol = base.grid.tolerance;
+  check_reachable(base);
   Case c = base;
   if (!base.grid.spacing_given) c.grid.spacing = Spacing::geometric;  // 6th order: the smallest grid
   c.solver.stencil = c.grid.spacing == Spacing::geometric ? StencilKind::nine_point : StencilKind::five_point;
@@ -94,37 +137,7 @@ GridChoice choose_grid(const Case& base, int threads, size_t max_bytes, long max
     }
     // The n the order predicts for the tolerance: refuse at once if that grid is too large.
     const int n_pred = saturate_cast<int>(std::min(double(n_max), std::ceil(n2 * std::pow(est / tol, 1.0 / p) / 4.0) * 4));
-    if (nodes_of(c, n_pred) > max_nodes) {
-      Case shape = c;
-      shape.grid.n_theta = n_pred;
-      shape.grid.n_r = 0;
-      const GridShape g = grid_shape(shape.grid);
-      std::string alternative;
-      if (c.grid.spacing == Spacing::uniform) {
-        Case geo = base;
-        geo.grid.spacing = Spacing::geometric;
-        geo.grid.spacing_given = true;
-        try {
-          const GridChoice gc = choose_grid(geo, threads, max_bytes, max_nodes);
-          geo.grid.n_theta = gc.n_theta;
-          geo.grid.n_r = 0;
-          const GridShape gg = grid_shape(geo.grid);
-          alternative =
-              fmt::format("; grid.spacing = \"geometric\" (9-point stencil, order 6) meets it with {} × {}",
-                          gg.n_theta, gg.n_r);
-        } catch (const std::runtime_error&) {
-          alternative = "; try grid.spacing = \"geometric\" (9-point stencil, order 6)";
-        }
-      } else {
-        alternative = "; ask for a larger tolerance";
-      }
-      throw std::runtime_error(
-          fmt::format("grid.tolerance = {:g} with grid.spacing = \"{}\" needs about n_θ × n_r = {} × {} "
-                      "({:.3g} nodes, {} per "
-                      "field), more than the limit of {} nodes{}",
-                      tol, to_string(c.grid.spacing), g.n_theta, g.n_r, double(g.n_r) * g.n_theta,
-                      format_bytes(size_t(8 * g.n_r * g.n_theta)), max_nodes, alternative));
-    }
+    if (nodes_of(c, n_pred) > max_nodes) refuse_too_large(base, c, n_pred, threads, max_bytes, max_nodes);
     if (est < est_best) est_best = est, n_best = n2;
     if (est > 0.5 * est_prev && est_prev < 1e-8)
       throw std::runtime_error(fmt::format(
