@@ -19,13 +19,29 @@
 #include "io/output_size.hpp"
 #include "io/report.hpp"
 #include "io/result_reader.hpp"
-#include "postproc/potential/pipeline.hpp"
-#include "postproc/potential/plan.hpp"
 #include "solver/potential/memory.hpp"
 
 namespace magnus {
 
 namespace {
+
+/// A navier-stokes run's checkpoint beside its result (OUTPUT.checkpoint.h5), before the run: writable,
+/// locked (another output may have the same checkpoint: r.h5, r.hdf), not another scene's unless resumed;
+/// then the free space for both (before the checkpoint is read).
+void prepare_checkpoint(const Case& c, bool resume, size_t max_bytes, std::optional<OutputLock>& lock) {
+  if (max_bytes > 0)
+    throw std::runtime_error(
+        "--max-memory: only checked for potential flow (a navier-stokes run at the default grid needs about "
+        "35 MB; its Newton and stability solves are measured in the README)");
+  const std::string ckpt = checkpoint_path(c.output.file);
+  check_writable(ckpt);
+  lock.emplace(ckpt);
+  if (!resume) {  // a run from rest overwrites only a checkpoint of its own scene
+    const std::string foreign = foreign_checkpoint(ckpt, c);
+    if (!foreign.empty()) throw std::runtime_error(foreign);
+  }
+  check_output_space(c, c.output.file);
+}
 
 void command_run(const std::string& case_path, const std::string& output,
                  const std::vector<std::string>& sets, int threads, bool quiet, size_t max_bytes, bool resume,
@@ -43,36 +59,22 @@ void command_run(const std::string& case_path, const std::string& output,
   // For the length of the run: a second run to the same output (or checkpoint) is refused, naming this one.
   const OutputLock lock(c.output.file);
   std::optional<OutputLock> checkpoint_lock;
+  RunHooks hooks;
+  hooks.threads = threads;
+  hooks.max_bytes = max_bytes;
   if (c.model == FlowModel::navier_stokes) {
-    if (max_bytes > 0)
-      throw std::runtime_error(
-          "--max-memory: only checked for potential flow (a navier-stokes run at the default grid needs about "
-          "35 MB; its Newton and stability solves are measured in the README)");
-    const std::string ckpt = checkpoint_path(c.output.file);
-    check_writable(ckpt);
-    checkpoint_lock.emplace(ckpt);  // another output may have the same checkpoint (r.h5, r.hdf)
-    if (!resume) {                  // a run from rest overwrites only a checkpoint of its own scene
-      const std::string foreign = foreign_checkpoint(ckpt, c);
-      if (!foreign.empty()) throw std::runtime_error(foreign);
-    }
-    check_output_space(c, c.output.file);
-    int stopped_by = 0;
-    const FlowResult r = run_viscous_case(c, case_path, resume, quiet || json, threads, &stopped_by);
-    // The JSON shows what the summary shows: the result in memory, as the file holds it.
-    if (json) std::fputs(json_text(result_json(r, c.output.file)).c_str(), stdout);
-    if (stopped_by) throw Interrupted{stopped_by};
-    return;
+    prepare_checkpoint(c, resume, max_bytes, checkpoint_lock);
+  } else {
+    if (resume)
+      throw std::runtime_error("--resume: only a navier-stokes case has checkpoints to resume from");
+    // The grid first (a tolerance search picks it), then the free space for its file, then the solve.
+    hooks.on_plan = [&c](const Case& planned) { check_output_space(planned, c.output.file); };
   }
-  if (resume) throw std::runtime_error("--resume: only a navier-stokes case has checkpoints to resume from");
-  // The grid first (a tolerance search picks it), then the free space for its file, then the solve.
-  const RunPlan plan = plan_run(c, threads, max_bytes);
-  check_output_space(plan.c, c.output.file);
-  FlowResult r = run_planned(plan, threads, max_bytes);
-  write_result(r, c.output.file, c.output.compression);
-  if (json)
-    std::fputs(json_text(result_json(r, c.output.file)).c_str(), stdout);
-  else if (!quiet)
-    std::fputs(summary_text(r, c.output.file).c_str(), stdout);
+  int stopped_by = 0;
+  const FlowResult r = run_and_report(c, case_path, resume, quiet || json, hooks, &stopped_by);
+  // The JSON shows what the summary shows: the result in memory, as the file holds it.
+  if (json) std::fputs(json_text(result_json(r, c.output.file)).c_str(), stdout);
+  if (stopped_by) throw Interrupted{stopped_by};
 }
 
 /// `magnus inspect`: the text (or JSON) on stdout; --surface-csv writes the surface as CSV (atomically, or

@@ -13,7 +13,6 @@
 #include "io/checkpoint.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/report.hpp"
-#include "postproc/navier_stokes/run.hpp"
 
 namespace magnus {
 
@@ -94,6 +93,7 @@ std::string shell_word(const std::string& w) {
 }  // namespace
 
 std::string before_march_text(const Case& c) {
+  if (c.model != FlowModel::navier_stokes) return "";  // nothing marches
   if (c.time.mode == TimeMode::steady) return "  solving the steady equations by Newton's method (Ctrl-C stops) …";
   if (c.time.mode != TimeMode::automatic) return "";
   const AutoPlan plan = auto_plan(ns_params(c));
@@ -120,7 +120,7 @@ void report_run(const FlowResult& r, const Case& c, const std::string& case_path
   const std::string& out = c.output.file;
   if (!quiet) {
     std::string text = summary_text(r, out);
-    if (r.viscous->partial)
+    if (r.viscous && r.viscous->partial)
       text += fmt::format("{:<15}{} — go on with: {}\n", "checkpoint", checkpoint_path(out),
                           resume_command(case_path, out));
     std::fputs(text.c_str(), stdout);
@@ -131,13 +131,35 @@ void report_run(const FlowResult& r, const Case& c, const std::string& case_path
                  time_unit_name(c.scene), resume_command(case_path, out).c_str());
 }
 
+/// run_case with, for a navier-stokes case, Ctrl-C ending the program at once until the march installs its
+/// guard; the guard removed after the run (or its failure) and the progress line ended.
+FlowResult run_guarded(const Case& c, const RunHooks& hooks, std::optional<InterruptGuard>& guard,
+                       const Progress& progress) {
+  const bool marches = c.model == FlowModel::navier_stokes;
+  void (*before_march)(int) = marches ? std::signal(SIGINT, on_sigint_now) : SIG_DFL;
+  auto restore = [&] {
+    guard.reset();
+    if (marches) std::signal(SIGINT, before_march);
+    if (progress.printed) std::fputs("\n", stderr);
+  };
+  try {
+    FlowResult r = run_case(c, hooks);
+    restore();
+    return r;
+  } catch (...) {
+    restore();
+    throw;
+  }
+}
+
 }  // namespace
 
-FlowResult run_viscous_case(const Case& c, const std::string& case_path, bool resume, bool quiet, int threads,
-                            int* stopped_by) {
+FlowResult run_and_report(const Case& c, const std::string& case_path, bool resume, bool quiet,
+                          RunHooks hooks, int* stopped_by) {
   const std::string ckpt = checkpoint_path(c.output.file);
   std::unique_ptr<Checkpoint> start;
   if (resume) start = std::make_unique<Checkpoint>(read_checkpoint(ckpt, c));
+  hooks.resume = start.get();
 
   const double unit = c.scene.time_unit();
   Progress progress{c, unit, start ? start->state.t : 0.0};
@@ -147,8 +169,7 @@ FlowResult run_viscous_case(const Case& c, const std::string& case_path, bool re
   // solve and stability test of time.mode "steady" or "auto") nothing is computed yet that a result could
   // keep, so there they end the program at once: the handlers are installed with the first step.
   std::optional<InterruptGuard> guard;
-  ViscousHooks hooks;
-  hooks.on_step = [&](const NsState& s, const ViscousForces& f) {
+  hooks.viscous.on_step = [&](const NsState& s, const ViscousForces& f) {
     if (!guard) guard.emplace();
     ++progress.steps;
     if (show) progress.step(s, f);
@@ -159,7 +180,7 @@ FlowResult run_viscous_case(const Case& c, const std::string& case_path, bool re
   // checkpoint stays.
   bool own_checkpoint = resume;
   std::string last_failure;  // warned once for each new reason
-  hooks.on_checkpoint = [&](const Checkpoint& cp) {
+  hooks.viscous.on_checkpoint = [&](const Checkpoint& cp) {
     try {
       write_checkpoint(ckpt, c, cp);
       own_checkpoint = true;
@@ -180,24 +201,13 @@ FlowResult run_viscous_case(const Case& c, const std::string& case_path, bool re
     std::fflush(stderr);
     progress.printed = !text.empty();
   }
-  FlowResult r;
-  void (*before_march)(int) = std::signal(SIGINT, on_sigint_now);
-  try {
-    r = run_viscous(c, hooks, start.get(), threads);
-  } catch (...) {
-    guard.reset();
-    std::signal(SIGINT, before_march);
-    if (progress.printed) std::fputs("\n", stderr);
-    throw;
-  }
-  guard.reset();
-  std::signal(SIGINT, before_march);
-  if (progress.printed) std::fputs("\n", stderr);
+  FlowResult r = run_guarded(c, hooks, guard, progress);
   write_result(r, c.output.file, c.output.compression);
   // Complete: the checkpoint has served. Interrupted: run_viscous checkpointed the last state, so
   // --resume goes on from there.
-  if (!r.viscous->partial && own_checkpoint) std::remove(ckpt.c_str());
-  const int sig = r.viscous->partial ? int(g_stop_signal) : 0;
+  const bool partial = r.viscous && r.viscous->partial;
+  if (!partial && own_checkpoint) std::remove(ckpt.c_str());
+  const int sig = partial ? int(g_stop_signal) : 0;
   if (stopped_by) *stopped_by = sig;
   report_run(r, c, case_path, quiet, sig);
   return r;

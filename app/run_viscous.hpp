@@ -1,9 +1,9 @@
 #pragma once
-// `magnus run` for a navier-stokes case: the time marching with a progress line, Ctrl-C, SIGTERM and
-// checkpoints.
+// `magnus run`: the run (run_case), its result written and its summary; a navier-stokes march with a
+// progress line, Ctrl-C, SIGTERM and checkpoints.
 #include <string>
 
-#include "postproc/result.hpp"
+#include "postproc/run_case.hpp"
 
 namespace magnus {
 
@@ -17,14 +17,15 @@ struct Interrupted {
 std::string resume_command(const std::string& case_path, const std::string& output);
 
 /// The progress line on a terminal before the march (Newton's method, the eigenvalue test), "" when none
-/// runs: time.mode "unsteady", or "auto" where it marches at once (auto_plan).
+/// runs: potential flow, time.mode "unsteady", or "auto" where it marches at once (auto_plan).
 std::string before_march_text(const Case& c);
 
-/// Run case c (read from case_path, navier-stokes), write its result (and remove the checkpoint it resumed
-/// from or wrote once the result is complete), print the summary unless quiet, and return the result (what
-/// the summary and --json show). resume: continue from the case's checkpoint file; threads ≥ 1.
-/// stopped_by: set to the signal (SIGINT, SIGTERM) that cut the run short, else 0.
-FlowResult run_viscous_case(const Case& c, const std::string& case_path, bool resume, bool quiet,
-                            int threads = 1, int* stopped_by = nullptr);
+/// Run case c (read from case_path) by run_case with `hooks` (threads, max_bytes), write its result (and
+/// remove the checkpoint it resumed from or wrote once the result is complete), print the summary unless
+/// quiet, and return the result (what the summary and --json show). Potential flow: the free space for the
+/// result is checked once the grid is chosen. Navier-stokes: resume continues from the case's checkpoint
+/// file; stopped_by is set to the signal (SIGINT, SIGTERM) that cut the run short, else 0.
+FlowResult run_and_report(const Case& c, const std::string& case_path, bool resume, bool quiet,
+                          RunHooks hooks, int* stopped_by = nullptr);
 
 }  // namespace magnus

@@ -12,8 +12,7 @@
 #include "io/hdf5_io.hpp"
 #include "base/output_owner.hpp"
 #include "io/result_reader.hpp"
-#include "postproc/potential/plan.hpp"
-#include "postproc/navier_stokes/run.hpp"
+#include "postproc/run_case.hpp"
 #include "bindings.hpp"
 
 namespace magnus::python {
@@ -73,13 +72,12 @@ PyResult run(const std::string& source, bool is_path, const std::vector<std::str
       check_writable(output);
       check_writable(xdmf_path(output));
     }
-    if (c.model == FlowModel::navier_stokes) {
-      ViscousHooks hooks;
-      hooks.on_step = [&interrupt](const NsState&, const ViscousForces&) { return interrupt.keep_going(); };
-      r = std::make_shared<FlowResult>(run_viscous(c, hooks, nullptr, threads));
-    } else {
-      r = std::make_shared<FlowResult>(run_planned(plan_run(c, threads), threads));
-    }
+    RunHooks hooks;
+    hooks.threads = threads;
+    hooks.viscous.on_step = [&interrupt](const NsState&, const ViscousForces&) {
+      return interrupt.keep_going();
+    };
+    r = std::make_shared<FlowResult>(run_case(c, hooks));
     if (interrupt.raised) {
       py::gil_scoped_acquire gil;
       throw py::error_already_set();

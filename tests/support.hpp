@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 #include "postproc/potential/pipeline.hpp"
+#include "postproc/run_case.hpp"
 #include "solver/navier_stokes/operator.hpp"
 
 namespace magnus::test {

@@ -17,6 +17,7 @@
 #include "postproc/navier_stokes/unsteady.hpp"
 #include "postproc/navier_stokes/forces.hpp"
 #include "postproc/navier_stokes/run.hpp"
+#include "postproc/run_case.hpp"
 #include "solver/navier_stokes/newton.hpp"
 
 namespace magnus {
@@ -152,9 +153,9 @@ void finish_point(const Case& base, const NsMapOptions& o, NsMapPoint& m) {
     c.time.checkpoint_interval = 0.0;
     c.output.snapshots = 0;
     c.output.fields = std::vector<std::string>{};
-    ViscousHooks marching;
-    marching.march_at_once = true;
-    const FlowResult r = run_viscous(c, marching);
+    RunHooks marching;
+    marching.viscous.march_at_once = true;
+    const FlowResult r = run_case(c, marching);
     const ViscousPart& v = *r.viscous;
     m.source = v.steady      ? MapSource::marched_steady
                : m.converged ? MapSource::averaged_unstable

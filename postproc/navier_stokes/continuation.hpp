@@ -14,7 +14,7 @@
 //
 // Per point: steady forces (C_L, C_D, C_M and their pressure and friction parts), the ideal C_L = −2πα,
 // the ratio C_L/C_L,ideal = S/(2πρa²), and "stable" from a stability hook. A point whose steady state is
-// unstable (or that has none) is marched in time from rest (run_viscous on its case) and reports what the
+// unstable (or that has none) is marched in time from rest (run_case on its case) and reports what the
 // march gives: the time-averaged C_L, C_D, C_M and St of a shedding wake, or the steady state the march
 // settles on, and is marked so.
 #include <functional>

@@ -70,8 +70,4 @@ FlowResult run_planned(const RunPlan& plan, int threads, size_t max_bytes) {
   return r;
 }
 
-FlowResult run_case(const Case& requested, int threads, size_t max_bytes) {
-  return run_planned(plan_run(requested, threads, max_bytes), threads, max_bytes);
-}
-
 }  // namespace magnus

@@ -26,8 +26,4 @@ Discretization discretize(const Case& c, int threads = 1, size_t max_bytes = 0, 
 /// Empty when U = 0 (undefined).
 std::optional<double> lift_coefficient(const Case& c, int threads = 1);
 
-/// Solve one case and post-process it (no files). With grid.tolerance > 0 the grid and stencil are
-/// first chosen by the tolerance search. threads ≥ 1; max_bytes as for discretize.
-FlowResult run_case(const Case& c, int threads = 1, size_t max_bytes = 0);
-
 }  // namespace magnus

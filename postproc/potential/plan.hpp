@@ -1,7 +1,7 @@
 #pragma once
 // A run in two steps, so that a caller can look at the grid before anything is solved (e.g. `magnus run`
 // estimates the output file's size): plan_run resolves the grid (the tolerance search, if any), run_planned
-// solves and post-processes. run_case(c) = run_planned(plan_run(c)).
+// solves and post-processes. run_case (postproc/run_case.hpp) calls both for a potential-flow case.
 #include "postproc/result.hpp"
 #include "postproc/potential/tolerance.hpp"
 

@@ -1,0 +1,15 @@
+#include "postproc/run_case.hpp"
+
+namespace magnus {
+
+FlowResult run_case(const Case& c, const RunHooks& hooks) {
+  if (c.model == FlowModel::navier_stokes) {
+    if (hooks.on_plan) hooks.on_plan(c);
+    return run_viscous(c, hooks.viscous, hooks.resume, hooks.threads);
+  }
+  const RunPlan plan = plan_run(c, hooks.threads, hooks.max_bytes);
+  if (hooks.on_plan) hooks.on_plan(plan.c);
+  return run_planned(plan, hooks.threads, hooks.max_bytes);
+}
+
+}  // namespace magnus
