@@ -1,0 +1,20 @@
+#pragma once
+// One Re row of the S(Re, α) map: the steady branch continued along α (Newton on the row's Jacobian,
+// pseudo-arclength past a failure, the fold), each point finished (steady, or marched when unstable).
+// continuation.cpp runs the rows; see continuation.hpp.
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "postproc/navier_stokes/continuation.hpp"
+
+namespace magnus {
+
+/// One row: continuation along α (sequential). guess: a steady state to start the row's first point from
+/// (the previous row's, continuing in Re); first: set to the first point's steady state when it converged.
+/// done: called after each point.
+std::vector<NsMapPoint> solve_row(const Case& base, const NsMapOptions& o, int row, double re,
+                                  const std::function<void(const NsMapPoint&)>& done,
+                                  const NsState* guess = nullptr, std::optional<NsState>* first = nullptr);
+
+}  // namespace magnus
