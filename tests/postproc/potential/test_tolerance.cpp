@@ -88,6 +88,8 @@ TEST_CASE("grid.tolerance: every grid the search tries passes the memory guard",
   c.grid.tolerance = 1e-8;
   REQUIRE_THROWS_WITH(choose_grid(c, 1, 4096),
                       Catch::Contains("needs about") && Catch::Contains("--max-memory 4 KiB"));
-  REQUIRE_THROWS_WITH(run_case(c, {1, 4096}), Catch::Contains("--max-memory 4 KiB"));
+  RunHooks limit;
+  limit.max_bytes = 4096;
+  REQUIRE_THROWS_WITH(run_case(c, limit), Catch::Contains("--max-memory 4 KiB"));
   REQUIRE(choose_grid(c, 1, size_t(1) << 30).n_theta > 0);
 }
