@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "io/atomic_file.hpp"
+#include "base/atomic_file.hpp"
 
 namespace magnus {
 
