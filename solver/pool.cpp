@@ -17,11 +17,11 @@ constexpr int kSpins = 4000;   ///< busy-wait iterations (~tens of µs) before y
 constexpr int kYields = 2000;  ///< then yields (a shared, busy machine gets the core back) before sleeping
 }  // namespace
 
-NsPool::NsPool(int threads) {
+ThreadPool::ThreadPool(int threads) {
   for (int t = 1; t < std::max(1, threads); ++t) workers_.emplace_back([this, t] { work(t); });
 }
 
-NsPool::~NsPool() {
+ThreadPool::~ThreadPool() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     stop_ = true;
@@ -31,7 +31,7 @@ NsPool::~NsPool() {
   for (auto& w : workers_) w.join();
 }
 
-void NsPool::run(const std::function<void(int)>& f) {
+void ThreadPool::run(const std::function<void(int)>& f) {
   if (workers_.empty()) return f(0);
   job_ = &f;
   error_ = nullptr;
@@ -58,7 +58,7 @@ void NsPool::run(const std::function<void(int)>& f) {
   if (error_) std::rethrow_exception(error_);
 }
 
-void NsPool::work(int t) {
+void ThreadPool::work(int t) {
   // The generation at construction (0), not a fresh load: a run() may start before this thread does.
   unsigned seen = 0;
   for (;;) {

@@ -1,7 +1,7 @@
 #pragma once
-// A small persistent thread pool for the viscous time step: the same few workers run every parallel part
-// of every step (advection by rings, the mode solves by Fourier modes, the FFT batches by rings), so a
-// step pays a wake-up of a spinning worker (~µs), not a thread start (~50 µs) per parallel part.
+// The solvers' one thread pool: a few persistent workers run every parallel part (the viscous step's
+// advection by rings, mode solves by Fourier modes and FFT batches by rings; the per-mode LU and sweeps of
+// ModeSolver), so a parallel part pays a wake-up of a spinning worker (~µs), not a thread start (~50 µs).
 #include <atomic>
 #include <condition_variable>
 #include <exception>
@@ -12,13 +12,14 @@
 
 namespace magnus {
 
-class NsPool {
+/// `threads` threads that split [0, n) ranges: run(f) calls f(t) on each, split() gives part t's range.
+class ThreadPool {
  public:
   /// `threads` ≥ 1 threads in all: the caller and threads − 1 workers.
-  explicit NsPool(int threads);
-  ~NsPool();
-  NsPool(const NsPool&) = delete;
-  NsPool& operator=(const NsPool&) = delete;
+  explicit ThreadPool(int threads);
+  ~ThreadPool();
+  ThreadPool(const ThreadPool&) = delete;
+  ThreadPool& operator=(const ThreadPool&) = delete;
 
   int size() const { return int(workers_.size()) + 1; }
   /// f(t) for t = 0…size()−1, t = 0 on the calling thread; returns when all are done. The first exception

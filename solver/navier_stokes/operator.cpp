@@ -94,7 +94,7 @@ NsOperator::NsOperator(const NsParams& p, double dt) : p_(p), dt_(dt) {
     }
   // The step's pool, its ring ranges and their FFT plans on the step's own (aligned) buffers. FFTW_ESTIMATE:
   // the same plan every run, so a run is reproducible to the last bit (FFTW_MEASURE picks by timing).
-  impl_->pool = std::make_unique<NsPool>(std::max(1, std::min(p.threads, nr / 4)));
+  impl_->pool = std::make_unique<ThreadPool>(std::max(1, std::min(p.threads, nr / 4)));
   impl_->buffers = std::make_unique<StepBuffers>(size_t(nr), size_t(n), size_t(m));
   StepBuffers& b = *impl_->buffers;
   const int parts = impl_->pool->size();

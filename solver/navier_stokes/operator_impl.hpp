@@ -46,7 +46,7 @@ struct NsOperator::Impl {
   std::vector<double> denom;            ///< [k]: χ_k(ξ_1) + a²Δξ²/2
   fftw_plan ring_r2c = nullptr, field_c2r = nullptr, field_r2c = nullptr;
   // advance(): the pool, ring ranges per thread and their FFT plans (on `buffers`), the buffers.
-  std::unique_ptr<NsPool> pool;
+  std::unique_ptr<ThreadPool> pool;
   std::vector<int> ring_begin, ring_end;
   std::vector<fftw_plan> part_r2c, part_c2r;
   fftw_plan step_ring_r2c = nullptr;

@@ -53,7 +53,7 @@ void advance(const NsOperator& op, const NsState& old, NsState& next, NsStepTime
   if (&old == &next) throw std::invalid_argument("advance: next may not alias old");
   std::lock_guard<std::mutex> step_lock(im.step_mutex);
   StepBuffers& b = *im.buffers;
-  NsPool& pool = *im.pool;
+  ThreadPool& pool = *im.pool;
   const int parts = pool.size();
 
   // AB2 weights for a step dt after a step dt_prev (Euler on the first step).
