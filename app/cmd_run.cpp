@@ -19,7 +19,7 @@
 #include "io/output_size.hpp"
 #include "io/report.hpp"
 #include "io/result_reader.hpp"
-#include "solver/potential/memory.hpp"
+#include "solver/memory.hpp"
 
 namespace magnus {
 

@@ -9,7 +9,7 @@
 
 #include "postproc/potential/fields.hpp"
 #include "postproc/navier_stokes/run.hpp"
-#include "solver/potential/memory.hpp"
+#include "solver/memory.hpp"
 #include "solver/navier_stokes/operator.hpp"
 
 namespace magnus {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "solver/potential/memory.hpp"
+#include "solver/memory.hpp"
 #include "solver/navier_stokes/operator.hpp"
 
 namespace magnus {

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "postproc/potential/pipeline.hpp"
-#include "solver/potential/memory.hpp"
+#include "solver/memory.hpp"
 
 namespace magnus {
 

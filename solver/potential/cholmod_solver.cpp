@@ -7,7 +7,7 @@
 
 #include "solver/potential/cholmod_solver.hpp"
 #include "solver/potential/flow_solver.hpp"
-#include "solver/potential/memory.hpp"
+#include "solver/memory.hpp"
 
 namespace magnus {
 

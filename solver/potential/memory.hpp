@@ -1,7 +1,9 @@
 #pragma once
-// Memory guard: what a solve will need, and what the machine has, before anything large is allocated.
+// Memory guard, the potential solve's part: what its solvers will need, from the operator or the grid's shape
+// alone (the check itself and the machine's memory: solver/memory.hpp).
 #include <cstddef>
 #include <string>
+#include "solver/memory.hpp"
 #include "solver/potential/stencil.hpp"
 
 namespace magnus {
@@ -12,22 +14,6 @@ namespace magnus {
 size_t solver_bytes(const DiscreteOperator& op, Method method);
 /// The same from the shape: rings, n_θ, the far field and the stencil.
 size_t solver_bytes(double n_r, double n_theta, FarField far_field, StencilKind stencil, Method method);
-
-/// Memory this process may use: MemAvailable from /proc/meminfo, capped by the cgroup limit.
-size_t available_bytes();
-
-/// "2G", "512M", "1.5GiB", "800000000" → bytes. Throws std::invalid_argument on anything else.
-size_t parse_bytes(const std::string& text);
-
-/// "1.23 GiB".
-std::string format_bytes(size_t bytes);
-
-/// Estimates below this are not checked against available_bytes() (an explicit limit still applies), bytes.
-constexpr size_t kUncheckedBytes = size_t(16) << 20;
-
-/// Throws std::runtime_error with the estimate if `needed` exceeds `limit` (0: available_bytes(), read
-/// only when needed ≥ kUncheckedBytes).
-void check_memory(size_t needed, size_t limit, const std::string& what);
 
 /// The memory guard for a grid request, before anything is built, from the grid's shape alone: the solver's
 /// bytes plus the ψ-sized arrays a run holds (ψ_U, ψ_Γ, ψ, the exact ψ and `fields` selected fields, n_r·n_θ

@@ -8,7 +8,7 @@
 
 #include "io/hdf5_io.hpp"
 #include "io/output_size.hpp"
-#include "solver/potential/memory.hpp"
+#include "solver/memory.hpp"
 #include "support.hpp"
 
 using namespace magnus;

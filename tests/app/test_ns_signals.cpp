@@ -18,7 +18,7 @@
 #include "io/output_size.hpp"
 #include "io/result_reader.hpp"
 #include "run_child.hpp"
-#include "solver/potential/memory.hpp"
+#include "solver/memory.hpp"
 #include "support.hpp"
 
 using namespace magnus;
