@@ -1,19 +1,16 @@
 // Fast path: a real FFT in θ decouples the system into n_θ/2+1 symmetric tridiagonal systems in r,
 // one per Fourier mode k, with the same closures as the matrix (circulation row for mode 0 with the
-// freestream far field; the exterior factor e_k on the outer ring with the exact far field).
+// freestream far field; the exterior factor e_k on the outer ring with the exact far field). The per-mode
+// factorisation and sweeps are ModeSolver's (solver/mode_solver.hpp); this driver holds the transforms.
 #include <fftw3.h>
 
 #include <algorithm>
-#include <atomic>
-#include <cmath>
 #include <complex>
-#include <cstdlib>
-#include <cstring>
 #include <mutex>
 #include <stdexcept>
-#include <thread>
 
 #include "solver/fft_modes.hpp"
+#include "solver/mode_solver.hpp"
 #include "solver/potential/flow_solver.hpp"
 
 namespace magnus {
@@ -21,6 +18,27 @@ namespace magnus {
 namespace {
 
 using cplx = std::complex<double>;
+
+/// The operator's rows per mode, T_k(i,i) = a[1] + 2cos(kΔθ)·b[1] and T_k(i,i+1) = a[2] + 2cos(kΔθ)·b[2]
+/// on rings 1…L, with its far field's closure: e_k on ring L (exact) or the circulation row (freestream:
+/// X = n·C couples to ring L's mode 0 by −w_L).
+ModeRows mode_rows(const DiscreteOperator& op) {
+  ModeRows rows;
+  rows.n_theta = op.n_theta;
+  rows.d_theta = op.d_theta;
+  const int L = op.last_ring();
+  for (int i = 0; i <= L; ++i) {
+    rows.diag_a.push_back(op.ring[i].a[1]);
+    rows.diag_b.push_back(op.ring[i].b[1]);
+    rows.off_a.push_back(op.ring[i].a[2]);
+    rows.off_b.push_back(op.ring[i].b[2]);
+  }
+  if (op.far_field == FarField::exact)
+    for (int k = 0; k <= op.n_theta / 2; ++k) rows.exterior.push_back(op.exterior(k));
+  else
+    rows.border = op.w[L];
+  return rows;
+}
 
 class FftSolver final : public PsiSolver {
  public:
@@ -34,7 +52,7 @@ class FftSolver final : public PsiSolver {
         ring_real_(size_t(n_)),
         ring_spec_(size_t(m_)) {
     const double t0 = now_s();
-    factor();
+    modes_ = std::make_unique<ModeSolver>(mode_rows(op), threads_);
     plan();
     timing.factor_s = now_s() - t0;
   }
@@ -50,16 +68,12 @@ class FftSolver final : public PsiSolver {
     // Forward transform of every ring (into the spectrum), then the sweeps, then back.
     std::copy(rhs.begin(), rhs.begin() + long(L_) * n_, x.begin());
     fftw_execute_dft_r2c(forward_, x.data(), reinterpret_cast<fftw_complex*>(spec_.p));
-    cplx* y = spec_.p;
-    parallel_over_modes(m_, threads_, [&](int kb, int ke) { forward_sweep(y, kb, ke); });
-    const double x_c = op_.far_field == FarField::freestream
-                           ? (rhs[size_t(L_) * n_] - lower_c_ * y[at(L_, 0)].real()) * inv_pivot_c_
-                           : 0.0;
-    parallel_over_modes(m_, threads_, [&](int kb, int ke) { back_sweep(y, kb, ke, x_c, true); });
+    const bool bordered = op_.far_field == FarField::freestream;
+    const double x_c = modes_->solve_spectrum(spec_.p, bordered ? rhs[size_t(L_) * n_] : 0.0, false);
     fftw_execute_dft_c2r(inverse_, reinterpret_cast<fftw_complex*>(spec_.p), x.data());
     const double scale = 1.0 / n_;
     for (size_t q = 0; q < size_t(L_) * n_; ++q) x[q] *= scale;
-    if (op_.far_field == FarField::freestream) x[size_t(L_) * n_] = x_c / n_;
+    if (bordered) x[size_t(L_) * n_] = x_c / n_;
     return x;
   }
 
@@ -68,16 +82,13 @@ class FftSolver final : public PsiSolver {
     const double scale = 1.0 / n_;
     for (int j = 0; j < n_; ++j) ring_real_.p[j] = bd.outer[j] * scale;
     fftw_execute(ring_forward_);
-    cplx* y = spec_.p;
-    std::copy(ring_spec_.p, ring_spec_.p + m_, y + at(L_, 0));
-    const double x_c = op_.far_field == FarField::freestream
-                           ? (bd.c_rhs * scale - lower_c_ * y[at(L_, 0)].real()) * inv_pivot_c_
-                           : 0.0;
-    parallel_over_modes(m_, threads_, [&](int kb, int ke) { back_sweep(y, kb, ke, x_c, false); });
+    std::copy(ring_spec_.p, ring_spec_.p + m_, spec_.p + size_t(L_ - 1) * m_);
+    const bool bordered = op_.far_field == FarField::freestream;
+    const double x_c = modes_->solve_spectrum(spec_.p, bordered ? bd.c_rhs * scale : 0.0, true);
     std::vector<double> psi(size_t(op_.n_r) * n_);
     std::fill(psi.begin(), psi.begin() + n_, 0.0);  // ψ = 0 on the body
     fftw_execute_dft_c2r(inverse_, reinterpret_cast<fftw_complex*>(spec_.p), psi.data() + n_);
-    if (op_.far_field == FarField::freestream) {
+    if (bordered) {
       const double C = x_c;  // X = n·C, scaled by 1/n above
       for (int j = 0; j < n_; ++j) psi[size_t(op_.n_r - 1) * n_ + j] = bd.g[j] + C;
     }
@@ -87,50 +98,6 @@ class FftSolver final : public PsiSolver {
   Method method() const override { return Method::fft; }
 
  private:
-  size_t at(int i, int k) const { return size_t(i - 1) * m_ + k; }
-
-  /// Symmetric tridiagonal LU of every mode, ring by ring with the symbols
-  /// T_k(i,i) = a[1] + 2cos(kΔθ)·b[1] and T_k(i,i+1) = a[2] + 2cos(kΔθ)·b[2] formed on the fly:
-  /// pivot d'_i = T_k(i,i) − T_k(i−1,i)·upper_{i−1}, inv_pivot_ = 1/d'_i, upper_ = T_k(i,i+1)/d'_i.
-  /// (The lower factor of a symmetric matrix is upper_ of the ring before.)
-  void factor() {
-    // Uninitialised: the first touch (and its page faults) happens in the threads that fill them.
-    inv_pivot_.reset(new double[size_t(L_) * m_]);
-    upper_.reset(new double[size_t(L_) * m_]);
-    std::vector<double> c2(m_), ext(m_, 0.0);
-    for (int k = 0; k < m_; ++k) c2[k] = 2.0 * std::cos(k * op_.d_theta);
-    if (op_.far_field == FarField::exact)
-      for (int k = 0; k < m_; ++k) ext[k] = op_.exterior(k);
-    std::atomic<bool> ok{true};
-    parallel_over_modes(m_, threads_, [&](int kb, int ke) {
-      bool good = true;
-      for (int i = 1; i <= L_; ++i) {
-        const RingStencil& s = op_.ring[i];
-        const RingStencil& sp = op_.ring[i - 1];
-        double* p = &inv_pivot_[at(i, 0)];
-        double* u = &upper_[at(i, 0)];
-        const double* up = i > 1 ? &upper_[at(i - 1, 0)] : nullptr;
-        for (int k = kb; k < ke; ++k) {
-          double d = s.a[1] + c2[k] * s.b[1] + (i == L_ ? ext[k] : 0.0);
-          if (up) d -= (sp.a[2] + c2[k] * sp.b[2]) * up[k];
-          p[k] = 1.0 / d;
-          u[k] = (s.a[2] + c2[k] * s.b[2]) * p[k];
-          good = good && d > 0.0 && std::isfinite(p[k]);
-        }
-      }
-      if (!good) ok = false;
-    });
-    if (!ok) throw std::runtime_error("FFT path: a mode's tridiagonal system is not positive definite");
-    if (op_.far_field == FarField::freestream) {
-      const double w = op_.w[L_];
-      off_c_ = -w;  // coupling of ring L (mode 0) with X = n·C
-      lower_c_ = off_c_ * inv_pivot_[at(L_, 0)];
-      inv_pivot_c_ = 1.0 / (w - lower_c_ * off_c_);
-      if (!(inv_pivot_c_ > 0.0) || !std::isfinite(inv_pivot_c_))
-        throw std::runtime_error("FFT path: the circulation row is singular");
-    }
-  }
-
   void plan() {
     std::lock_guard<std::mutex> lock(fftw_planner_mutex());
     static std::once_flag once;
@@ -149,37 +116,9 @@ class FftSolver final : public PsiSolver {
     if (!forward_ || !inverse_ || !ring_forward_) throw std::runtime_error("FFTW planning failed");
   }
 
-  void forward_sweep(cplx* y, int kb, int ke) const {
-    for (int i = 2; i <= L_; ++i) {
-      const double* l = &upper_[at(i - 1, 0)];  // T(i−1,i)/d'_{i−1}
-      cplx* yi = &y[at(i, 0)];
-      const cplx* yp = &y[at(i - 1, 0)];
-      for (int k = kb; k < ke; ++k) yi[k] -= l[k] * yp[k];
-    }
-  }
-
-  /// x_L = y_L/d'_L, x_i = y_i/d'_i − u_i·x_{i+1}; without `with_rhs` the y_i (i < L) are zero.
-  void back_sweep(cplx* y, int kb, int ke, double x_c, bool with_rhs) const {
-    cplx* yL = &y[at(L_, 0)];
-    const double* pL = &inv_pivot_[at(L_, 0)];
-    for (int k = kb; k < ke; ++k) yL[k] *= pL[k];
-    if (kb == 0 && op_.far_field == FarField::freestream) yL[0] -= off_c_ * x_c * pL[0];
-    for (int i = L_ - 1; i >= 1; --i) {
-      const double* u = &upper_[at(i, 0)];
-      const double* p = &inv_pivot_[at(i, 0)];
-      cplx* yi = &y[at(i, 0)];
-      const cplx* yn = &y[at(i + 1, 0)];
-      if (with_rhs)
-        for (int k = kb; k < ke; ++k) yi[k] = yi[k] * p[k] - u[k] * yn[k];
-      else
-        for (int k = kb; k < ke; ++k) yi[k] = -u[k] * yn[k];
-    }
-  }
-
   int threads_;
   int n_, m_, L_;
-  std::unique_ptr<double[]> inv_pivot_, upper_;  ///< [i][k], rings 1…L × modes 0…n/2
-  double off_c_ = 0.0, lower_c_ = 0.0, inv_pivot_c_ = 0.0;
+  std::unique_ptr<ModeSolver> modes_;  ///< the per-mode LU and sweeps, with the far field's closure
   FftwBuffer<cplx> spec_;
   FftwBuffer<double> ring_real_;
   FftwBuffer<cplx> ring_spec_;

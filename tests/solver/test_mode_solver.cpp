@@ -1,6 +1,7 @@
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <complex>
 #include <random>
 #include <string>
 
@@ -309,4 +310,77 @@ TEST_CASE("mode solver: bad input throws std::invalid_argument with one line", "
     REQUIRE(message.find(expected) != std::string::npos);
     REQUIRE(message.find('\n') == std::string::npos);
   }
+}
+
+namespace {
+
+/// Random diagonally dominant rows on L rings (symmetric positive definite for every mode).
+ModeRows random_rows(int L, int n_theta, std::mt19937& rng) {
+  ModeRows rows;
+  rows.n_theta = n_theta;
+  rows.d_theta = 2.0 * M_PI / n_theta;
+  rows.diag_a = random_vector(size_t(L) + 1, rng, 5.0, 6.0);
+  rows.diag_b = random_vector(size_t(L) + 1, rng, -0.5, 0.5);
+  rows.off_a = random_vector(size_t(L) + 1, rng, -1.5, -0.5);
+  rows.off_b = random_vector(size_t(L) + 1, rng, -0.3, 0.3);
+  return rows;
+}
+
+}  // namespace
+
+TEST_CASE("mode solver: general rows with the exterior or bordered closure match a dense solve",
+          "[mode_solver]") {
+  const int L = 7, n_theta = 16, m = n_theta / 2 + 1;
+  std::mt19937 rng(11);
+  ModeRows rows = random_rows(L, n_theta, rng);
+  const bool bordered = GENERATE(false, true);
+  if (bordered)
+    rows.border = 0.8;
+  else
+    rows.exterior = random_vector(size_t(m), rng, 0.1, 1.0);
+  const bool last_ring_only = GENERATE(false, true);
+  const ModeSolver s(rows);
+  std::vector<std::complex<double>> y(size_t(L) * m);
+  for (int i = 1; i <= L; ++i)
+    for (int k = 0; k < m; ++k) {
+      const auto v = random_vector(2, rng);  // mode 0 of a real signal is real
+      if (!(last_ring_only && i < L)) y[size_t(i - 1) * m + k] = {v[0], k == 0 ? 0.0 : v[1]};
+    }
+  const double b_X = 0.37;
+  std::vector<std::complex<double>> x = y;
+  const double X = s.solve_spectrum(x.data(), b_X, last_ring_only);
+  for (int k = 0; k < m; ++k) {
+    const int size = L + (bordered && k == 0 ? 1 : 0);
+    const double c = 2.0 * std::cos(k * rows.d_theta);
+    Eigen::MatrixXcd T = Eigen::MatrixXcd::Zero(size, size);
+    Eigen::VectorXcd b(size);
+    for (int i = 1; i <= L; ++i) {
+      T(i - 1, i - 1) = rows.diag_a[i] + c * rows.diag_b[i] + (i == L && !bordered ? rows.exterior[k] : 0.0);
+      if (i < L) T(i - 1, i) = T(i, i - 1) = rows.off_a[i] + c * rows.off_b[i];
+      b(i - 1) = y[size_t(i - 1) * m + k];
+    }
+    if (size > L) {
+      T(L - 1, L) = T(L, L - 1) = -rows.border;
+      T(L, L) = rows.border;
+      b(L) = b_X;
+    }
+    const Eigen::VectorXcd ref = T.lu().solve(b);
+    for (int i = 1; i <= L; ++i) {
+      CAPTURE(bordered, last_ring_only, k, i);
+      REQUIRE(std::abs(x[size_t(i - 1) * m + k] - ref(i - 1)) <= 1e-13 * ref.cwiseAbs().maxCoeff());
+    }
+    if (size > L) REQUIRE(std::abs(X - ref(L).real()) <= 1e-13 * ref.cwiseAbs().maxCoeff());
+  }
+  if (!bordered) REQUIRE(X == 0.0);
+  // Built from rows, the grid's solves do not apply.
+  REQUIRE_THROWS_AS(s.influence(0), std::logic_error);
+
+  // The pool splits the modes (m ≥ 256): bit for bit the one-thread answer (each mode is independent).
+  const ModeRows big = random_rows(12, 1024, rng);
+  std::vector<std::complex<double>> y1(size_t(12) * 513);
+  for (auto& v : y1) v = {random_vector(1, rng)[0], random_vector(1, rng)[0]};
+  std::vector<std::complex<double>> y4 = y1;
+  ModeSolver(big, 1).solve_spectrum(y1.data(), 0.0, false);
+  ModeSolver(big, 4).solve_spectrum(y4.data(), 0.0, false);
+  REQUIRE(y1 == y4);
 }
