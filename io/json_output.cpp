@@ -50,6 +50,22 @@ std::string json_text(const Json& j) {
   return j.dump(2, ' ', false, nlohmann::detail::error_handler_t::replace) + "\n";
 }
 
+Json value_json(const AttrValue& a) {
+  if (a.kind == AttrKind::text) return a.text;
+  if (a.kind == AttrKind::integer && a.number && std::isfinite(*a.number)) return count(saturate_cast<long>(*a.number));
+  return quantity(a.number, a.units);
+}
+
+void put_values(Json& j, const std::vector<AttrValue>& values) {
+  for (const AttrValue& a : values) {
+    const std::string g = json_parts::key_of(a.group);
+    if (g.empty())
+      j[a.name] = value_json(a);
+    else
+      j[g][a.name] = value_json(a);
+  }
+}
+
 namespace json_parts {
 
 std::string key_of(const std::string& group) { return group.size() > 1 ? group.substr(1) : std::string(); }
@@ -195,22 +211,10 @@ Json viscous_derived(const FlowResult& r) {
 
 Json result_json(const FlowResult& r, const std::string& output_path) {
   Json j;
-  for (const AttrSpec& a : result_attributes()) {
-    if (!applies(a.models, r)) continue;
-    const std::string g = key_of(a.group), name = a.name;
-    if (g.empty() && (name == "format" || name == "format_version")) continue;  // of the file, not the run
-    Json value;
-    if (a.kind == AttrKind::text)
-      value = a.text(r);
-    else if (const auto v = a.number(r); v && std::isfinite(*v) && a.kind == AttrKind::integer)
-      value = count(saturate_cast<long>(*v));
-    else
-      value = quantity(v, a.units);
-    if (g.empty())
-      j[name] = std::move(value);
-    else
-      j[g][name] = std::move(value);
-  }
+  std::vector<AttrValue> values;
+  for (const AttrSpec& a : result_attributes())  // format and format_version are the file's, not the run's
+    if (applies(a.models, r) && a.shown != Shown::file_only) values.push_back(value_of(a, r));
+  put_values(j, values);
   if (r.viscous) {
     for (auto it = j["forces"].begin(); it != j["forces"].end(); ++it)  // one instant, not a time mean
       if (viscous_last_step("/forces", it.key())) it.value()["at"] = "last step";

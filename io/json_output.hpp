@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/compare.hpp"
+#include "io/schema_table.hpp"
 #include "physics/reference_data.hpp"
 #include "postproc/result.hpp"
 #include "postproc/potential/sweep.hpp"
@@ -26,6 +27,13 @@ Json quantity(std::optional<double> v, const std::string& units);
 Json count(long n);
 /// {"value": [...], "units": units}; entries that are not finite are null.
 Json quantity(const std::vector<double>& v, const std::string& units);
+
+/// An attribute's value (io/schema_table.hpp): text as a string, an integer as a count, a number as a
+/// quantity with its units (null where undefined).
+Json value_json(const AttrValue& a);
+
+/// Each value into j in order: a root one ("/") as j[name], another as j[GROUP][name] ("/forces" → "forces").
+void put_values(Json& j, const std::vector<AttrValue>& values);
 
 /// The text of a JSON output: indented by two, one trailing newline.
 std::string json_text(const Json& j);

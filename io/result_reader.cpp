@@ -8,6 +8,7 @@
 #include "io/hdf5_io.hpp"
 #include "io/inspect.hpp"
 #include "io/schema.hpp"
+#include "io/schema_io.hpp"
 
 namespace magnus {
 
@@ -71,13 +72,7 @@ FlowResult read_result(const std::string& path) {
   FlowResult r;
   Case& c = r.c;
   // Every attribute of the schema the file holds (versions 1 and 2 share the names).
-  for (const AttrSpec& a : result_attributes()) {
-    if (!f.has_attr(a.group, a.name)) continue;
-    if (a.kind == AttrKind::text && a.set_text)
-      a.set_text(r, f.attr_string(a.group, a.name));
-    else if (a.kind != AttrKind::text && a.set_number)
-      a.set_number(r, f.attr_double(a.group, a.name));
-  }
+  read_attrs(result_attributes(), f, r, true);
   for (const char* required : {"radius", "speed", "spin", "density", "pressure_inf", "circulation"})
     if (!f.has_attr("/parameters", required))
       fail(fmt::format("'{}': /parameters has no attribute '{}'", path, required));

@@ -2,7 +2,6 @@
 #include <fmt/core.h>
 
 #include <cmath>
-#include <map>
 #include <stdexcept>
 
 #include "base/atomic_file.hpp"
@@ -10,6 +9,7 @@
 #include "io/finite.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/schema.hpp"
+#include "io/schema_io.hpp"
 #include "io/xdmf.hpp"
 
 namespace magnus {
@@ -19,12 +19,6 @@ namespace {
 std::string group_of(const std::string& path) {
   const auto slash = path.rfind('/');
   return slash == 0 ? "/" : path.substr(0, slash);
-}
-
-std::string join(const std::vector<std::string>& names) {
-  std::string s;
-  for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
-  return s;
 }
 
 bool is_snapshot(const DatasetSpec& d) { return d.path.rfind("/snapshots/", 0) == 0; }
@@ -57,31 +51,11 @@ void write_snapshots(const FlowResult& r, H5Writer& w) {
 }
 
 void write_file(const FlowResult& r, H5Writer& w) {
-  std::map<std::string, H5Writer::id> groups{{"/", w.file()}};
-  std::map<std::string, std::vector<std::string>> undefined;
-  auto group = [&](const std::string& name) {
-    auto it = groups.find(name);
-    return it != groups.end() ? it->second : (groups[name] = w.group(name));
-  };
-
-  for (const AttrSpec& a : result_attributes()) {
-    if (!applies(a.models, r)) continue;
-    const H5Writer::id g = group(a.group);
-    if (a.kind == AttrKind::text) {
-      w.attr(g, a.name, a.text(r));
-      continue;
-    }
-    const std::optional<double> v = a.number(r);
-    if (!v || !std::isfinite(*v)) {  // never NaN in a file: omitted and listed
-      undefined[a.group].push_back(a.name);
-      continue;
-    }
-    if (a.kind == AttrKind::integer)
-      w.attr(g, a.name, checked_cast<long>(*v, a.name));
-    else
-      w.attr(g, a.name, *v);
-    w.attr(g, units_attribute(a.name).c_str(), a.units);
-  }
+  FileGroups group{w};
+  std::vector<AttrValue> values;
+  for (const AttrSpec& a : result_attributes())
+    if (applies(a.models, r)) values.push_back(value_of(a, r));
+  write_attrs(values, group);
 
   const size_t nr = r.grid.n_r, nt = r.grid.n_theta;
   const FieldSelection selected = select_fields(r.c.output.fields, r.c.model);
@@ -95,7 +69,7 @@ void write_file(const FlowResult& r, H5Writer& w) {
     if (v.empty() && d.shape != DataShape::points) {
       // A field not asked for is simply absent; one asked for (or a surface value) that is empty is
       // undefined.
-      if (!is_field || selected.has(name)) undefined[group_of(d.path)].push_back(name);
+      if (!is_field || selected.has(name)) group.undefined[group_of(d.path)].push_back(name);
       continue;
     }
     for (double x : v)
@@ -110,7 +84,7 @@ void write_file(const FlowResult& r, H5Writer& w) {
     if (d.shape == DataShape::grid) on_grid.push_back(d.path);
     if (d.shape == DataShape::n_theta && d.path != "/grid/theta") on_theta.push_back(d.path);
   }
-  for (const auto& [g, names] : undefined) w.attr(group(g), "undefined", join(names));
+  write_undefined(group);
 
   // r and θ are the dimension scales of every (n_r, n_θ) dataset and θ of the surface (xarray and
   // h5netcdf then see named coordinates).

@@ -16,9 +16,10 @@ std::vector<AttrSpec> make_attributes() {
   const char* E = "/errors";
   const char* T = "/timing";
   std::vector<AttrSpec> table = {
-      text("/", "format", "\"magnus-flow\"", [](const FlowResult&) { return std::string("magnus-flow"); }),
-      integer("/", "format_version", "version of this layout; readers accept 1 and 2",
-              [](const FlowResult&) { return opt(double(kFlowFormatVersion)); }),
+      Flow::shown(Shown::file_only, text("/", "format", "\"magnus-flow\"",
+                                          [](const FlowResult&) { return std::string("magnus-flow"); })),
+      Flow::shown(Shown::file_only, integer("/", "format_version", "version of this layout; readers accept 1 and 2",
+                                             [](const FlowResult&) { return opt(double(kFlowFormatVersion)); })),
       text("/", "software_version", "magnus version that wrote the file",
            [](const FlowResult&) { return std::string(MAGNUS_VERSION); }),
       text(

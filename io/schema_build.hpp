@@ -9,25 +9,22 @@
 
 namespace magnus::schema_build {
 
-using Get = std::function<std::optional<double>(const FlowResult&)>;
-using Set = std::function<void(FlowResult&, double)>;
+using Flow = Rows<FlowResult>;
+using Get = Flow::Get;
+using Set = Flow::Set;
 
 inline AttrSpec num(const char* group, const char* name, const char* units, const char* description, Get get,
                     Set set = {}) {
-  AttrSpec a{group, name, AttrKind::number, units, description, std::move(get), {}, std::move(set), {}};
-  return a;
+  return Flow::num(group, name, units, description, std::move(get), std::move(set));
 }
 
 inline AttrSpec integer(const char* group, const char* name, const char* description, Get get, Set set = {}) {
-  AttrSpec a{group, name, AttrKind::integer, "1", description, std::move(get), {}, std::move(set), {}};
-  return a;
+  return Flow::integer(group, name, description, std::move(get), std::move(set));
 }
 
-inline AttrSpec text(const char* group, const char* name, const char* description,
-                     std::function<std::string(const FlowResult&)> get,
-                     std::function<void(FlowResult&, const std::string&)> set = {}) {
-  AttrSpec a{group, name, AttrKind::text, "", description, {}, std::move(get), {}, std::move(set)};
-  return a;
+inline AttrSpec text(const char* group, const char* name, const char* description, Flow::GetText get,
+                     Flow::SetText set = {}) {
+  return Flow::text(group, name, description, std::move(get), std::move(set));
 }
 
 inline AttrSpec row(AttrSpec a, const char* label, const char* csv, const char* spec) {
