@@ -5,24 +5,18 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <stdexcept>
 
 #include "io/hdf5_io.hpp"
+#include "io/schema_files.hpp"
+#include "io/schema_io.hpp"
 
 namespace magnus {
 
 namespace {
 
 constexpr const char* kFormat = "magnus-checkpoint";
-
-/// The history's columns: name and member.
-const std::vector<std::pair<const char*, double ForceSample::*>>& history_columns() {
-  static const std::vector<std::pair<const char*, double ForceSample::*>> c = {
-      {"t", &ForceSample::t},     {"cl", &ForceSample::C_L}, {"cd", &ForceSample::C_D},
-      {"cm", &ForceSample::C_M},  {"fx", &ForceSample::F_x}, {"fy", &ForceSample::F_y},
-      {"torque", &ForceSample::M}};
-  return c;
-}
 
 /// The entries of a stored key "key=value key=value …", in order.
 std::vector<IdentityEntry> parse_key(const std::string& key) {
@@ -114,39 +108,38 @@ std::string checkpoint_key(const Case& c) {
 
 void write_checkpoint(const std::string& path, const Case& c, const Checkpoint& cp) {
   write_hdf5_atomic(path, [&](H5Writer& w) {
-    const H5Writer::id root = w.file();
-    w.attr(root, "format", kFormat);
-    w.attr(root, "format_version", 1L);
-    w.attr(root, "key", checkpoint_key(c));
-    w.attr(root, "case", c.source_text);
-    const NsState& s = cp.state;
-    const H5Writer::id st = w.group("/state");
-    w.attr_with_units(st, "t", s.t, "s");
-    w.attr_with_units(st, "Gamma_R", s.Gamma_R, "m^2/s");
-    w.attr_with_units(st, "Gamma_flux_prev", s.Gamma_flux_prev, "m^2/s^2");
-    w.attr_with_units(st, "dt_prev", s.dt_prev, "s");
-    w.attr(st, "steps", cp.steps);
-    w.dataset(st, "psi", {s.psi.size()}, s.psi.data(), "m^2/s", "stream function ψ");
-    w.dataset(st, "zeta", {s.zeta.size()}, s.zeta.data(), "1/s", "vorticity ζ");
-    w.dataset(st, "N_prev", {s.N_prev.size()}, s.N_prev.data(), "m^2/s^2", "advection of the previous step");
-    const H5Writer::id h = w.group("/history");
-    std::vector<double> col(cp.history.size());
-    for (const auto& [name, m] : history_columns()) {
-      for (size_t q = 0; q < col.size(); ++q) col[q] = cp.history[q].*m;
-      w.dataset(h, name, {col.size()}, col.data(), "", name);
-    }
-    const H5Writer::id sn = w.group("/snapshots");
-    std::vector<double> t, psi, zeta;
-    for (const Snapshot& x : cp.snapshots) {
-      t.push_back(x.t);
-      psi.insert(psi.end(), x.psi.begin(), x.psi.end());
-      zeta.insert(zeta.end(), x.vorticity.begin(), x.vorticity.end());
-    }
-    w.dataset(sn, "t", {t.size()}, t.data(), "s");
-    w.dataset(sn, "psi", {psi.size()}, psi.data(), "m^2/s");
-    w.dataset(sn, "vorticity", {zeta.size()}, zeta.data(), "1/s");
+    const CheckpointOut out{c, cp};
+    FileGroups g{w};
+    write_attrs(attr_values(checkpoint_attributes(), out, Shown::file_only), g, Gaps::as_is);
+    write_datasets(g, checkpoint_datasets(), out, Gaps::as_is);
   });
 }
+
+namespace {
+
+/// The history and the kept snapshots from their arrays (read_datasets' rest); throws when they do not match
+/// the state.
+void assemble(const std::string& path, std::map<std::string, std::vector<double>>& a, Checkpoint& cp) {
+  const auto& cols = checkpoint_history_members();
+  cp.history.resize(a["/history/t"].size());
+  for (const auto& [name, m] : cols) {
+    const std::vector<double>& v = a[std::string("/history/") + name];
+    if (v.size() != cp.history.size())
+      throw std::runtime_error(
+          fmt::format("--resume: '{}' is damaged: /history columns differ in length", path));
+    for (size_t q = 0; q < v.size(); ++q) cp.history[q].*m = v[q];
+  }
+  const std::vector<double>&t = a["/snapshots/t"], &psi = a["/snapshots/psi"], &zeta = a["/snapshots/vorticity"];
+  const size_t n = cp.state.psi.size();
+  if (cp.state.zeta.size() != n || psi.size() != t.size() * n || zeta.size() != t.size() * n)
+    throw std::runtime_error(fmt::format("--resume: '{}' is damaged: its arrays do not match", path));
+  for (size_t k = 0; k < t.size(); ++k)
+    cp.snapshots.push_back({t[k],
+                            {psi.begin() + long(k * n), psi.begin() + long((k + 1) * n)},
+                            {zeta.begin() + long(k * n), zeta.begin() + long((k + 1) * n)}});
+}
+
+}  // namespace
 
 Checkpoint read_checkpoint(const std::string& path, const Case& c) {
   std::unique_ptr<ResultFile> f;
@@ -164,47 +157,18 @@ Checkpoint read_checkpoint(const std::string& path, const Case& c) {
   auto non_finite = [&path](const std::string& name) {
     return std::runtime_error(fmt::format("checkpoint '{}': {} holds a non-finite value", path, name));
   };
-  auto number = [&](const char* name) {
-    const double x = f->attr_double("/state", name);
-    if (!std::isfinite(x)) throw non_finite(std::string("/state/") + name);
-    return x;
-  };
-  auto array = [&](const std::string& name) {
-    std::vector<double> x = f->dataset(name);
-    for (double e : x)
-      if (!std::isfinite(e)) throw non_finite(name);
-    return x;
-  };
   Checkpoint cp;
-  NsState& s = cp.state;
-  s.t = number("t");
-  s.Gamma_R = number("Gamma_R");
-  s.Gamma_flux_prev = number("Gamma_flux_prev");
-  s.dt_prev = number("dt_prev");
-  cp.steps = f->has_attr("/state", "steps") ? std::max(0L, f->attr_int("/state", "steps")) : 0L;
-  s.psi = array("/state/psi");
-  s.zeta = array("/state/zeta");
-  s.N_prev = array("/state/N_prev");
-  const auto& cols = history_columns();
-  std::vector<std::vector<double>> v;
-  for (const auto& col : cols) v.push_back(array(std::string("/history/") + col.first));
-  cp.history.resize(v[0].size());
-  for (size_t k = 0; k < cols.size(); ++k) {
-    if (v[k].size() != cp.history.size())
-      throw std::runtime_error(
-          fmt::format("--resume: '{}' is damaged: /history columns differ in length", path));
-    for (size_t q = 0; q < v[k].size(); ++q) cp.history[q].*cols[k].second = v[k][q];
-  }
+  read_attrs(checkpoint_attributes(), *f, cp);
+  const CheckpointOut out{c, cp};
+  for (const auto& a : checkpoint_attributes())
+    if (a.kind == AttrKind::number && !std::isfinite(*a.number(out)))
+      throw non_finite(std::string(a.group) + "/" + a.name);
+  auto rest = read_datasets(checkpoint_datasets(), *f, cp, [&](const std::string& name, const std::vector<double>& v) {
+    for (double e : v)
+      if (!std::isfinite(e)) throw non_finite(name);
+  });
+  assemble(path, rest, cp);
   for (ForceSample& h : cp.history) h.has_coefficients = c.scene.speed > 0.0;
-  const std::vector<double> t = array("/snapshots/t"), psi = array("/snapshots/psi"),
-                            zeta = array("/snapshots/vorticity");
-  const size_t n = s.psi.size();
-  if (s.zeta.size() != n || psi.size() != t.size() * n || zeta.size() != t.size() * n)
-    throw std::runtime_error(fmt::format("--resume: '{}' is damaged: its arrays do not match", path));
-  for (size_t k = 0; k < t.size(); ++k)
-    cp.snapshots.push_back({t[k],
-                            {psi.begin() + long(k * n), psi.begin() + long((k + 1) * n)},
-                            {zeta.begin() + long(k * n), zeta.begin() + long((k + 1) * n)}});
   return cp;
 }
 

@@ -16,6 +16,7 @@
 #include "io/rotor_data.hpp"
 #include "postproc/scene_forces.hpp"
 #include "io/schema.hpp"
+#include "io/schema_files.hpp"
 #include "postproc/potential/forces.hpp"
 
 namespace magnus {
@@ -247,73 +248,16 @@ Json result_json(const FlowResult& r, const std::string& output_path) {
 // ---------------------------------------------------------------------------------------------
 // sweep
 
-namespace {
-
-/// The columns of a sweep point, named as the magnus-sweep file's datasets.
-struct SweepColumn {
-  const char* name;
-  const char* units;
-  double SweepRow::*member;
-};
-
-constexpr SweepColumn kSweepColumns[] = {
-    {"alpha", "1", &SweepRow::alpha},
-    {"circulation", "m^2/s", &SweepRow::circulation},
-    {"lift", "N/m", &SweepRow::lift},
-    {"drag", "N/m", &SweepRow::drag},
-    {"cl", "1", &SweepRow::cl},
-    {"cl_kutta_joukowski", "1", &SweepRow::cl_kj},
-    {"cl_seed_estimate", "1", &SweepRow::cl_seed},
-    {"cl_over_kj_minus_1", "1", &SweepRow::cl_rel_kj},
-    {"kj_over_seed", "1", &SweepRow::kj_over_seed},
-    {"cd", "1", &SweepRow::cd},
-    {"delta_p_top_bottom", "Pa", &SweepRow::delta_p},
-    {"delta_p_seed_estimate", "Pa", &SweepRow::delta_p_seed},
-};
-
-}  // namespace
-
 Json sweep_json(const SweepResult& s, const ViscousReference* ref, const std::vector<std::string>& written) {
-  const Case& c = s.base;
-  const PolarGrid& g = s.grid;
-  const bool by_spin = s.variable == SweepVariable::spin_ratio;
   Json j;
-  j["software_version"] = MAGNUS_VERSION;
-  j["model"] = "potential";
-  j["title"] = c.title;
-  j["variable"] = by_spin ? "spin_ratio" : "circulation";
-  Json& p = j["parameters"];
-  p["radius"] = quantity(c.scene.radius, "m");
-  p["speed"] = quantity(c.scene.speed, "m/s");
-  p["density"] = quantity(c.scene.density, "kg/m^3");
-  p["pressure_inf"] = quantity(c.scene.pressure_inf, "Pa");
-  p["circulation_model"] = c.scene.circulation_given ? "given" : "spin";
-  if (!by_spin) {
-    p["spin"] = quantity(c.scene.spin, "rad/s");
-    p["spin_ratio"] =
-        quantity(c.scene.speed > 0.0 ? std::optional<double>(c.scene.spin_ratio()) : std::nullopt, "1");
-  }
-  p["outer_radius"] = quantity(g.outer_radius() / g.a, "1");
-  p["far_field"] = to_string(c.grid.far_field);
-  p["spacing"] = to_string(g.spacing);
-  p["n_r"] = count(g.n_r);
-  p["n_theta"] = count(g.n_theta);
-  p["method"] = s.method;
-  p["stencil"] = to_string(c.solver.stencil);
-  if (!s.grid_choice.empty()) j["grid_choice"] = s.grid_choice;
-  Json& t = j["timing"];
-  t["linear_solves"] = count(s.linear_solves);
-  t["points"] = count(long(s.points.size()));
-  t["assemble_s"] = quantity(s.assemble_s, "s");
-  t["factor_s"] = quantity(s.factor_s, "s");
-  t["solve_s"] = quantity(s.solve_s, "s");
-  t["evaluate_s"] = quantity(s.evaluate_s, "s");
-  t["total_s"] = quantity(s.total_s, "s");
+  put_values(j, attr_values(sweep_attributes(), s, Shown::json_only));
+  const std::vector<Column<SweepRow>> columns = sweep_columns(s.variable);
   Json points = Json::array();
   for (const SweepPoint& pt : s.points) {
     const SweepRow w = sweep_row(s, pt);
     Json q;
-    for (const SweepColumn& col : kSweepColumns) q[col.name] = quantity(w.*col.member, col.units);
+    for (const Column<SweepRow>& col : columns)  // the stagnation points: as points, not columns
+      if (std::string(col.name).rfind("stagnation_", 0) != 0) q[col.name] = quantity(col.get(w), col.units);
     q["stagnation"] = points_json(pt.stagnation, pt.scene.radius);
     points.push_back(std::move(q));
   }

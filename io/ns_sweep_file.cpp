@@ -10,6 +10,8 @@
 
 #include "io/case_file.hpp"
 #include "io/hdf5_io.hpp"
+#include "io/schema_files.hpp"
+#include "io/schema_io.hpp"
 #include "io/json_output.hpp"
 #include "io/report_viscous.hpp"
 #include "io/text_format.hpp"
@@ -17,67 +19,6 @@
 namespace magnus {
 
 namespace {
-
-constexpr double kFill = 9.969209968386869e36;  // the netCDF default fill value (as io/sweep_file)
-const double kNaN = std::nan("");
-
-double flag(const std::optional<bool>& b) { return b ? (*b ? 1.0 : 0.0) : kNaN; }
-
-/// One column of the map: name, units, description, and its value at a point (NaN: undefined); set
-/// stores a value read back.
-struct Column {
-  const char* name;
-  const char* units;
-  const char* what;
-  std::function<double(const NsMapPoint&)> get;
-  std::function<void(NsMapPoint&, double)> set;
-};
-
-#define NS_COL(NAME, UNITS, WHAT, FIELD)                                    \
-  Column {                                                                  \
-    NAME, UNITS, WHAT, [](const NsMapPoint& p) { return double(p.FIELD); }, \
-        [](NsMapPoint& p, double v) { p.FIELD = decltype(p.FIELD)(v); }     \
-  }
-
-const std::vector<Column>& columns() {
-  static const std::vector<Column> c = {
-      NS_COL("reynolds", "1", "Reynolds number U·2a/ν", reynolds),
-      NS_COL("alpha", "1", "spin ratio aω/U", alpha),
-      NS_COL("row", "1", "index of Re in /axes/reynolds", row),
-      NS_COL("column", "1", "index of α in /axes/alpha", column),
-      NS_COL("cl", "1", "reported lift coefficient: steady, or time-averaged (see source)", cl),
-      NS_COL("cd", "1", "reported drag coefficient: steady, or time-averaged (see source)", cd),
-      NS_COL("cm", "1", "reported torque coefficient M/(½ρU²D²): steady or time-averaged", cm),
-      NS_COL("cl_pressure", "1", "pressure part of the steady state's C_L", cl_pressure),
-      NS_COL("cl_friction", "1", "friction part of the steady state's C_L", cl_friction),
-      NS_COL("cd_pressure", "1", "pressure part of the steady state's C_D", cd_pressure),
-      NS_COL("cd_friction", "1", "friction part of the steady state's C_D", cd_friction),
-      NS_COL("cl_steady", "1", "C_L of the steady state (stable or not)", cl_steady),
-      NS_COL("cd_steady", "1", "C_D of the steady state (stable or not)", cd_steady),
-      NS_COL("cm_steady", "1", "C_M of the steady state (stable or not)", cm_steady),
-      NS_COL("cl_ideal", "1", "potential flow (Kutta–Joukowski) −2πα", cl_ideal),
-      NS_COL("ratio", "1", "C_L / C_L,ideal = S/(2πρa²)", ratio),
-      NS_COL("strouhal", "1", "Strouhal number f·D/U of a time-averaged periodic point", strouhal),
-      NS_COL("newton_steps", "1", "Newton steps (with arclength corrector steps)", newton_steps),
-      NS_COL("arclength_steps", "1", "pseudo-arclength steps taken to reach this α", arclength_steps),
-      NS_COL("converged", "1", "1: the steady branch reached this point", converged),
-      NS_COL("fold", "1", "1: the branch turned back (a fold) before this α", fold),
-      Column{"stable", "1", "1 stable, 0 unstable steady state; fill value: not decided",
-             [](const NsMapPoint& p) { return flag(p.stable); },
-             [](NsMapPoint& p, double v) {
-               if (std::isfinite(v)) p.stable = v != 0.0;
-             }},
-      Column{"source", "1",
-             "0 steady, 1 time-averaged (steady state unstable), 2 time-averaged (no steady state), 3 none, "
-             "4 steady, reached by marching from rest (the continued state unstable or not found)",
-             [](const NsMapPoint& p) { return double(int(p.source)); },
-             [](NsMapPoint& p, double v) {
-               p.source = v >= 0.0 && v <= 4.0 ? MapSource(int(v)) : MapSource::none;
-             }},
-      NS_COL("seconds", "s", "wall time of the point (measured under the run's load)", seconds),
-  };
-  return c;
-}
 
 /// How the map decided stability, in words.
 std::string stability_text(const NsMap& m) {
@@ -145,21 +86,19 @@ std::string ns_map_table(const NsMap& m) {
 
 std::string ns_map_json(const NsMap& m, const std::vector<std::string>& written) {
   Json j;
-  j["software_version"] = MAGNUS_VERSION;
-  j["model"] = "navier-stokes";
-  j["title"] = m.base.title;
+  put_values(j, attr_values(ns_map_attributes(), m, Shown::json_only));
   j["grid"] = {{"n_theta", count(m.n_theta)}, {"n_r", count(m.n_r)}, {"outer_radius", quantity(m.outer_over_a, "a")}};
   j["shard"] = {{"k", count(m.shard)}, {"n", count(m.shards)}};
   j["stability"] = {{"method", m.stability_method}, {"averaged", m.averaged}};
   j["axes"] = {{"alpha", quantity(m.alphas, "1")}, {"reynolds", quantity(m.reynolds, "1")}};
   j["timing"] = {{"total_s", quantity(m.total_s, "s")}, {"threads", count(m.threads)}};
   Json cols = Json::object();
-  for (const auto& c : columns()) cols[c.name] = {{"units", c.units}, {"description", c.what}};
+  for (const auto& c : ns_map_columns()) cols[c.name] = {{"units", c.units}, {"description", c.description}};
   j["columns"] = std::move(cols);
   Json points = Json::array();
   for (const auto& p : m.points) {
     Json q = Json::object();
-    for (const auto& c : columns()) {
+    for (const auto& c : ns_map_columns()) {
       const double v = c.get(p);
       q[c.name] = quantity(std::isfinite(v) ? std::optional<double>(v) : std::nullopt, c.units);
     }
@@ -172,14 +111,14 @@ std::string ns_map_json(const NsMap& m, const std::vector<std::string>& written)
 
 std::string ns_map_csv(const NsMap& m) {
   std::string t;
-  for (const auto& c : columns())
+  for (const auto& c : ns_map_columns())
     t += (t.empty() ? "" : ",") + std::string(c.name) +
          (std::string(c.units) == "1" ? "" : std::string("_") + c.units);
   t += "\n";
   for (const auto& p : m.points) {
     std::string line;
     bool first = true;
-    for (const auto& c : columns()) {
+    for (const auto& c : ns_map_columns()) {
       const double v = c.get(p);
       line += (first ? "" : ",") + (std::isfinite(v) ? csv_number(v) : std::string());
       first = false;
@@ -191,55 +130,10 @@ std::string ns_map_csv(const NsMap& m) {
 
 void write_ns_map_hdf5(const NsMap& m, const std::string& path) {
   write_hdf5_atomic(path, [&](H5Writer& w) {
-    const H5Writer::id file = w.file();
-    w.attr(file, "format", "magnus-sweep");
-    w.attr(file, "format_version", 2L);
-    w.attr(file, "format_version_units", "1");
-    w.attr(file, "software_version", MAGNUS_VERSION);
-    w.attr(file, "model", "navier-stokes");
-    w.attr(file, "title", m.base.title);
-    w.attr(file, "case", m.base.source_text);
-    w.attr(file, "variable", "spin_ratio,reynolds");
-    w.attr(file, "shard", long(m.shard));
-    w.attr(file, "shards", long(m.shards));
-    w.attr(file, "shard_units", "1");
-    w.attr(file, "shards_units", "1");
-    w.attr(file, "stability", m.stability_method);
-    w.attr(file, "stability_units", "1");
-    w.attr(file, "averaged", long(m.averaged));
-    w.attr(file, "averaged_units", "1");
-    {
-      const H5Writer::id p = w.group("/parameters");
-      w.attr_with_units(p, "radius", m.base.scene.radius, "m");
-      w.attr_with_units(p, "speed", m.base.scene.speed, "m/s");
-      w.attr_with_units(p, "density", m.base.scene.density, "kg/m^3");
-      w.attr_with_units(p, "outer_radius", m.outer_over_a, "1");
-      w.attr(p, "n_theta", long(m.n_theta));
-      w.attr(p, "n_theta_units", "1");
-      w.attr(p, "n_r", long(m.n_r));
-      w.attr(p, "n_r_units", "1");
-    }
-    {
-      const H5Writer::id t = w.group("/timing");
-      w.attr_with_units(t, "total_s", m.total_s, "s");
-      w.attr(t, "threads", long(m.threads));
-      w.attr(t, "threads_units", "1");
-    }
-    const H5Writer::id A = w.group("/axes");
-    w.dataset(A, "alpha", {m.alphas.size()}, m.alphas.data(), "1", "the map's spin ratios aω/U");
-    w.dataset(A, "reynolds", {m.reynolds.size()}, m.reynolds.data(), "1", "the map's Reynolds numbers");
-    const H5Writer::id G = w.group("/sweep");
-    for (const auto& c : columns()) {
-      std::vector<double> v;
-      bool gaps = false;
-      for (const auto& p : m.points) {
-        const double x = c.get(p);
-        gaps = gaps || !std::isfinite(x);
-        v.push_back(std::isfinite(x) ? x : kFill);
-      }
-      w.dataset(G, c.name, {v.size()}, v.data(), c.units, c.what);
-      if (gaps) w.attr(w.open(std::string("/sweep/") + c.name), "_FillValue", kFill);
-    }
+    FileGroups g{w};
+    write_attrs(attr_values(ns_map_attributes(), m, Shown::file_only), g);
+    write_datasets(g, ns_map_axes(), m, Gaps::as_is);
+    write_columns(g, "/sweep", ns_map_columns(), m.points, Gaps::fill);
   });
 }
 
@@ -255,29 +149,16 @@ NsMap read_ns_map_hdf5(const std::string& path) {
     throw std::runtime_error(path + ": its case does not parse: " + e.what());
   }
   m.base.source_text = text;
-  m.shard = int(f.attr_int("/", "shard"));
-  m.shards = int(f.attr_int("/", "shards"));
-  // Files written before these attributes existed: unknown (merge then asks every shard to be alike).
-  m.stability_method = f.has_attr("/", "stability") ? f.attr_string("/", "stability") : "";
-  m.averaged = !f.has_attr("/", "averaged") || f.attr_int("/", "averaged") != 0;
-  m.n_theta = int(f.attr_int("/parameters", "n_theta"));
-  m.n_r = int(f.attr_int("/parameters", "n_r"));
-  m.outer_over_a = f.attr_double("/parameters", "outer_radius");
-  m.total_s = f.attr_double("/timing", "total_s");
-  m.threads = int(f.attr_int("/timing", "threads"));
-  m.alphas = f.dataset("/axes/alpha");
-  m.reynolds = f.dataset("/axes/reynolds");
-  std::vector<size_t> shape;
-  const size_t n = f.dataset("/sweep/alpha", &shape).size();
+  // Files written before stability and averaged existed: unknown (merge then asks every shard to be alike).
+  m.stability_method = "";
+  read_attrs(ns_map_attributes(), f, m);
+  read_datasets(ns_map_axes(), f, m);
+  const size_t n = f.dataset("/sweep/alpha").size();
   m.points.resize(n);
   for (auto& p : m.points) p.stable.reset();
-  for (const auto& c : columns()) {
-    const std::string name = std::string("/sweep/") + c.name;
-    if (!f.has(name)) throw std::runtime_error(fmt::format("{}: no dataset {}", path, name));
-    const std::vector<double> v = f.dataset(name);
-    if (v.size() != n)
-      throw std::runtime_error(fmt::format("{}: {} has {} values, not {}", path, name, v.size(), n));
-    for (size_t i = 0; i < n; ++i) c.set(m.points[i], v[i] == kFill ? kNaN : v[i]);
+  for (const auto& c : ns_map_columns()) {
+    const std::vector<double> v = read_column(f, "/sweep", c.name, n);
+    for (size_t i = 0; i < n; ++i) c.set(m.points[i], v[i]);
   }
   return m;
 }

@@ -34,8 +34,6 @@ inline AttrSpec row(AttrSpec a, const char* label, const char* csv, const char* 
   return a;
 }
 
-inline std::optional<double> opt(double v) { return v; }
-
 inline AttrSpec only(Models m, AttrSpec a) {
   a.models = m;
   return a;

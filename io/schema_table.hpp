@@ -79,6 +79,9 @@ struct Column {
   std::function<void(Row&, double)> set = {};
 };
 
+/// A defined number (a row's getter).
+inline std::optional<double> opt(double v) { return v; }
+
 /// An attribute's value for one struct: what the writers store and the --json outputs print.
 struct AttrValue {
   const char* group;
@@ -116,26 +119,32 @@ struct Rows {
   using GetText = std::function<std::string(const From&)>;
   using SetText = std::function<void(Into&, const std::string&)>;
 
+  /// A number with its unit (NAME_units).
   static Row num(const char* group, const char* name, const char* units, const char* description, Get get,
                  Set set = {}) {
     return Row{group, name, AttrKind::number, units, description, std::move(get), {}, std::move(set), {}};
   }
+  /// An integer, stored as a long; unit "1" (or units "": no NAME_units).
   static Row integer(const char* group, const char* name, const char* description, Get get, Set set = {},
                      const char* units = "1") {
     return Row{group, name, AttrKind::integer, units, description, std::move(get), {}, std::move(set), {}};
   }
+  /// A text (a name, a choice): no unit unless given.
   static Row text(const char* group, const char* name, const char* description, GetText get,
                   SetText set = {}, const char* units = "") {
     return Row{group, name, AttrKind::text, units, description, {}, std::move(get), {}, std::move(set)};
   }
+  /// a, there only where `there` holds.
   static Row when(std::function<bool(const From&)> there, Row a) {
     a.when = std::move(there);
     return a;
   }
+  /// a, in the file or the --json output only.
   static Row shown(Shown where, Row a) {
     a.shown = where;
     return a;
   }
+  /// a, which a reader cannot do without.
   static Row required(Row a) {
     a.required = true;
     return a;
@@ -145,7 +154,7 @@ struct Rows {
   static std::vector<Row> header(const char* format, long version, const char* model) {
     return {shown(Shown::file_only, text("/", "format", "the file's kind", [format](const From&) { return std::string(format); })),
             shown(Shown::file_only, integer("/", "format_version", "version of this layout",
-                                            [version](const From&) { return std::optional<double>(double(version)); })),
+                                            [version](const From&) { return opt(double(version)); })),
             text("/", "software_version", "magnus version that wrote the file",
                  [](const From&) { return std::string(MAGNUS_VERSION); }),
             text("/", "model", "flow model", [model](const From&) { return std::string(model); })};

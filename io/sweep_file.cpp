@@ -6,11 +6,11 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <functional>
-#include <limits>
 #include <stdexcept>
 
 #include "io/hdf5_io.hpp"
+#include "io/schema_files.hpp"
+#include "io/schema_io.hpp"
 #include "io/case_keys.hpp"
 #include "io/text_format.hpp"
 #include "physics/reference_data.hpp"
@@ -168,119 +168,16 @@ std::string sweep_csv(const SweepResult& s) {
 
 namespace {
 
-/// The value stored where a column with some defined rows is undefined (netCDF's default fill for doubles;
-/// the dataset's `_FillValue` attribute says so, and xarray/netCDF readers mask it).
-constexpr double kSweepFillValue = 9.969209968386869e36;
-
-double rad(double degrees) { return degrees * M_PI / 180.0; }
-
+/// Root, /parameters and /timing from the table, then one column per dataset in /sweep (undefined rows:
+/// the fill value; a column undefined at every point: not stored, listed in /sweep@undefined).
 void write_sweep_file(const SweepResult& s, H5Writer& w) {
-  const H5Writer::id file = w.file();
-  const Case& c = s.base;
-  const PolarGrid& g = s.grid;
-  const bool by_spin = s.variable == SweepVariable::spin_ratio;
-  w.attr(file, "format", "magnus-sweep");
-  w.attr(file, "format_version", 2L);
-  w.attr(file, "format_version_units", "1");
-  w.attr(file, "software_version", MAGNUS_VERSION);
-  w.attr(file, "model", "potential");
-  w.attr(file, "title", c.title);
-  w.attr(file, "case", c.source_text);
-  w.attr(file, "variable", by_spin ? "spin_ratio" : "circulation");
-
-  {
-    const H5Writer::id p = w.group("/parameters");
-    w.attr_with_units(p, "radius", c.scene.radius, "m");
-    w.attr_with_units(p, "speed", c.scene.speed, "m/s");
-    w.attr_with_units(p, "density", c.scene.density, "kg/m^3");
-    w.attr_with_units(p, "pressure_inf", c.scene.pressure_inf, "Pa");
-    // The scene's Re for the overlays of `magnus plot` (potential flow itself does not use ν).
-    if (c.scene.viscosity > 0.0) w.attr_with_units(p, "viscosity", c.scene.viscosity, "m^2/s");
-    w.attr(p, "circulation_model", c.scene.circulation_given ? "given" : "spin");
-    if (!by_spin) w.attr_with_units(p, "spin", c.scene.spin, "rad/s");
-    w.attr_with_units(p, "outer_radius", g.outer_radius() / g.a, "1");
-    w.attr(p, "far_field", to_string(c.grid.far_field));
-    w.attr(p, "spacing", to_string(c.grid.spacing));
-    w.attr(p, "n_r", long(g.n_r));
-    w.attr(p, "n_r_units", "1");
-    w.attr(p, "n_theta", long(g.n_theta));
-    w.attr(p, "n_theta_units", "1");
-    w.attr(p, "method", s.method);
-    w.attr(p, "stencil", to_string(c.solver.stencil));
-  }
-  {
-    const H5Writer::id t = w.group("/timing");
-    w.attr(t, "linear_solves", long(s.linear_solves));
-    w.attr(t, "linear_solves_units", "1");
-    for (const auto& [name, v] : {std::pair{"assemble_s", s.assemble_s}, std::pair{"factor_s", s.factor_s},
-                                  std::pair{"solve_s", s.solve_s}, std::pair{"evaluate_s", s.evaluate_s},
-                                  std::pair{"total_s", s.total_s}})
-      w.attr_with_units(t, name, v, "s");
-  }
+  FileGroups g{w};
+  write_attrs(attr_values(sweep_attributes(), s, Shown::file_only), g);
   std::vector<SweepRow> rows;
   for (const auto& p : s.points) rows.push_back(sweep_row(s, p));
-  const H5Writer::id G = w.group("/sweep");
-  std::vector<std::string> undefined;
-  // A column: all rows defined → stored as is; none → not stored, listed in /sweep@undefined; some → the
-  // undefined rows hold kSweepFillValue, named by the dataset's _FillValue attribute. Never NaN.
-  auto column = [&](const char* name, const std::function<double(const SweepRow&)>& get, const char* units,
-                    const std::string& what) {
-    std::vector<double> v;
-    size_t defined = 0;
-    for (const auto& row : rows) {
-      const double x = get(row);
-      defined += std::isfinite(x) ? 1 : 0;
-      v.push_back(std::isfinite(x) ? x : kSweepFillValue);
-    }
-    if (defined == 0 && !rows.empty()) {
-      undefined.push_back(name);
-      return;
-    }
-    w.dataset(G, name, {v.size()}, v.data(), units, what);
-    if (defined < v.size()) w.attr(w.open(std::string("/sweep/") + name), "_FillValue", kSweepFillValue);
-  };
-  column(
-      "alpha", [](const SweepRow& r) { return r.alpha; }, "1",
-      by_spin ? "spin ratio aω/U" : "equivalent spin ratio Γ/(2πaU)");
-  column(
-      "circulation", [](const SweepRow& r) { return r.circulation; }, "m^2/s", "circulation Γ");
-  column(
-      "lift", [](const SweepRow& r) { return r.lift; }, "N/m", "lift per unit span (across the freestream), numeric");
-  column(
-      "drag", [](const SweepRow& r) { return r.drag; }, "N/m", "drag per unit span (along the freestream), numeric");
-  column(
-      "cl", [](const SweepRow& r) { return r.cl; }, "1", "lift coefficient, numeric");
-  column(
-      "cl_kutta_joukowski", [](const SweepRow& r) { return r.cl_kj; }, "1", "Kutta–Joukowski −Γ/(Ua)");
-  column(
-      "cl_seed_estimate", [](const SweepRow& r) { return r.cl_seed; }, "1", "seed estimate −4aω/U");
-  column(
-      "cl_over_kj_minus_1", [](const SweepRow& r) { return r.cl_rel_kj; }, "1",
-      "numeric / Kutta–Joukowski − 1");
-  column(
-      "kj_over_seed", [](const SweepRow& r) { return r.kj_over_seed; }, "1",
-      "Kutta–Joukowski / seed estimate");
-  column(
-      "cd", [](const SweepRow& r) { return r.cd; }, "1", "drag coefficient, numeric");
-  column(
-      "delta_p_top_bottom", [](const SweepRow& r) { return r.delta_p; }, "Pa",
-      "p(a, π/2) − p(a, 3π/2), numeric");
-  column(
-      "delta_p_seed_estimate", [](const SweepRow& r) { return r.delta_p_seed; }, "Pa", "seed estimate 2ρUaω");
-  column(
-      "stagnation_theta1", [](const SweepRow& r) { return rad(r.stag_theta1_deg); }, "rad",
-      "first stagnation point (smallest θ in [0, 2π)), counter-clockwise from +x");
-  column(
-      "stagnation_theta2", [](const SweepRow& r) { return rad(r.stag_theta2_deg); }, "rad",
-      "second surface stagnation point; undefined (fill value) when there is one (free) point");
-  column(
-      "stagnation_r_over_a", [](const SweepRow& r) { return r.stag_r_over_a; }, "1",
-      "radius of the first stagnation point over a: 1 on the surface, > 1 for a free point");
-  if (!undefined.empty()) {
-    std::string list;
-    for (const auto& n : undefined) list += (list.empty() ? "" : ", ") + n;
-    w.attr(G, "undefined", list);
-  }
+  g("/sweep");  // the group, also when there are no points
+  write_columns(g, "/sweep", sweep_columns(s.variable), rows, Gaps::fill_or_omit);
+  write_undefined(g);
 }
 
 }  // namespace

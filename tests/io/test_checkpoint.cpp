@@ -12,6 +12,8 @@
 
 #include "io/case_parse.hpp"
 #include "io/checkpoint.hpp"
+#include "io/hdf5_io.hpp"
+#include "io/schema_files.hpp"
 #include "support.hpp"
 
 using namespace magnus;
@@ -166,4 +168,27 @@ TEST_CASE("checkpoint: a non-finite value anywhere is refused naming its dataset
     write_checkpoint(path, c, cp);
     CHECK(refusal(path, c) == "checkpoint '" + path + "': " + name + " holds a non-finite value");
   }
+}
+
+TEST_CASE("checkpoint: the file holds the declared table, and steps read back", "[io][checkpoint]") {
+  const std::string dir = test::temp_dir("ckpt-table"), path = dir + "/r.checkpoint.h5";
+  const Case c = test::parse(kCase);
+  Checkpoint cp = made_up(c);
+  cp.steps = 1234;
+  write_checkpoint(path, c, cp);
+  const ResultFile f(path, {"magnus-checkpoint"});
+  for (const AttrValue& a : attr_values(checkpoint_attributes(), CheckpointOut{c, cp}, Shown::file_only)) {
+    CAPTURE(a.group, a.name);
+    REQUIRE(f.has_attr(a.group, a.name));
+    CHECK(f.has_attr(a.group, std::string(a.name) + "_units") == (*a.units != '\0'));
+  }
+  CHECK(f.attr_string("/", "key") == checkpoint_key(c));
+  CHECK(f.datasets().size() == checkpoint_datasets().size());
+  for (const auto& d : checkpoint_datasets()) {
+    CAPTURE(d.path);
+    CHECK(f.attr_string(d.path, "units") == d.units);
+    CHECK(f.has_attr(d.path, "description") == !d.description.empty());
+  }
+  CHECK(f.dataset("/snapshots/psi").size() == 2 * cp.state.psi.size());
+  CHECK(read_checkpoint(path, c).steps == 1234);
 }

@@ -5,6 +5,7 @@
 
 #include "io/hdf5_io.hpp"
 #include "io/inspect.hpp"
+#include "io/schema_files.hpp"
 #include "io/sweep_file.hpp"
 #include "support.hpp"
 
@@ -49,4 +50,26 @@ TEST_CASE("sweep file 2: no NaN, a _FillValue where a column is partly undefined
   CHECK(text.find("/sweep/alpha") != std::string::npos);
   CHECK(text.find("0 … 3") != std::string::npos);
   CHECK(text.find("(1 undefined)") != std::string::npos);
+}
+
+TEST_CASE("sweep file: the file holds the declared table, each column with its unit and description",
+          "[io][sweep]") {
+  const std::string dir = test::temp_dir("sweep-table");
+  const SweepResult s = sweep_spin_ratio(test::make_case(1.0, 32), {0.0, 1.0});
+  write_sweep_hdf5(s, dir + "/s.h5");
+  const ResultFile f(dir + "/s.h5", {"magnus-sweep"});
+  for (const AttrValue& a : attr_values(sweep_attributes(), s, Shown::file_only)) {
+    CAPTURE(a.group, a.name);
+    REQUIRE(f.has_attr(a.group, a.name));
+    if (a.kind != AttrKind::text) CHECK(f.attr_string(a.group, std::string(a.name) + "_units") == a.units);
+  }
+  CHECK_FALSE(f.has_attr("/parameters", "spin_ratio"));  // --json's only
+  const auto columns = sweep_columns(s.variable);
+  CHECK(f.datasets().size() == columns.size());
+  for (const Column<SweepRow>& c : columns) {
+    const std::string path = std::string("/sweep/") + c.name;
+    CAPTURE(path);
+    CHECK(f.attr_string(path, "units") == c.units);
+    CHECK(f.attr_string(path, "description") == c.description);
+  }
 }
