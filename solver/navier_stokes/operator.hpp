@@ -116,16 +116,9 @@ class NsOperator {
   double dt() const { return dt_; }
   double d_xi() const { return h_; }
 
-  /// Advection N = ψ_θ ζ_ξ − ψ_ξ ζ_θ by Arakawa's Jacobian (of params().advection_order in θ and
-  /// advection_order_xi in ξ) on rings 1…n_r−2 (0 on rings 0, n_r−1), m²/s². rate (optional): max over those
-  /// rings of κ_ξ|ψ_θ|/(JΔξ) + κ_θ|ψ_ξ|/(JΔθ) (central, κ = advection_factor of each direction's order),
-  /// 1/s: CFL = rate·Δt.
-  std::vector<double> advection(const std::vector<double>& psi, const std::vector<double>& zeta,
-                                double* rate = nullptr) const;
-  /// ψ from ζ with the far-field data (Neumann ψ_ξ = U R sinθ − Γ_R/2π) and ψ = 0 on the wall, m²/s.
-  std::vector<double> stream_function(const std::vector<double>& zeta, double Gamma_R) const;
-  /// The closure: ζ_w (and ψ) such that ψ = 0 and Thom's ψ_ξ = −a²ω hold on the wall; zeta's rings
-  /// 1…n_r−1 are kept, its wall ring and psi are overwritten.
+  /// The closure: ζ_w (and ψ, from ζ with ψ = 0 on the wall and the far-field ψ_ξ = U R sinθ − Γ_R/2π)
+  /// such that ψ = 0 and Thom's ψ_ξ = −a²ω hold on the wall; zeta's rings 1…n_r−1 are kept, its wall ring
+  /// and psi are overwritten (a state interpolated from another grid).
   void close_wall(std::vector<double>& psi, std::vector<double>& zeta, double Gamma_R) const;
 
   struct Impl;

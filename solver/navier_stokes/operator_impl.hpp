@@ -1,7 +1,7 @@
 #pragma once
 // Internal to the solver layer: the state an NsOperator keeps (factorisations, wall-closure influence data,
-// FFT plans, the step's pool and buffers), shared by navier_stokes.cpp (the operator) and ns_advance.cpp
-// (the time step).
+// FFT plans, the step's pool and buffers), shared by operator.cpp (the operator) and time_step.cpp (the
+// time step).
 #include <fftw3.h>
 
 #include <complex>
@@ -12,6 +12,7 @@
 #include "solver/fft_modes.hpp"
 #include "solver/mode_solver.hpp"
 #include "solver/navier_stokes/operator.hpp"
+#include "solver/navier_stokes/stages.hpp"
 #include "solver/pool.hpp"
 
 namespace magnus {
@@ -42,8 +43,7 @@ struct NsOperator::Impl {
   std::unique_ptr<ModeSolver> helmholtz;  ///< ζ: u_ξξ + u_θθ − σ_i u = f, σ_i = 2J_i/(νΔt), Dirichlet at R
   std::unique_ptr<ModeSolver> poisson;  ///< ψ: u_ξξ + u_θθ = f, Neumann at R
   std::vector<double> phi, chi;         ///< [k][i]: φ_k(ξ_i), χ_k(ξ_i)
-  std::vector<double> phi_t, chi_t;     ///< [i][k]: the same, ring-major (the step's layout)
-  std::vector<double> denom;            ///< [k]: χ_k(ξ_1) + a²Δξ²/2
+  WallInfluence wall;                   ///< the same ring-major (the step's layout), and the denominators
   fftw_plan ring_r2c = nullptr, field_c2r = nullptr, field_r2c = nullptr;
   // advance(): the pool, ring ranges per thread and their FFT plans (on `buffers`), the buffers.
   std::unique_ptr<ThreadPool> pool;

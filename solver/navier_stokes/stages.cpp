@@ -1,0 +1,122 @@
+// The operator's stages (stages.hpp): each term of the viscous equations discretised once.
+#include "solver/navier_stokes/stages.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "solver/navier_stokes/arakawa.hpp"
+
+namespace magnus {
+
+using cplx = std::complex<double>;
+
+double advection_ring(const PolarGrid& g, const NsParams& p, double h, const double* psi, const double* zeta,
+                      int i, double* N) {
+  const int nr = g.n_r, n = g.n_theta;
+  if (p.stokes) {
+    std::fill(N, N + n, 0.0);
+    return 0.0;
+  }
+  const double scale = 1.0 / (12.0 * g.d_theta * h);
+  const int order = p.advection_order, order_xi = p.advection_order_xi;
+  const double kappa = advection_factor(order), kappa_xi = advection_factor(order_xi);
+  const double *pm = psi + size_t(i - 1) * n, *p0 = psi + size_t(i) * n, *pp = psi + size_t(i + 1) * n;
+  double ring_rate = 0.0;
+  for (int j = 0; j < n; ++j) {
+    const int e = east(j, n), w = west(j, n);
+    // Arakawa (1966) J = (J++ + J+× + J×+)/3 for ∂(ψ,ζ)/∂(θ,ξ); x = θ (j), y = ξ (i); order 4 in θ or ξ:
+    // the combination of strides 1 and 2 (arakawa.hpp).
+    N[j] = advection_12(order, order_xi, psi, zeta, i, j, n, nr) * scale;
+    ring_rate = std::max(ring_rate, kappa_xi * std::fabs(p0[e] - p0[w]) + kappa * std::fabs(pp[j] - pm[j]));
+  }
+  return ring_rate;
+}
+
+void advection_field(const PolarGrid& g, const NsParams& p, double h, const double* psi, const double* zeta,
+                     double* N, double* rate) {
+  const int nr = g.n_r, n = g.n_theta;
+  double r = std::fabs(p.omega) / g.d_theta;  // the wall ring: ψ_θ = 0, ψ_ξ = −a²ω
+  std::fill(N, N + n, 0.0);
+  std::fill(N + size_t(nr - 1) * n, N + size_t(nr) * n, 0.0);
+  for (int i = 1; i < nr - 1; ++i)
+    r = std::max(r, ring_cfl_rate(g, h, i, advection_ring(g, p, h, psi, zeta, i, N + size_t(i) * n)));
+  if (rate) *rate = r;
+}
+
+void diffusion_rhs_ring(const PolarGrid& g, const NsParams& p, double h, double dt, const double* zeta, int i,
+                        const double* N, const double* N_prev, double w1, double w0, double* f, double& acc) {
+  const int n = g.n_theta;
+  const double *zm = zeta + size_t(i - 1) * n, *z0 = zeta + size_t(i) * n, *zp = zeta + size_t(i + 1) * n;
+  const double sigma = 2.0 * g.r[i] * g.r[i] / (p.nu * dt);
+  const double inv_h2 = 1.0 / (h * h), inv_t2 = 1.0 / (g.d_theta * g.d_theta), two_nu = 2.0 / p.nu;
+  for (int j = 0; j < n; ++j) {
+    const SecondDifferences d = second_differences(zm, z0, zp, j, east(j, n), west(j, n));
+    const double lap = d.xi * inv_h2 + d.theta * inv_t2;
+    const double adv = N_prev ? w1 * N[j] + w0 * N_prev[j] : N[j];
+    f[j] = -sigma * z0[j] - lap + two_nu * adv;
+    acc += f[j];
+  }
+}
+
+double circulation_flux(const PolarGrid& g, const NsParams& p, double h, const double* psi, const double* zeta) {
+  const int n = g.n_theta;
+  const double* z = zeta + size_t(g.n_r - 1) * n;
+  const double* ps = psi + size_t(g.n_r - 1) * n;
+  double flux = 0.0;
+  for (int j = 0; j < n; ++j) {
+    const double p_theta = psi_theta(ps, j, n, g.d_theta);
+    const double z_xi = (3.0 * z[j] - 4.0 * z[j - n] + z[j - 2 * n]) / (2.0 * h);
+    flux += (-p_theta * z[j] + p.nu * z_xi) * g.d_theta;
+  }
+  return flux;
+}
+
+void outer_vorticity(const PolarGrid& g, const NsParams& p, double h, double dt, const double* psi,
+                     const double* zeta, double* out) {
+  const int n = g.n_theta;
+  const double R = g.outer_radius();
+  const double* z = zeta + size_t(g.n_r - 1) * n;
+  const double* ps = psi + size_t(g.n_r - 1) * n;
+  for (int j = 0; j < n; ++j) {
+    const double p_theta = psi_theta(ps, j, n, g.d_theta);
+    out[j] = outflow(p, p_theta) ? z[j] - dt * p_theta / (R * R) * (z[j] - z[j - n]) / h : 0.0;
+  }
+}
+
+void far_field_hat(const PolarGrid& g, const NsParams& p, double Gamma_R, cplx* g_hat) {
+  const int n = g.n_theta, m = n / 2 + 1;
+  std::fill(g_hat, g_hat + m, cplx(0.0));
+  g_hat[0] = double(n) * (-Gamma_R / (2.0 * M_PI));
+  g_hat[1] = cplx(0.0, -0.5 * double(n) * p.U * g.outer_radius());  // r2c of U R sin θ_j
+}
+
+void helmholtz_modes(const ModeSolver& helmholtz, cplx* zeta_hat, const cplx* zero_hat, const cplx* outer_hat,
+                     int kb, int ke) {
+  helmholtz.solve_mode_range(zeta_hat, zero_hat, outer_hat, kb, ke);
+}
+
+void poisson_modes(const ModeSolver& poisson, const PolarGrid& g, const cplx* zeta_hat, cplx* psi_hat,
+                   const cplx* zero_hat, const cplx* g_hat, int kb, int ke) {
+  const int m = g.n_theta / 2 + 1;
+  for (int i = 1; i < g.n_r; ++i) {
+    const double J = -g.r[i] * g.r[i];
+    const cplx* z = zeta_hat + size_t(i) * m;
+    cplx* q = psi_hat + size_t(i) * m;
+    for (int k = kb; k < ke; ++k) q[k] = J * z[k];
+  }
+  poisson.solve_mode_range(psi_hat, zero_hat, g_hat, kb, ke);
+}
+
+void wall_closure_modes(const WallInfluence& w, int n_r, int m, double target0, cplx* zeta_hat, cplx* psi_hat,
+                        cplx* delta, int kb, int ke) {
+  for (int k = kb; k < ke; ++k) delta[k] = ((k == 0 ? target0 : 0.0) - psi_hat[size_t(m) + k]) / w.denom[k];
+  for (int i = 0; i < n_r; ++i) {
+    cplx* z = zeta_hat + size_t(i) * m;
+    cplx* q = psi_hat + size_t(i) * m;
+    const double* ph = &w.phi_t[size_t(i) * m];
+    const double* ch = &w.chi_t[size_t(i) * m];
+    for (int k = kb; k < ke; ++k) z[k] += delta[k] * ph[k], q[k] += delta[k] * ch[k];
+  }
+}
+
+}  // namespace magnus

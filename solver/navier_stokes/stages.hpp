@@ -1,0 +1,115 @@
+#pragma once
+// The stages of the viscous operator (operator.hpp's equations), each the only place its term is
+// discretised: advance() (time_step.cpp) calls them in order, Newton's steady residual (newton.cpp) calls
+// the ones it shares (the advection, the 5-point Laplacian, the outer ring's flux and inflow/outflow
+// choice). Free functions of the grid, the parameters and row-major arrays (n_r, n_θ), ring 0 the wall,
+// ring N = n_r − 1 at R, uniform Δξ = h; Fourier-space stages work on the modes [kb, ke) of (n_r, m)
+// arrays (m = n_θ/2 + 1, FFTW's unnormalised r2c), so several threads may run them on disjoint ranges.
+#include <chrono>
+#include <complex>
+#include <vector>
+
+#include "mesh/polar_grid.hpp"
+#include "solver/mode_solver.hpp"
+#include "solver/navier_stokes/operator.hpp"
+
+namespace magnus {
+
+/// Adds the wall seconds of its lifetime to *sum (a part of a step's cost, NsStepTimes); null: no clock read.
+class ScopedTimer {
+ public:
+  explicit ScopedTimer(double* sum) : sum_(sum) {
+    if (sum_) t0_ = clock::now();
+  }
+  ~ScopedTimer() {
+    if (sum_) *sum_ += std::chrono::duration<double>(clock::now() - t0_).count();
+  }
+  ScopedTimer(const ScopedTimer&) = delete;
+  ScopedTimer& operator=(const ScopedTimer&) = delete;
+
+ private:
+  using clock = std::chrono::steady_clock;
+  double* sum_;
+  clock::time_point t0_;
+};
+
+/// The periodic θ-neighbours of column j of n: east j + 1 and west j − 1.
+inline int east(int j, int n) { return j + 1 == n ? 0 : j + 1; }
+inline int west(int j, int n) { return j == 0 ? n - 1 : j - 1; }
+
+/// The 5-point stencil's second differences of u at column j (neighbours e, w) of the rings um, u0, up:
+/// ξ: u_p − 2u_0 + u_m, θ: u_e − 2u_0 + u_w (units of u; u_ξξ + u_θθ = xi/Δξ² + theta/Δθ²).
+struct SecondDifferences {
+  double xi, theta;
+};
+inline SecondDifferences second_differences(const double* um, const double* u0, const double* up, int j, int e,
+                                            int w) {
+  return {up[j] - 2.0 * u0[j] + um[j], u0[e] - 2.0 * u0[j] + u0[w]};
+}
+
+/// Advection N = ψ_θ ζ_ξ − ψ_ξ ζ_θ on ring i (1 ≤ i ≤ n_r − 2) by Arakawa's Jacobian of p's orders
+/// (arakawa.hpp) into N (n_θ values), m²/s²; 0 with p.stokes. Returns max_j κ_ξ|ψ_e − ψ_w| + κ_θ|ψ_p − ψ_m|
+/// (κ = advection_factor of each direction's order; 0 with p.stokes), m²/s: ring_cfl_rate turns it into 1/s.
+double advection_ring(const PolarGrid& g, const NsParams& p, double h, const double* psi, const double* zeta,
+                      int i, double* N);
+
+/// The CFL rate of ring i, 1/s, from advection_ring's value m: m/(2ΔθΔξ J_i) (CFL number = rate·Δt).
+inline double ring_cfl_rate(const PolarGrid& g, double h, int i, double m) {
+  return m * (1.0 / (2.0 * g.d_theta * h)) * (1.0 / (g.r[i] * g.r[i]));
+}
+
+/// advection_ring on rings 1…n_r−2 into N (n_r·n_θ values; 0 on rings 0 and n_r−1), m²/s², one thread.
+/// rate (optional): the largest ring_cfl_rate and the wall ring's |ω|/Δθ, 1/s.
+void advection_field(const PolarGrid& g, const NsParams& p, double h, const double* psi, const double* zeta,
+                     double* N, double* rate = nullptr);
+
+/// The Crank–Nicolson right-hand side on ring i (1 ≤ i ≤ n_r − 2), 1/s:
+///     f_j = −σ_i ζ_j − (ζ_ξξ + ζ_θθ)_j + (2/ν)(w1 N_j + w0 N_prev_j),   σ_i = 2J_i/(νΔt)
+/// (N_prev null: the Euler start, N alone). Adds Σ_j f_j to acc (a finiteness check).
+void diffusion_rhs_ring(const PolarGrid& g, const NsParams& p, double h, double dt, const double* zeta, int i,
+                        const double* N, const double* N_prev, double w1, double w0, double* f, double& acc);
+
+/// ψ_θ at column j of the ring ps (central, periodic), m²/s.
+inline double psi_theta(const double* ps, int j, int n, double d_theta) {
+  return (ps[east(j, n)] - ps[west(j, n)]) / (2.0 * d_theta);
+}
+
+/// Whether the outer ring's column with ψ_θ = p_theta lets the wake out (u_r > 0, convective condition):
+/// ψ_θ > 0 with NsOuterVorticity::inflow_outflow; otherwise ζ = 0 there.
+inline bool outflow(const NsParams& p, double p_theta) {
+  return p.outer_vorticity == NsOuterVorticity::inflow_outflow && p_theta > 0.0;
+}
+
+/// dΓ_R/dt = Σ_j (−ψ_θ ζ + ν ζ_ξ)|_R Δθ (ζ_ξ one-sided, second order) of the fields psi, zeta, m²/s².
+double circulation_flux(const PolarGrid& g, const NsParams& p, double h, const double* psi, const double* zeta);
+
+/// ζ on the outer ring a step dt later into out (n_θ values), 1/s: 0 on inflow; on outflow
+/// ζ_t + (ψ_θ/J) ζ_ξ = 0, explicit upwind.
+void outer_vorticity(const PolarGrid& g, const NsParams& p, double h, double dt, const double* psi,
+                     const double* zeta, double* out);
+
+/// r2c of the far-field data ψ_ξ = U R sinθ − Γ_R/2π into g_hat (m values: modes 0 and 1, the rest 0).
+void far_field_hat(const PolarGrid& g, const NsParams& p, double Gamma_R, std::complex<double>* g_hat);
+
+/// Helmholtz (the implicit diffusion) on modes [kb, ke): ζ̂* from f̂ in zeta_hat, ζ = 0 at the wall,
+/// ζ = outer_hat at R (zero_hat: m zeros).
+void helmholtz_modes(const ModeSolver& helmholtz, std::complex<double>* zeta_hat,
+                     const std::complex<double>* zero_hat, const std::complex<double>* outer_hat, int kb, int ke);
+
+/// Poisson on modes [kb, ke): ψ̂* of ψ_ξξ + ψ_θθ = −J ζ̂* into psi_hat, ψ = 0 at the wall, ψ_ξ = g_hat at R.
+void poisson_modes(const ModeSolver& poisson, const PolarGrid& g, const std::complex<double>* zeta_hat,
+                   std::complex<double>* psi_hat, const std::complex<double>* zero_hat,
+                   const std::complex<double>* g_hat, int kb, int ke);
+
+/// The wall closure's influence data, ring-major [i][k]: φ_k(ξ_i), χ_k(ξ_i) (operator.hpp), and per mode
+/// χ_k(ξ_1) + a²Δξ²/2.
+struct WallInfluence {
+  std::vector<double> phi_t, chi_t, denom;
+};
+
+/// The wall closure on modes [kb, ke): δ_k = (t_k − ψ̂*_{1,k})/denom_k with t_0 = target0 = −n_θ Δξ a²ω
+/// (Thom's ψ_ξ = −a²ω), t_k = 0 else; ζ̂ += δ_k φ_k, ψ̂ += δ_k χ_k on every ring. delta: m values.
+void wall_closure_modes(const WallInfluence& w, int n_r, int m, double target0, std::complex<double>* zeta_hat,
+                        std::complex<double>* psi_hat, std::complex<double>* delta, int kb, int ke);
+
+}  // namespace magnus
