@@ -2,6 +2,7 @@
 
 #include "solver/navier_stokes/arakawa.hpp"
 #include "solver/navier_stokes/lu.hpp"
+#include "solver/navier_stokes/stages.hpp"
 
 #include <umfpack.h>
 
@@ -20,19 +21,6 @@ using clock_type = std::chrono::steady_clock;
 
 double seconds_since(clock_type::time_point t0) {
   return std::chrono::duration<double>(clock_type::now() - t0).count();
-}
-
-/// Arakawa's N (of the given orders in θ and ξ) on rings 1…n_r−2 (0 on the wall and outer rings), m²/s²:
-/// the stepper's advection_12, so the residual is the stepper's sum to the last bit; fields row-major (n_r,
-/// n).
-std::vector<double> arakawa(const std::vector<double>& psi, const std::vector<double>& zeta, int nr, int n,
-                            double d_theta, double h, int order, int order_xi) {
-  std::vector<double> N(size_t(nr) * n, 0.0);
-  const double scale = 1.0 / (12.0 * d_theta * h);
-  for (int i = 1; i < nr - 1; ++i)
-    for (int j = 0; j < n; ++j)
-      N[size_t(i) * n + j] = advection_12(order, order_xi, psi.data(), zeta.data(), i, j, n, nr) * scale;
-  return N;
 }
 
 double max_abs(const std::vector<double>& v) {
@@ -88,11 +76,12 @@ std::vector<double> SteadyJacobian::residual(const std::vector<double>& x) const
   const double h = h_, dth = grid_.d_theta, q2 = (h / dth) * (h / dth), R = grid_.outer_radius();
   const double a2 = p_.a * p_.a, h2_nu = h * h / p_.nu;
   const NsState s = unpack(x);
-  const std::vector<double> N =
-      p_.stokes ? std::vector<double>(size_t(nr) * n, 0.0)
-                : arakawa(s.psi, s.zeta, nr, n, dth, h, p_.advection_order, p_.advection_order_xi);
+  // The time step's stages without the time derivative: its advection, Laplacian and outer-ring flux.
+  std::vector<double> N(size_t(nr) * n);
+  advection_field(grid_, p_, h, s.psi.data(), s.zeta.data(), N.data());
   auto P = [&](int i, int j) { return s.psi[size_t(i) * n + j]; };
   auto Z = [&](int i, int j) { return s.zeta[size_t(i) * n + j]; };
+  auto row = [n](const std::vector<double>& f, int i) { return f.data() + size_t(i) * n; };
   std::vector<double> F(static_cast<size_t>(size_));
   for (int j = 0; j < n; ++j) {
     F[2 * j] = P(0, j) * s_psi_;
@@ -101,30 +90,26 @@ std::vector<double> SteadyJacobian::residual(const std::vector<double>& x) const
   for (int i = 1; i < iN; ++i) {
     const double Jh2 = h * h * grid_.r[i] * grid_.r[i];
     for (int j = 0; j < n; ++j) {
-      const int e = j + 1 == n ? 0 : j + 1, w = j == 0 ? n - 1 : j - 1;
+      const int e = east(j, n), w = west(j, n);
       const size_t q = size_t(i) * n + j;
-      const double lap_p =
-          P(i + 1, j) - 2.0 * P(i, j) + P(i - 1, j) + q2 * (P(i, e) - 2.0 * P(i, j) + P(i, w));
-      const double lap_z =
-          Z(i + 1, j) - 2.0 * Z(i, j) + Z(i - 1, j) + q2 * (Z(i, e) - 2.0 * Z(i, j) + Z(i, w));
-      F[2 * q] = (lap_p + Jh2 * Z(i, j)) * s_psi_;
-      F[2 * q + 1] = (lap_z - h2_nu * N[q]) * s_zeta_;
+      const SecondDifferences dp = second_differences(row(s.psi, i - 1), row(s.psi, i), row(s.psi, i + 1), j, e, w);
+      const SecondDifferences dz =
+          second_differences(row(s.zeta, i - 1), row(s.zeta, i), row(s.zeta, i + 1), j, e, w);
+      F[2 * q] = (dp.xi + q2 * dp.theta + Jh2 * Z(i, j)) * s_psi_;
+      F[2 * q + 1] = (dz.xi + q2 * dz.theta - h2_nu * N[q]) * s_zeta_;
     }
   }
-  const bool convect = p_.outer_vorticity == NsOuterVorticity::inflow_outflow;
-  double flux = 0.0;
   for (int j = 0; j < n; ++j) {
-    const int e = j + 1 == n ? 0 : j + 1, w = j == 0 ? n - 1 : j - 1;
+    const int e = east(j, n), w = west(j, n);
     const size_t q = size_t(iN) * n + j;
     const double g = p_.U * R * std::sin(grid_.theta[j]) - x.back() / (2.0 * M_PI);
     F[2 * q] = (2.0 * (P(iN - 1, j) - P(iN, j)) + q2 * (P(iN, e) - 2.0 * P(iN, j) + P(iN, w)) +
                 h * h * R * R * Z(iN, j) + 2.0 * h * g) *
                s_psi_;
-    const double p_theta = (P(iN, e) - P(iN, w)) / (2.0 * dth);
-    F[2 * q + 1] = (convect && p_theta > 0.0 ? Z(iN, j) - Z(iN - 1, j) : Z(iN, j)) * s_zeta_;
-    const double z_xi = (3.0 * Z(iN, j) - 4.0 * Z(iN - 1, j) + Z(iN - 2, j)) / (2.0 * h);
-    flux += (-p_theta * Z(iN, j) + p_.nu * z_xi) * dth;
+    const bool out = outflow(p_, psi_theta(row(s.psi, iN), j, n, dth));
+    F[2 * q + 1] = (out ? Z(iN, j) - Z(iN - 1, j) : Z(iN, j)) * s_zeta_;
   }
+  const double flux = circulation_flux(grid_, p_, h, s.psi.data(), s.zeta.data());
   F.back() = flux * h / (2.0 * M_PI * p_.nu) * s_zeta_;
   return F;
 }
