@@ -1,8 +1,9 @@
-// The analytic Jacobian of the steady viscous equations (see ns_newton.hpp): its triplet pattern, built once,
+// The analytic Jacobian of the steady viscous equations (see newton.hpp): its triplet pattern, built once,
 // and its values at a state, summed into compressed columns for UMFPACK.
 #include "solver/navier_stokes/arakawa.hpp"
 #include "solver/navier_stokes/lu.hpp"
 #include "solver/navier_stokes/newton.hpp"
+#include "solver/navier_stokes/stages.hpp"
 
 #include <umfpack.h>
 
@@ -16,7 +17,7 @@ namespace magnus {
 namespace {
 
 /// Arakawa's Jacobian (J++ + J+× + J×+)/3 as 24 bilinear terms c·ψ(i+pi, j+pj)·ζ(i+zi, j+zj), times
-/// 1/(12ΔθΔξ): the same sums as NsOperator::advection (j1, j2, j3 there, in that order), written out so
+/// 1/(12ΔθΔξ): the same sums as arakawa_12 (j1, j2, j3 there, in that order), written out so
 /// that each term's two derivatives are its two factors.
 struct ArakawaTerm {
   int c, pi, pj, zi, zj;
@@ -50,107 +51,145 @@ constexpr ArakawaTerm kArakawa[24] = {
     {+1, +1, -1, 0, -1},
     {-1, -1, -1, 0, -1}};
 
+/// Where assemble() puts its entries: the first assembly merges the entries of each run of one row into
+/// distinct triplets (the k-th add → slot[k]), so the compressed columns are built from 2.5–3 times fewer
+/// triplets; the later ones only add into the values. Mirror: only the rows of the nodes 0 < θ_j < π enter
+/// the half system; the others are not assembled.
+struct TripletSink {
+  std::vector<long>&Ti, &Tj;
+  std::vector<int>& slot;
+  std::vector<double>& Tx;
+  bool first, mirror;
+  long size;
+  int n;
+  size_t k = 0;
+  long run_row = -1;
+  size_t run_begin = 0;
+
+  bool dropped(long row) const {
+    if (!mirror) return false;
+    const long j = (row / 2) % n;
+    return row == size - 1 || j == 0 || 2 * j >= n;
+  }
+  void add(long row, long col, double v) {
+    if (dropped(row)) return;
+    if (first) {
+      if (row != run_row) run_row = row, run_begin = Ti.size();
+      size_t s = run_begin;
+      while (s < Ti.size() && Tj[s] != col) ++s;
+      if (s == Ti.size()) Ti.push_back(row), Tj.push_back(col), Tx.push_back(0.0);
+      slot.push_back(int(s));
+      Tx[s] += v;
+    } else {
+      Tx[size_t(slot[k])] += v;
+    }
+    ++k;
+  }
+};
+
+/// The unknowns' numbering (ψ_q, ζ_q interleaved per node q = i·n_θ + j) and the state x read through it.
+struct Unknowns {
+  const std::vector<double>& x;
+  int n;
+  long cp(int i, int j) const { return 2 * (long(i) * n + j); }
+  long cz(int i, int j) const { return 2 * (long(i) * n + j) + 1; }
+  double P(int i, int j) const { return x[size_t(cp(i, j))]; }
+  double Z(int i, int j) const { return x[size_t(cz(i, j))]; }
+  int wrap(int j) const { return j < 0 ? j + n : j >= n ? j - n : j; }
+};
+
+/// ∂/∂x of −(h²/ν)·N in the ζ row of node (i, j), times cN = −(h²/ν)/(12ΔθΔξ)·s_ζ: each Arakawa term
+/// c·ψ·ζ of each stride (advection_terms) gives c·ζ to its ψ and c·ψ to its ζ.
+void advection_entries(TripletSink& sink, const Unknowns& u, const NsParams& p, int nr, int i, int j,
+                       double cN) {
+  AdvectionStride st[2];
+  const int terms = advection_terms(p.advection_order, p.advection_order_xi, i, nr, st);
+  const long rz = u.cz(i, j);
+  for (int q = 0; q < terms; ++q) {  // strides (s, sx) in θ and ξ, weight c (solver/navier_stokes/arakawa.hpp)
+    const int s = st[q].s_theta, sx = st[q].s_xi;
+    const double cs = cN * st[q].weight;
+    for (const ArakawaTerm& t : kArakawa) {
+      const int pi = i + sx * t.pi, pj = u.wrap(j + s * t.pj), zi = i + sx * t.zi, zj = u.wrap(j + s * t.zj);
+      sink.add(rz, u.cp(pi, pj), cs * t.c * u.Z(zi, zj));
+      sink.add(rz, u.cz(zi, zj), cs * t.c * u.P(pi, pj));
+    }
+  }
+}
+
+/// The ψ and ζ rows of the rings 1…n_r−2: the 5-point Laplacians, J ζ, and the advection's entries.
+void interior_rows(TripletSink& sink, const Unknowns& u, const PolarGrid& g, const NsParams& p, double h,
+                   double s_psi, double s_zeta) {
+  const int n = g.n_theta, iN = g.n_r - 1;
+  const double q2 = (h / g.d_theta) * (h / g.d_theta);
+  const double cN = -h * h / p.nu / (12.0 * g.d_theta * h) * s_zeta;  // ∂/∂(term) of −(h²/ν)·N, scaled
+  for (int i = 1; i < iN; ++i) {
+    const double Jh2 = h * h * g.r[i] * g.r[i];
+    for (int j = 0; j < n; ++j) {
+      const int e = u.wrap(j + 1), w = u.wrap(j - 1);
+      const long rp = u.cp(i, j), rz = u.cz(i, j);
+      sink.add(rp, u.cp(i + 1, j), s_psi), sink.add(rp, u.cp(i - 1, j), s_psi);
+      sink.add(rp, u.cp(i, j), (-2.0 - 2.0 * q2) * s_psi);
+      sink.add(rp, u.cp(i, e), q2 * s_psi), sink.add(rp, u.cp(i, w), q2 * s_psi);
+      sink.add(rp, u.cz(i, j), Jh2 * s_psi);
+      sink.add(rz, u.cz(i + 1, j), s_zeta), sink.add(rz, u.cz(i - 1, j), s_zeta);
+      sink.add(rz, u.cz(i, j), (-2.0 - 2.0 * q2) * s_zeta);
+      sink.add(rz, u.cz(i, e), q2 * s_zeta), sink.add(rz, u.cz(i, w), q2 * s_zeta);
+      if (!p.stokes) advection_entries(sink, u, p, g.n_r, i, j, cN);
+    }
+  }
+}
+
+/// The rows of the outer ring (ψ with the far field's ghost ring, ζ inflow/outflow) and of Γ_R (the flux).
+void outer_rows(TripletSink& sink, const Unknowns& u, const PolarGrid& g, const NsParams& p, double h,
+                double s_psi, double s_zeta, long gamma) {
+  const int n = g.n_theta, iN = g.n_r - 1;
+  const double dth = g.d_theta, q2 = (h / dth) * (h / dth), R = g.outer_radius();
+  const double ff = h / (2.0 * M_PI * p.nu) * s_zeta * dth;  // the flux row's scale times Δθ
+  for (int j = 0; j < n; ++j) {
+    const int e = u.wrap(j + 1), w = u.wrap(j - 1);
+    const long rp = u.cp(iN, j), rz = u.cz(iN, j);
+    sink.add(rp, u.cp(iN - 1, j), 2.0 * s_psi);
+    sink.add(rp, u.cp(iN, j), (-2.0 - 2.0 * q2) * s_psi);
+    sink.add(rp, u.cp(iN, e), q2 * s_psi), sink.add(rp, u.cp(iN, w), q2 * s_psi);
+    sink.add(rp, u.cz(iN, j), h * h * R * R * s_psi);
+    sink.add(rp, gamma, -h / M_PI * s_psi);
+    const double p_theta = (u.P(iN, e) - u.P(iN, w)) / (2.0 * dth);
+    const bool out = outflow(p, p_theta);
+    sink.add(rz, u.cz(iN, j), s_zeta);
+    sink.add(rz, u.cz(iN - 1, j), out ? -s_zeta : 0.0);
+    sink.add(gamma, u.cp(iN, e), -u.Z(iN, j) / (2.0 * dth) * ff);
+    sink.add(gamma, u.cp(iN, w), u.Z(iN, j) / (2.0 * dth) * ff);
+    sink.add(gamma, u.cz(iN, j), (-p_theta + 1.5 * p.nu / h) * ff);
+    sink.add(gamma, u.cz(iN - 1, j), -2.0 * p.nu / h * ff);
+    sink.add(gamma, u.cz(iN - 2, j), 0.5 * p.nu / h * ff);
+  }
+}
+
 }  // namespace
 
 void SteadyJacobian::assemble(const std::vector<double>& x) {
-  const int nr = grid_.n_r, n = grid_.n_theta, iN = nr - 1;
-  const double h = h_, dth = grid_.d_theta, q2 = (h / dth) * (h / dth), R = grid_.outer_radius();
-  const double a2 = p_.a * p_.a;
+  const int nr = grid_.n_r, n = grid_.n_theta;
+  const double h = h_, a2 = p_.a * p_.a;
   const bool first = Ti_.empty();
-  size_t k = 0;
-  // Arakawa's 48 terms of a ζ row fall on 18 columns (order 4 in θ: 96 terms on 30 columns): the first
-  // assembly merges the entries of each run of one row into distinct triplets (k-th call → Slot_[k]), so
-  // the compressed columns are built from 2.5–3 times fewer triplets; the later ones only add into Tx_.
-  const int order = p_.advection_order, order_xi = p_.advection_order_xi;
-  const int strides = order == 4 || order_xi == 4 ? 2 : 1;
-  long run_row = -1;
-  size_t run_begin = 0;
+  // Arakawa's 48 terms of a ζ row fall on 18 columns (order 4 in θ: 96 terms on 30 columns): TripletSink
+  // merges them on the first assembly.
+  const int strides = p_.advection_order == 4 || p_.advection_order_xi == 4 ? 2 : 1;
   if (first) {
     const size_t calls = size_t(n) * (16 + size_t(nr - 2) * (p_.stokes ? 11 : 11 + 48 * strides));
     Slot_.reserve(calls), Ti_.reserve(calls / 2), Tj_.reserve(calls / 2), Tx_.reserve(calls / 2);
   } else {
     std::fill(Tx_.begin(), Tx_.end(), 0.0);
   }
-  // Mirror: only the rows of the nodes 0 < θ_j < π enter the half system; the others are not assembled.
-  auto dropped = [&](long row) {
-    if (!mirror_) return false;
-    const long j = (row / 2) % n;
-    return row == size_ - 1 || j == 0 || 2 * j >= n;
-  };
-  auto add = [&](long row, long col, double v) {
-    if (dropped(row)) return;
-    if (first) {
-      if (row != run_row) run_row = row, run_begin = Ti_.size();
-      size_t slot = run_begin;
-      while (slot < Ti_.size() && Tj_[slot] != col) ++slot;
-      if (slot == Ti_.size()) Ti_.push_back(row), Tj_.push_back(col), Tx_.push_back(0.0);
-      Slot_.push_back(int(slot));
-      Tx_[slot] += v;
-    } else {
-      Tx_[size_t(Slot_[k])] += v;
-    }
-    ++k;
-  };
-  auto cp = [n](int i, int j) { return 2 * (long(i) * n + j); };
-  auto cz = [n](int i, int j) { return 2 * (long(i) * n + j) + 1; };
-  auto P = [&](int i, int j) { return x[size_t(cp(i, j))]; };
-  auto Z = [&](int i, int j) { return x[size_t(cz(i, j))]; };
-  auto wrap = [n](int j) { return j < 0 ? j + n : j >= n ? j - n : j; };
-  const long gamma = size_ - 1;
-
+  TripletSink sink{Ti_, Tj_, Slot_, Tx_, first, mirror_, size_, n};
+  const Unknowns u{x, n};
   for (int j = 0; j < n; ++j) {  // wall: ψ = 0; Thom
-    add(cp(0, j), cp(0, j), s_psi_);
-    add(cz(0, j), cp(1, j), s_psi_);
-    add(cz(0, j), cz(0, j), 0.5 * a2 * h * h * s_psi_);
+    sink.add(u.cp(0, j), u.cp(0, j), s_psi_);
+    sink.add(u.cz(0, j), u.cp(1, j), s_psi_);
+    sink.add(u.cz(0, j), u.cz(0, j), 0.5 * a2 * h * h * s_psi_);
   }
-  const double cN = -h * h / p_.nu / (12.0 * dth * h) * s_zeta_;  // ∂/∂(term) of −(h²/ν)·N, scaled
-  for (int i = 1; i < iN; ++i) {
-    const double Jh2 = h * h * grid_.r[i] * grid_.r[i];
-    for (int j = 0; j < n; ++j) {
-      const int e = wrap(j + 1), w = wrap(j - 1);
-      const long rp = cp(i, j), rz = cz(i, j);
-      add(rp, cp(i + 1, j), s_psi_), add(rp, cp(i - 1, j), s_psi_);
-      add(rp, cp(i, j), (-2.0 - 2.0 * q2) * s_psi_);
-      add(rp, cp(i, e), q2 * s_psi_), add(rp, cp(i, w), q2 * s_psi_);
-      add(rp, cz(i, j), Jh2 * s_psi_);
-      add(rz, cz(i + 1, j), s_zeta_), add(rz, cz(i - 1, j), s_zeta_);
-      add(rz, cz(i, j), (-2.0 - 2.0 * q2) * s_zeta_);
-      add(rz, cz(i, e), q2 * s_zeta_), add(rz, cz(i, w), q2 * s_zeta_);
-      if (p_.stokes) continue;
-      AdvectionStride st[2];
-      const int terms = advection_terms(order, order_xi, i, nr, st);
-      for (int q = 0; q < terms; ++q) {  // strides (s, sx) in θ and ξ, weight c (solver/navier_stokes/arakawa.hpp)
-        const int s = st[q].s_theta, sx = st[q].s_xi;
-        const double cs = cN * st[q].weight;
-        for (const ArakawaTerm& t : kArakawa) {
-          const int pi = i + sx * t.pi, pj = wrap(j + s * t.pj), zi = i + sx * t.zi, zj = wrap(j + s * t.zj);
-          add(rz, cp(pi, pj), cs * t.c * Z(zi, zj));
-          add(rz, cz(zi, zj), cs * t.c * P(pi, pj));
-        }
-      }
-    }
-  }
-  const bool convect = p_.outer_vorticity == NsOuterVorticity::inflow_outflow;
-  const double ff = h / (2.0 * M_PI * p_.nu) * s_zeta_ * dth;  // the flux row's scale times Δθ
-  for (int j = 0; j < n; ++j) {
-    const int e = wrap(j + 1), w = wrap(j - 1);
-    const long rp = cp(iN, j), rz = cz(iN, j);
-    add(rp, cp(iN - 1, j), 2.0 * s_psi_);
-    add(rp, cp(iN, j), (-2.0 - 2.0 * q2) * s_psi_);
-    add(rp, cp(iN, e), q2 * s_psi_), add(rp, cp(iN, w), q2 * s_psi_);
-    add(rp, cz(iN, j), h * h * R * R * s_psi_);
-    add(rp, gamma, -h / M_PI * s_psi_);
-    const double p_theta = (P(iN, e) - P(iN, w)) / (2.0 * dth);
-    const bool out = convect && p_theta > 0.0;
-    add(rz, cz(iN, j), s_zeta_);
-    add(rz, cz(iN - 1, j), out ? -s_zeta_ : 0.0);
-    add(gamma, cp(iN, e), -Z(iN, j) / (2.0 * dth) * ff);
-    add(gamma, cp(iN, w), Z(iN, j) / (2.0 * dth) * ff);
-    add(gamma, cz(iN, j), (-p_theta + 1.5 * p_.nu / h) * ff);
-    add(gamma, cz(iN - 1, j), -2.0 * p_.nu / h * ff);
-    add(gamma, cz(iN - 2, j), 0.5 * p_.nu / h * ff);
-  }
-  if (!first && k != Slot_.size()) throw std::logic_error("SteadyJacobian: the pattern changed");
+  interior_rows(sink, u, grid_, p_, h, s_psi_, s_zeta_);
+  outer_rows(sink, u, grid_, p_, h, s_psi_, s_zeta_, size_ - 1);
+  if (!first && sink.k != Slot_.size()) throw std::logic_error("SteadyJacobian: the pattern changed");
   if (first) {
     triplet_pattern(size_, Ti_, Tj_, Ap_, Ai_, Map_);
     Ax_.resize(Ai_.size());
