@@ -102,85 +102,170 @@ double choose_time_step(const NsParams& p, const PolarGrid& g, const NsState& s,
   return dt_cfl;
 }
 
-UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState start,
-                            std::vector<ForceSample> history) {
-  using clock = std::chrono::steady_clock;
-  const auto clock0 = clock::now();
+namespace {
+
+/// The reference speed U (or a|ω| when U = 0), m/s; throws std::invalid_argument when nothing moves or the
+/// parameters are not a scene (run_unsteady's conditions).
+double reference_speed(const NsParams& p) {
   if (!(p.U >= 0.0) || !std::isfinite(p.U) || !std::isfinite(p.omega) || !(p.a > 0.0))
     throw std::invalid_argument("run_unsteady: needs a > 0, U >= 0 and a finite spin");
   const double U_ref = p.U > 0.0 ? p.U : std::fabs(p.a * p.omega);
   if (!(U_ref > 0.0))
     throw std::invalid_argument(
         "run_unsteady: U = 0 and omega = 0: nothing moves (give a freestream U > 0 or a spin omega != 0)");
+  return U_ref;
+}
+
+/// The warm start (UnsteadyOptions::coarse_start): run on the grid with half the points each way, then
+/// interpolate its state onto g (the wall closed again) into start, its history into res; first_fine: the
+/// first sample of g. Returns the note for the message.
+std::string warm_start(const NsParams& p, const UnsteadyOptions& o, const PolarGrid& g, NsState& start,
+                       UnsteadyResult& res, size_t& first_fine) {
+  NsParams pc = p;
+  pc.n_theta = (p.n_theta / 2 + 1) / 2 * 2;
+  pc.n_r = (g.n_r + 1) / 2;
+  pc.outer_over_a = g.outer_radius() / p.a;
+  const PolarGrid gc = ns_grid(pc);
+  NsState sc;
+  sc.zeta = interpolate(g, start.zeta, gc);
+  sc.psi = interpolate(g, start.psi, gc);
+  sc.Gamma_R = start.Gamma_R;
+  UnsteadyOptions oc = o;
+  oc.coarse_start = false;
+  oc.mean_tol = 10.0 * o.mean_tol;
+  oc.steady_tol = 10.0 * o.steady_tol;
+  oc.on_step = nullptr;
+  UnsteadyResult rc = run_unsteady(pc, oc, std::move(sc));
+  res.coarse_steps = rc.steps;
+  res.steps += rc.steps;
+  if (o.steps_taken) *o.steps_taken = res.steps;
+  res.times += rc.times;
+  if (!(rc.ok && rc.state.t < o.t_end)) return "warm start skipped (" + rc.message + ")";
+  NsState s;
+  s.t = rc.state.t;
+  s.Gamma_R = rc.state.Gamma_R;
+  s.zeta = interpolate(gc, rc.state.zeta, g);
+  s.psi = interpolate(gc, rc.state.psi, g);
+  const NsOperator op0(p, choose_time_step(p, g, s, nullptr));
+  op0.close_wall(s.psi, s.zeta, s.Gamma_R);
+  start = std::move(s);
+  res.history = std::move(rc.history);
+  first_fine = res.history.size();
+  res.t_fine = start.t;
+  return "warm start on " + std::to_string(gc.n_r) + " x " + std::to_string(gc.n_theta) + " to t = " +
+         std::to_string(start.t) + " s (" + rc.message + ")";
+}
+
+/// Steady: the forces of the samples from first_fine on flat over the window from t_from on (on ½ρU_ref²D,
+/// q_ref = ½ρU_ref²; torque on ½ρU_ref²D², which must be flat too when there is no freestream).
+bool forces_flat(const std::vector<ForceSample>& h, size_t first_fine, double t_from, double q_ref, double D,
+                 bool freestream, double tol) {
+  if (!(t_from > 0.0 && (h.size() - first_fine) > 2 && h[first_fine].t <= t_from)) return false;
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (size_t q = h.size(); q-- > first_fine && h[q].t >= t_from;) {
+    const ForceSample& x = h[q];
+    const double v[3] = {x.F_x / (q_ref * D), x.F_y / (q_ref * D), x.M / (q_ref * D * D)};
+    for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], v[c]), hi[c] = std::max(hi[c], v[c]);
+  }
+  return hi[0] - lo[0] < tol && hi[1] - lo[1] < tol && (freestream || hi[2] - lo[2] < tol);
+}
+
+/// Periodic: the last converged_periods + 1 full-grid periods agree (means of C_L, C_D and lengths to
+/// mean_tol) and the spectrum of the last periods peaks at the same frequency (a false period never stops it).
+bool periods_agree(const std::vector<ForceSample>& h, size_t first_fine, const UnsteadyOptions& o) {
+  // The last periods, enough for both tests (the means' agreement and the spectrum's).
+  const size_t n_same = size_t(o.converged_periods) + 1;
+  const std::vector<PeriodWindow> all = lift_periods(h, std::max<size_t>(8, n_same), first_fine);
+  const std::vector<PeriodWindow> w(all.end() - std::min(all.size(), n_same), all.end());
+  if (w.size() < n_same) return false;
+  bool same = true;
+  for (size_t q = 1; q < w.size(); ++q) {
+    const double T0 = w[q - 1].t1 - w[q - 1].t0, T1 = w[q].t1 - w[q].t0;
+    same = same && std::fabs(w[q].C_L - w[q - 1].C_L) < o.mean_tol &&
+           std::fabs(w[q].C_D - w[q - 1].C_D) < o.mean_tol && std::fabs(T1 - T0) < o.mean_tol * T1;
+  }
+  return same && period_disagreement(h, all).empty();  // it reads the last 8 periods
+}
+
+/// Why a run may stop at time t (checked every 50 steps after earliest_stop): "steady" (forces_flat over
+/// the last steady_window), "periodic means converged" (periods_agree; with coefficients only), or "".
+std::string stop_reason(const UnsteadyResult& res, size_t first_fine, double t, const UnsteadyOptions& o,
+                        double q_ref, double D, double t_conv, bool freestream) {
+  if (forces_flat(res.history, first_fine, t - o.steady_window * t_conv, q_ref, D, freestream, o.steady_tol))
+    return "steady";
+  if (res.has_coefficients && periods_agree(res.history, first_fine, o)) return "periodic means converged";
+  return "";
+}
+
+/// The time before which a run never stops, s: o.t_min if set, else the warm start's end, else when the
+/// starting vortex has left (U > 0) and the impulsive transient is over: (R − a)/U + 10·D/U (10·D/U_ref
+/// without a freestream).
+double earliest_stop(const NsParams& p, const UnsteadyOptions& o, const PolarGrid& g, double t_fine,
+                     double U_ref) {
+  const double t_conv = 2.0 * p.a / U_ref;
+  return o.t_min >= 0.0  ? o.t_min
+         : t_fine > 0.0  ? t_fine
+         : p.U > 0.0     ? (g.outer_radius() - p.a) / U_ref + 10.0 * t_conv
+                         : 10.0 * t_conv;
+}
+
+/// The end of a run: the notes joined to the message, the period, means and amplitudes (or the last sample's).
+void summarise(UnsteadyResult& res, bool go_on, const std::string& warm_note, const std::string& dt_note,
+               size_t first_fine, double D, double U) {
+  if (!go_on) {
+    res.interrupted = true;
+    res.message = "interrupted";
+  }
+  if (!warm_note.empty()) res.message += "; " + warm_note;
+  if (!dt_note.empty()) res.message += "; " + dt_note;
+  res.periodic = !res.steady && analyse_periodic_from(res.history, first_fine, D, U, res);
+  if (res.periodic && !res.period_confirmed) {
+    res.converged = false;
+    res.message += "; " + res.period_note;
+  }
+  if (!res.periodic) {
+    const ForceSample& last = res.history.back();
+    res.C_L_mean = last.C_L, res.C_D_mean = last.C_D, res.C_M_mean = last.C_M, res.M_mean = last.M;
+  }
+}
+
+}  // namespace
+
+UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState start,
+                            std::vector<ForceSample> history) {
+  using clock = std::chrono::steady_clock;
+  const auto clock0 = clock::now();
+  const double U_ref = reference_speed(p);
   UnsteadyResult res;
   res.history = std::move(history);
   res.has_coefficients = p.U > 0.0;
   res.reference_speed = U_ref;
   const PolarGrid g = ns_grid(p);
   const double D = 2.0 * p.a, t_conv = D / U_ref;
-  std::string note, warm_note;
+  std::string warm_note;
   size_t first_fine = 0;  // convergence tests use samples from here on (the full grid's)
   const double t_start = start.t;
-
-  // Warm start on the grid with half the points each way.
-  if (o.coarse_start && res.history.empty() && start.t == 0.0 && p.n_theta >= 96 && g.n_r >= 32) {
-    NsParams pc = p;
-    pc.n_theta = (p.n_theta / 2 + 1) / 2 * 2;
-    pc.n_r = (g.n_r + 1) / 2;
-    pc.outer_over_a = g.outer_radius() / p.a;
-    const PolarGrid gc = ns_grid(pc);
-    NsState sc;
-    sc.zeta = interpolate(g, start.zeta, gc);
-    sc.psi = interpolate(g, start.psi, gc);
-    sc.Gamma_R = start.Gamma_R;
-    UnsteadyOptions oc = o;
-    oc.coarse_start = false;
-    oc.mean_tol = 10.0 * o.mean_tol;
-    oc.steady_tol = 10.0 * o.steady_tol;
-    oc.on_step = nullptr;
-    UnsteadyResult rc = run_unsteady(pc, oc, std::move(sc));
-    res.coarse_steps = rc.steps;
-    res.steps += rc.steps;
-    if (o.steps_taken) *o.steps_taken = res.steps;
-    res.times += rc.times;
-    if (rc.ok && rc.state.t < o.t_end) {
-      NsState s;
-      s.t = rc.state.t;
-      s.Gamma_R = rc.state.Gamma_R;
-      s.zeta = interpolate(gc, rc.state.zeta, g);
-      s.psi = interpolate(gc, rc.state.psi, g);
-      const NsOperator op0(p, choose_time_step(p, g, s, nullptr));
-      op0.close_wall(s.psi, s.zeta, s.Gamma_R);
-      start = std::move(s);
-      res.history = std::move(rc.history);
-      first_fine = res.history.size();
-      res.t_fine = start.t;
-      warm_note = "warm start on " + std::to_string(gc.n_r) + " x " + std::to_string(gc.n_theta) +
-                  " to t = " + std::to_string(start.t) + " s (" + rc.message + ")";
-    } else {
-      warm_note = "warm start skipped (" + rc.message + ")";
-    }
-  }
+  if (o.coarse_start && res.history.empty() && start.t == 0.0 && p.n_theta >= 96 && g.n_r >= 32)
+    warm_note = warm_start(p, o, g, start, res, first_fine);
 
   std::string dt_note;
   double dt = choose_time_step(p, g, start, &dt_note);
   auto op = std::make_unique<NsOperator>(p, dt);
   NsState cur = std::move(start), nxt;
-  const double q_ref = 0.5 * o.rho * U_ref * U_ref;
+  const double q_ref = 0.5 * o.rho * U_ref * U_ref;  // ½ρU_ref², Pa
   // Record a state's forces (a resumed history already holds its first sample); false: asked to stop.
-  auto sample = [&](const NsState& s) {
-    const auto c0 = clock::now();
+  auto forces = [&](const NsState& s) {
+    ScopedTimer timer(&res.times.forces);
     const ViscousForces f = viscous_forces(g, p, o.rho, s);
     if (res.history.empty() || s.t > res.history.back().t) res.history.push_back(force_sample(s.t, f));
-    res.times.forces += std::chrono::duration<double>(clock::now() - c0).count();
+    return f;
+  };
+  auto sample = [&](const NsState& s) {
+    const ViscousForces f = forces(s);
     return !o.on_step || o.on_step(s, f);
   };
   bool go_on = sample(cur);
-  // The starting vortex must have left (U > 0); a fresh start also waits out the impulsive transient.
-  const double t_min = o.t_min >= 0.0     ? o.t_min
-                       : res.t_fine > 0.0 ? res.t_fine
-                       : p.U > 0.0        ? (g.outer_radius() - p.a) / U_ref + 10.0 * t_conv
-                                          : 10.0 * t_conv;
+  const double t_min = earliest_stop(p, o, g, res.t_fine, U_ref);
   // Δt: the CFL floor of cfl_time_step covers the impulsive start; after 2 D/U_ref (or at once after a warm
   // start) Δt follows the measured CFL number (next_time_step); when magnus chose Δt, each step also
   // checks the previous step's rate (a time.dt of the user's is checked every 10 steps and refused by
@@ -207,62 +292,19 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
       if (o.steps_taken) *o.steps_taken = res.steps;
       go_on = sample(cur);
       if (cur.t < t_min || res.steps % 50 != 0) continue;
-      // Steady: forces flat over the window (on ½ρU_ref²D; torque on ½ρU_ref²D²).
-      const double t_from = cur.t - o.steady_window * t_conv;
-      if (t_from > 0.0 && (res.history.size() - first_fine) > 2 && res.history[first_fine].t <= t_from) {
-        double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-        for (size_t q = res.history.size(); q-- > first_fine && res.history[q].t >= t_from;) {
-          const ForceSample& x = res.history[q];
-          const double v[3] = {x.F_x / (q_ref * D), x.F_y / (q_ref * D), x.M / (q_ref * D * D)};
-          for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], v[c]), hi[c] = std::max(hi[c], v[c]);
-        }
-        if (hi[0] - lo[0] < o.steady_tol && hi[1] - lo[1] < o.steady_tol &&
-            (p.U > 0.0 || hi[2] - lo[2] < o.steady_tol)) {
-          res.steady = res.converged = true;
-          res.message = "steady";
-          break;
-        }
-      }
-      // Periodic: the last periods agree (full-grid periods only).
-      if (!res.has_coefficients) continue;
-      // The last periods, enough for both tests below (the means' agreement and the spectrum's).
-      const size_t n_same = size_t(o.converged_periods) + 1;
-      const std::vector<PeriodWindow> all = lift_periods(res.history, std::max<size_t>(8, n_same), first_fine);
-      const std::vector<PeriodWindow> w(all.end() - std::min(all.size(), n_same), all.end());
-      if (w.size() >= n_same) {
-        bool same = true;
-        for (size_t q = 1; q < w.size(); ++q) {
-          const double T0 = w[q - 1].t1 - w[q - 1].t0, T1 = w[q].t1 - w[q].t0;
-          same = same && std::fabs(w[q].C_L - w[q - 1].C_L) < o.mean_tol &&
-                 std::fabs(w[q].C_D - w[q - 1].C_D) < o.mean_tol && std::fabs(T1 - T0) < o.mean_tol * T1;
-        }
-        // …and the spectrum of the last periods peaks at the same frequency (a false period never stops it).
-        if (same && period_disagreement(res.history, all).empty()) {  // it reads the last 8 periods
-          res.converged = true;
-          res.message = "periodic means converged";
-          break;
-        }
+      const std::string stop = stop_reason(res, first_fine, cur.t, o, q_ref, D, t_conv, p.U > 0.0);
+      if (!stop.empty()) {
+        res.steady = stop == "steady";
+        res.converged = true;
+        res.message = stop;
+        break;
       }
     }
   } catch (const std::exception& e) {
     res.ok = false;
     res.message = res.error = e.what();
   }
-  if (!go_on) {
-    res.interrupted = true;
-    res.message = "interrupted";
-  }
-  if (!warm_note.empty()) res.message += "; " + warm_note;
-  if (!dt_note.empty()) res.message += "; " + dt_note;
-  res.periodic = !res.steady && analyse_periodic_from(res.history, first_fine, D, p.U, res);
-  if (res.periodic && !res.period_confirmed) {
-    res.converged = false;
-    res.message += "; " + res.period_note;
-  }
-  if (!res.periodic) {
-    const ForceSample& last = res.history.back();
-    res.C_L_mean = last.C_L, res.C_D_mean = last.C_D, res.C_M_mean = last.C_M, res.M_mean = last.M;
-  }
+  summarise(res, go_on, warm_note, dt_note, first_fine, D, p.U);
   res.dt = dt;
   res.state = std::move(cur);
   res.wall_seconds = std::chrono::duration<double>(clock::now() - clock0).count();

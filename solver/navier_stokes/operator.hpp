@@ -20,6 +20,7 @@
 // (AB2) by the exact balance dΓ_R/dt = ∮ (−u_r ζ + ν ∂ζ/∂r) R dθ. This is mode 0: the wall and the
 // vorticity inside decide it, nothing imposes it. Vorticity at R: ζ = 0 where u_r < 0 (inflow); where the
 // wake leaves, the convective condition ζ_t + (u_r/r) ζ_ξ = 0, i.e. ζ_t + (ψ_θ/J) ζ_ξ = 0 (explicit upwind).
+#include <chrono>
 #include <memory>
 #include <vector>
 
@@ -99,6 +100,24 @@ struct NsStepTimes {
     other += o.other, forces += o.forces, steps += o.steps;
     return *this;
   }
+};
+
+/// Adds the wall seconds of its lifetime to *sum (a part of a step's cost, NsStepTimes); null: no clock read.
+class ScopedTimer {
+ public:
+  explicit ScopedTimer(double* sum) : sum_(sum) {
+    if (sum_) t0_ = clock::now();
+  }
+  ~ScopedTimer() {
+    if (sum_) *sum_ += std::chrono::duration<double>(clock::now() - t0_).count();
+  }
+  ScopedTimer(const ScopedTimer&) = delete;
+  ScopedTimer& operator=(const ScopedTimer&) = delete;
+
+ private:
+  using clock = std::chrono::steady_clock;
+  double* sum_;
+  clock::time_point t0_;
 };
 
 /// Discrete operators for one (params, Δt): the grid, the Helmholtz and Poisson mode solvers and the

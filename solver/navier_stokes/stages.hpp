@@ -5,7 +5,6 @@
 // choice). Free functions of the grid, the parameters and row-major arrays (n_r, n_θ), ring 0 the wall,
 // ring N = n_r − 1 at R, uniform Δξ = h; Fourier-space stages work on the modes [kb, ke) of (n_r, m)
 // arrays (m = n_θ/2 + 1, FFTW's unnormalised r2c), so several threads may run them on disjoint ranges.
-#include <chrono>
 #include <complex>
 #include <vector>
 
@@ -14,24 +13,6 @@
 #include "solver/navier_stokes/operator.hpp"
 
 namespace magnus {
-
-/// Adds the wall seconds of its lifetime to *sum (a part of a step's cost, NsStepTimes); null: no clock read.
-class ScopedTimer {
- public:
-  explicit ScopedTimer(double* sum) : sum_(sum) {
-    if (sum_) t0_ = clock::now();
-  }
-  ~ScopedTimer() {
-    if (sum_) *sum_ += std::chrono::duration<double>(clock::now() - t0_).count();
-  }
-  ScopedTimer(const ScopedTimer&) = delete;
-  ScopedTimer& operator=(const ScopedTimer&) = delete;
-
- private:
-  using clock = std::chrono::steady_clock;
-  double* sum_;
-  clock::time_point t0_;
-};
 
 /// The periodic θ-neighbours of column j of n: east j + 1 and west j − 1.
 inline int east(int j, int n) { return j + 1 == n ? 0 : j + 1; }
