@@ -152,8 +152,8 @@ std::string warm_start(const NsParams& p, const UnsteadyOptions& o, const PolarG
   res.history = std::move(rc.history);
   first_fine = res.history.size();
   res.t_fine = start.t;
-  return "warm start on " + std::to_string(gc.n_r) + " x " + std::to_string(gc.n_theta) + " to t = " +
-         std::to_string(start.t) + " s (" + rc.message + ")";
+  return "warm start on " + std::to_string(gc.n_r) + " x " + std::to_string(gc.n_theta) +
+         " to t = " + std::to_string(start.t) + " s (" + rc.message + ")";
 }
 
 /// Steady: the forces of the samples from first_fine on flat over the window from t_from on (on ½ρU_ref²D,
@@ -171,7 +171,8 @@ bool forces_flat(const std::vector<ForceSample>& h, size_t first_fine, double t_
 }
 
 /// Periodic: the last converged_periods + 1 full-grid periods agree (means of C_L, C_D and lengths to
-/// mean_tol) and the spectrum of the last periods peaks at the same frequency (a false period never stops it).
+/// mean_tol) and the spectrum of the last periods peaks at the same frequency (a false period never
+/// stops it).
 bool periods_agree(const std::vector<ForceSample>& h, size_t first_fine, const UnsteadyOptions& o) {
   // The last periods, enough for both tests (the means' agreement and the spectrum's).
   const size_t n_same = size_t(o.converged_periods) + 1;
@@ -203,13 +204,14 @@ std::string stop_reason(const UnsteadyResult& res, size_t first_fine, double t, 
 double earliest_stop(const NsParams& p, const UnsteadyOptions& o, const PolarGrid& g, double t_fine,
                      double U_ref) {
   const double t_conv = 2.0 * p.a / U_ref;
-  return o.t_min >= 0.0  ? o.t_min
-         : t_fine > 0.0  ? t_fine
-         : p.U > 0.0     ? (g.outer_radius() - p.a) / U_ref + 10.0 * t_conv
-                         : 10.0 * t_conv;
+  return o.t_min >= 0.0 ? o.t_min
+         : t_fine > 0.0 ? t_fine
+         : p.U > 0.0    ? (g.outer_radius() - p.a) / U_ref + 10.0 * t_conv
+                        : 10.0 * t_conv;
 }
 
-/// The end of a run: the notes joined to the message, the period, means and amplitudes (or the last sample's).
+/// The end of a run: the notes joined to the message, the period, means and amplitudes (or the last
+/// sample's) found.
 void summarise(UnsteadyResult& res, bool go_on, const std::string& warm_note, const std::string& dt_note,
                size_t first_fine, double D, double U) {
   if (!go_on) {

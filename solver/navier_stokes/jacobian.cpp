@@ -105,7 +105,8 @@ void advection_entries(TripletSink& sink, const Unknowns& u, const NsParams& p, 
   AdvectionStride st[2];
   const int terms = advection_terms(p.advection_order, p.advection_order_xi, i, nr, st);
   const long rz = u.cz(i, j);
-  for (int q = 0; q < terms; ++q) {  // strides (s, sx) in θ and ξ, weight c (solver/navier_stokes/arakawa.hpp)
+  // Strides (s, sx) in θ and ξ, weight c (arakawa.hpp).
+  for (int q = 0; q < terms; ++q) {
     const int s = st[q].s_theta, sx = st[q].s_xi;
     const double cs = cN * st[q].weight;
     for (const ArakawaTerm& t : kArakawa) {

@@ -92,7 +92,8 @@ std::vector<double> SteadyJacobian::residual(const std::vector<double>& x) const
     for (int j = 0; j < n; ++j) {
       const int e = east(j, n), w = west(j, n);
       const size_t q = size_t(i) * n + j;
-      const SecondDifferences dp = second_differences(row(s.psi, i - 1), row(s.psi, i), row(s.psi, i + 1), j, e, w);
+      const SecondDifferences dp =
+          second_differences(row(s.psi, i - 1), row(s.psi, i), row(s.psi, i + 1), j, e, w);
       const SecondDifferences dz =
           second_differences(row(s.zeta, i - 1), row(s.zeta, i), row(s.zeta, i + 1), j, e, w);
       F[2 * q] = (dp.xi + q2 * dp.theta + Jh2 * Z(i, j)) * s_psi_;

@@ -43,7 +43,8 @@ void plan_fields(NsOperator::Impl& im, int nr, int n, int threads) {
   im.ring_r2c = fftw_plan_dft_r2c_1d(n, real.data(), s, flags);
   im.field_c2r = fftw_plan_many_dft_c2r(1, &n, nr, s, nullptr, 1, m, real.data(), nullptr, 1, n, flags);
   im.field_r2c = fftw_plan_many_dft_r2c(1, &n, nr, real.data(), nullptr, 1, n, s, nullptr, 1, m, flags);
-  if (!im.ring_r2c || !im.field_c2r || !im.field_r2c) throw std::runtime_error("NsOperator: FFTW planning failed");
+  if (!im.ring_r2c || !im.field_c2r || !im.field_r2c)
+    throw std::runtime_error("NsOperator: FFTW planning failed");
 }
 
 /// The wall closure's influence data. φ_k: Helmholtz response to unit wall vorticity in mode k. χ_k: ψ of
@@ -95,11 +96,12 @@ void plan_step(NsOperator::Impl& im, int nr, int n, int threads) {
     im.ring_end.push_back(re);
     const int count = re - rb;
     auto* zh = reinterpret_cast<fftw_complex*>(b.zeta_hat.p + size_t(rb) * m);
-    im.part_r2c.push_back(
-        fftw_plan_many_dft_r2c(1, &n, count, b.f.p + size_t(rb) * n, nullptr, 1, n, zh, nullptr, 1, m, flags));
+    im.part_r2c.push_back(fftw_plan_many_dft_r2c(1, &n, count, b.f.p + size_t(rb) * n, nullptr, 1, n, zh,
+                                                 nullptr, 1, m, flags));
     im.part_c2r.push_back(fftw_plan_many_dft_c2r(1, &n, count, zh, nullptr, 1, m, b.zeta.p + size_t(rb) * n,
                                                  nullptr, 1, n, flags));
-    if (!im.part_r2c.back() || !im.part_c2r.back()) throw std::runtime_error("NsOperator: FFTW planning failed");
+    if (!im.part_r2c.back() || !im.part_c2r.back())
+      throw std::runtime_error("NsOperator: FFTW planning failed");
   }
   im.step_ring_r2c = fftw_plan_dft_r2c_1d(n, b.ring.p, reinterpret_cast<fftw_complex*>(b.ring_hat.p), flags);
   if (!im.step_ring_r2c) throw std::runtime_error("NsOperator: FFTW planning failed");

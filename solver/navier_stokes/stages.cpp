@@ -58,7 +58,8 @@ void diffusion_rhs_ring(const PolarGrid& g, const NsParams& p, double h, double 
   }
 }
 
-double circulation_flux(const PolarGrid& g, const NsParams& p, double h, const double* psi, const double* zeta) {
+double circulation_flux(const PolarGrid& g, const NsParams& p, double h, const double* psi,
+                        const double* zeta) {
   const int n = g.n_theta;
   const double* z = zeta + size_t(g.n_r - 1) * n;
   const double* ps = psi + size_t(g.n_r - 1) * n;

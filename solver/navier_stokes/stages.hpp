@@ -23,8 +23,8 @@ inline int west(int j, int n) { return j == 0 ? n - 1 : j - 1; }
 struct SecondDifferences {
   double xi, theta;
 };
-inline SecondDifferences second_differences(const double* um, const double* u0, const double* up, int j, int e,
-                                            int w) {
+inline SecondDifferences second_differences(const double* um, const double* u0, const double* up, int j,
+                                            int e, int w) {
   return {up[j] - 2.0 * u0[j] + um[j], u0[e] - 2.0 * u0[j] + u0[w]};
 }
 
@@ -62,7 +62,8 @@ inline bool outflow(const NsParams& p, double p_theta) {
 }
 
 /// dΓ_R/dt = Σ_j (−ψ_θ ζ + ν ζ_ξ)|_R Δθ (ζ_ξ one-sided, second order) of the fields psi, zeta, m²/s².
-double circulation_flux(const PolarGrid& g, const NsParams& p, double h, const double* psi, const double* zeta);
+double circulation_flux(const PolarGrid& g, const NsParams& p, double h, const double* psi,
+                        const double* zeta);
 
 /// ζ on the outer ring a step dt later into out (n_θ values), 1/s: 0 on inflow; on outflow
 /// ζ_t + (ψ_θ/J) ζ_ξ = 0, explicit upwind.
@@ -75,7 +76,8 @@ void far_field_hat(const PolarGrid& g, const NsParams& p, double Gamma_R, std::c
 /// Helmholtz (the implicit diffusion) on modes [kb, ke): ζ̂* from f̂ in zeta_hat, ζ = 0 at the wall,
 /// ζ = outer_hat at R (zero_hat: m zeros).
 void helmholtz_modes(const ModeSolver& helmholtz, std::complex<double>* zeta_hat,
-                     const std::complex<double>* zero_hat, const std::complex<double>* outer_hat, int kb, int ke);
+                     const std::complex<double>* zero_hat, const std::complex<double>* outer_hat, int kb,
+                     int ke);
 
 /// Poisson on modes [kb, ke): ψ̂* of ψ_ξξ + ψ_θθ = −J ζ̂* into psi_hat, ψ = 0 at the wall, ψ_ξ = g_hat at R.
 void poisson_modes(const ModeSolver& poisson, const PolarGrid& g, const std::complex<double>* zeta_hat,
@@ -90,7 +92,8 @@ struct WallInfluence {
 
 /// The wall closure on modes [kb, ke): δ_k = (t_k − ψ̂*_{1,k})/denom_k with t_0 = target0 = −n_θ Δξ a²ω
 /// (Thom's ψ_ξ = −a²ω), t_k = 0 else; ζ̂ += δ_k φ_k, ψ̂ += δ_k χ_k on every ring. delta: m values.
-void wall_closure_modes(const WallInfluence& w, int n_r, int m, double target0, std::complex<double>* zeta_hat,
-                        std::complex<double>* psi_hat, std::complex<double>* delta, int kb, int ke);
+void wall_closure_modes(const WallInfluence& w, int n_r, int m, double target0,
+                        std::complex<double>* zeta_hat, std::complex<double>* psi_hat,
+                        std::complex<double>* delta, int kb, int ke);
 
 }  // namespace magnus

@@ -221,8 +221,8 @@ void advance(const NsOperator& op, const NsState& old, NsState& next, NsStepTime
   if (&old == &next) throw std::invalid_argument("advance: next may not alias old");
   NsOperator::Impl& im = *op.impl_;
   std::lock_guard<std::mutex> step_lock(im.step_mutex);
-  Step s{im, g, op.params(), *im.buffers, *im.pool, g.n_r, g.n_theta, g.n_theta / 2 + 1, op.dt(), op.d_xi(),
-         times != nullptr, {}};
+  Step s{im,      g,         op.params(),      *im.buffers, *im.pool, g.n_r, g.n_theta, g.n_theta / 2 + 1,
+         op.dt(), op.d_xi(), times != nullptr, {}};
   const Ab2 ab = ab2_weights(old, s.dt, size);
   double flux;
   {
