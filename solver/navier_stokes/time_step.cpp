@@ -83,6 +83,9 @@ void add_times(const StepClock& c, NsStepTimes& t) {
 
 /// What the parts of one step share: the operator's grid, factors, pool and buffers, and the step's clock.
 struct Step {
+  Step(const NsOperator& op, NsOperator::Impl& parts, bool timed_step)
+      : im(parts), g(op.grid()), p(op.params()), b(*parts.buffers), pool(*parts.pool), nr(g.n_r),
+        n(g.n_theta), m(n / 2 + 1), dt(op.dt()), h(op.d_xi()), timed(timed_step) {}
   const NsOperator::Impl& im;
   const PolarGrid& g;
   const NsParams& p;
@@ -221,8 +224,7 @@ void advance(const NsOperator& op, const NsState& old, NsState& next, NsStepTime
   if (&old == &next) throw std::invalid_argument("advance: next may not alias old");
   NsOperator::Impl& im = *op.impl_;
   std::lock_guard<std::mutex> step_lock(im.step_mutex);
-  Step s{im,      g,         op.params(),      *im.buffers, *im.pool, g.n_r, g.n_theta, g.n_theta / 2 + 1,
-         op.dt(), op.d_xi(), times != nullptr, {}};
+  Step s(op, im, times != nullptr);
   const Ab2 ab = ab2_weights(old, s.dt, size);
   double flux;
   {
