@@ -71,12 +71,10 @@ namespace json_parts {
 
 std::string key_of(const std::string& group) { return group.size() > 1 ? group.substr(1) : std::string(); }
 
-Json kj_ratios(std::optional<double> cl, std::optional<double> kj, std::optional<double> seed) {
+Json kj_ratios(std::optional<double> minus_1, std::optional<double> over_seed) {
   Json d;
-  d["cl_over_kj_minus_1"] =
-      quantity(cl && kj && *kj != 0.0 ? std::optional<double>(*cl / *kj - 1.0) : std::nullopt, "1");
-  d["kj_over_seed"] =
-      quantity(kj && seed && *seed != 0.0 ? std::optional<double>(*kj / *seed) : std::nullopt, "1");
+  d["cl_over_kj_minus_1"] = quantity(minus_1, "1");
+  d["kj_over_seed"] = quantity(over_seed, "1");
   return d;
 }
 
@@ -139,16 +137,12 @@ Json potential_derived(const FlowResult& r, Json& j) {
   d["nodes"] = count(r.grid.nodes());
   d["threads"] = count(r.info.threads);
   if (!r.info.grid_choice.empty()) d["grid_choice"] = r.info.grid_choice;
-  if (given)
-    d["alpha_circulation"] = quantity(
-        moving ? std::optional<double>(sc.Gamma() / (2.0 * M_PI * sc.radius * sc.speed)) : std::nullopt, "1");
+  const DerivedRatios ratios = derived_ratios(r);
+  if (given) d["alpha_circulation"] = quantity(ratios.alpha_Gamma, "1");
   // The seed's ratio is undefined without spin (the summary: "undefined (ω = 0)").
-  d.update(json_parts::kj_ratios(f.cl, f.cl_kutta_joukowski, spinning ? f.cl_seed_estimate : std::nullopt));
-  d["delta_p_over_seed"] = quantity(
-      f.delta_p_seed_estimate != 0.0 ? std::optional<double>(f.delta_p_top_bottom / f.delta_p_seed_estimate)
-                                     : std::nullopt,
-      "1");
-  d["magnus_S_seed"] = quantity(4.0 * sc.density * sc.radius * sc.radius, "kg/m");
+  d.update(json_parts::kj_ratios(ratios.cl_over_kj_minus_1, ratios.kj_over_seed));
+  d["delta_p_over_seed"] = quantity(ratios.delta_p_over_seed, "1");
+  d["magnus_S_seed"] = quantity(ratios.magnus_S_seed, "kg/m");
   // Real flow: the Reynolds number when a viscosity is given, and the nearest published viscous figure.
   if (sc.viscosity > 0.0) {
     d["viscosity"] = quantity(sc.viscosity, "m^2/s");
@@ -164,8 +158,7 @@ Json potential_derived(const FlowResult& r, Json& j) {
       q["reynolds"] = quantity(n->reynolds, "1");
       q["alpha"] = quantity(n->alpha, "1");
       q["cl"] = quantity(n->cl, "1");
-      q["cl_over_ideal"] =
-          quantity(n->alpha != 0.0 ? std::optional<double>(n->cl / (-2.0 * M_PI * n->alpha)) : std::nullopt, "1");
+      q["cl_over_ideal"] = quantity(share_of_ideal_lift(n->cl, n->alpha), "1");
       q["label"] = n->label;
       q["source"] = n->source;
     }
@@ -177,33 +170,26 @@ Json potential_derived(const FlowResult& r, Json& j) {
 
 /// The figures the navier-stokes summary derives from the stored ones.
 Json viscous_derived(const FlowResult& r) {
-  const Scene& sc = r.c.scene;
   const ViscousPart& v = *r.viscous;
   const PolarGrid& g = r.grid;
   Json d;
   d["nodes"] = count(g.nodes());
-  if (v.reynolds && *v.reynolds > 0.0 && g.r.size() > 1) {
-    const double cells = wall_cells(g, *v.reynolds, sc.spin_ratio());
+  const ViscousRatios ratios = viscous_ratios(r);
+  if (ratios.wall_cells) {
+    const double cells = *ratios.wall_cells;
     d["wall_cells"] = quantity(cells, "1");
     d["wall_cells_coarse"] = cells < kWallCellsForPercent;
     d["wall_cells_unresolved"] = cells < kWallCellsResolved;  // the forces are not meaningful
   }
-  const bool unit = v.time_unit > 0.0;
-  d["t_convective"] = quantity(unit ? std::optional<double>(v.t / v.time_unit) : std::nullopt, "1");
-  d["dt_convective"] = quantity(unit ? std::optional<double>(v.dt / v.time_unit) : std::nullopt, "1");
-  d["steps_per_second"] = quantity(
-      r.timing.solve_s > 0.0 ? std::optional<double>(double(v.steps - v.steps_resumed) / r.timing.solve_s)
-                             : std::nullopt,
-      "1/s");
+  d["t_convective"] = quantity(ratios.t_convective, "1");
+  d["dt_convective"] = quantity(ratios.dt_convective, "1");
+  d["steps_per_second"] = quantity(ratios.steps_per_second, "1/s");
   d["three_dimensional"] = v.reynolds && above_laminar_range(*v.reynolds);
   d["viscous_length_beyond_grid"] = v.reynolds && viscous_length_beyond_grid(g, *v.reynolds);
   if (v.steady_study) d["steady_study"] = json_parts::steady_study_json(*v.steady_study);
-  if (sc.speed <= 0.0) {  // still fluid: the potential vortex u_θ = a²ω/r is an exact viscous solution
-    const double nu = v.viscosity > 0.0 ? v.viscosity : sc.viscosity;
-    const double exact = -4.0 * M_PI * sc.density * nu * sc.radius * sc.radius * sc.spin;
-    d["torque_potential_vortex"] = quantity(exact, "N*m/m");
-    d["torque_over_potential_vortex_minus_1"] =
-        quantity(exact != 0.0 ? std::optional<double>(v.torque_mean / exact - 1.0) : std::nullopt, "1");
+  if (ratios.torque_potential_vortex) {  // still fluid: the potential vortex u_θ = a²ω/r is exact
+    d["torque_potential_vortex"] = quantity(*ratios.torque_potential_vortex, "N*m/m");
+    d["torque_over_potential_vortex_minus_1"] = quantity(ratios.torque_over_potential_vortex_minus_1, "1");
   }
   return d;
 }
@@ -273,7 +259,7 @@ Json sweep_json(const SweepResult& s, const ViscousReference* ref, const std::ve
         q["reynolds"] = quantity(d.reynolds, "1");
         q["cl"] = quantity(pt.cl, "1");
         q["cd"] = quantity(pt.cd, "1");
-        q["cl_ideal"] = quantity(-2.0 * M_PI * pt.alpha, "1");
+        q["cl_ideal"] = quantity(cl_ideal(pt.alpha), "1");
         q["label"] = d.label;
         q["source"] = d.source;
         rows.push_back(std::move(q));

@@ -89,7 +89,9 @@ Json flow_groups(const ResultFile& f) {
       const Json& q = j["forces"].contains(k) ? j["forces"][k]["value"] : Json(nullptr);
       return q.is_number() ? std::optional<double>(q.get<double>()) : std::nullopt;
     };
-    j["derived"] = json_parts::kj_ratios(value("cl"), value("cl_kutta_joukowski"), value("cl_seed_estimate"));
+    j["derived"] =
+        json_parts::kj_ratios(cl_over_kj_minus_1(value("cl"), value("cl_kutta_joukowski")),
+                              kj_over_seed(value("cl_kutta_joukowski"), value("cl_seed_estimate")));
   }
   return j;
 }

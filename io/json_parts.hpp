@@ -4,6 +4,7 @@
 #include <string>
 
 #include "io/json_output.hpp"
+#include "postproc/derived.hpp"
 #include "postproc/navier_stokes/steady_study.hpp"
 
 namespace magnus::json_parts {
@@ -11,9 +12,9 @@ namespace magnus::json_parts {
 /// "/forces" → "forces"; "/" → "" (the top level).
 std::string key_of(const std::string& group);
 
-/// cl_over_kj_minus_1 = C_L/C_L,KJ − 1 and kj_over_seed = C_L,KJ/C_L,seed (each null when an input is
-/// undefined or a divisor is 0): the ratios the run summary and the compare table show.
-Json kj_ratios(std::optional<double> cl, std::optional<double> kj, std::optional<double> seed);
+/// cl_over_kj_minus_1 = C_L/C_L,KJ − 1 and kj_over_seed = C_L,KJ/C_L,seed (null when undefined; computed
+/// by postproc/derived.hpp): the ratios the run summary and the compare table show.
+Json kj_ratios(std::optional<double> cl_over_kj_minus_1, std::optional<double> kj_over_seed);
 
 /// A stagnation point: r in m and over a, θ in rad and degrees, on the surface or free.
 Json point_json(const StagnationPoint& p, double a);

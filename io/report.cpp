@@ -9,6 +9,7 @@
 #include "io/report_scene.hpp"
 #include "io/report_viscous.hpp"
 #include "io/text_format.hpp"
+#include "postproc/derived.hpp"
 
 namespace magnus {
 
@@ -60,9 +61,8 @@ std::string setup_lines(const FlowResult& r) {
   const bool given = sc.circulation_given, moving = sc.speed > 0.0;
   // α = aω/U is the spin's ratio; with a given Γ the flow has the effective α_Γ = Γ/(2πaU) instead.
   std::string alpha = moving ? num(sc.spin_ratio()) : "undefined (U = 0)";
-  if (given && moving)
-    alpha += fmt::format(", α_Γ = Γ/(2πaU) = {} (the given Γ sets the flow)",
-                         num(sc.Gamma() / (2.0 * M_PI * sc.radius * sc.speed)));
+  if (const auto alpha_Gamma = derived_ratios(r).alpha_Gamma)
+    alpha += fmt::format(", α_Γ = Γ/(2πaU) = {} (the given Γ sets the flow)", num(*alpha_Gamma));
   // The spin as given: in rev/min beside ω when cylinder.rpm set it.
   std::string s = summary_line(
       "case", fmt::format("a = {} m, ω = {} rad/s{}, U = {} m/s, α = aω/U = {}, ρ = {} kg/m³", num(sc.radius),
@@ -103,18 +103,19 @@ std::string lift_lines(const FlowResult& r) {
   s += summary_line("drag",
                     fmt::format("{} N/m along the freestream   (d'Alembert: 0)", num(f.drag, "{:.3g}")));
   if (!f.cl) return s + summary_line("C_L, C_D", "undefined (U = 0: no dynamic pressure to scale by)");
-  const double kj = *f.cl_kutta_joukowski, seed = *f.cl_seed_estimate;
+  const DerivedRatios d = derived_ratios(r);
+  s += summary_line("C_L",
+                    fmt::format("numeric {}   Kutta–Joukowski {}   seed estimate {}{}", num(*f.cl, "{:.10g}"),
+                                num(*f.cl_kutta_joukowski, "{:.10g}"),
+                                seed_defined(sc) ? num(*f.cl_seed_estimate, "{:.10g}") : "undefined (ω = 0)",
+                                given && spinning ? " (−4α: from ω, not from the given Γ)" : ""));
   s += summary_line(
-      "C_L", fmt::format("numeric {}   Kutta–Joukowski {}   seed estimate {}{}", num(*f.cl, "{:.10g}"),
-                         num(kj, "{:.10g}"), seed_defined(sc) ? num(seed, "{:.10g}") : "undefined (ω = 0)",
-                         given && spinning ? " (−4α: from ω, not from the given Γ)" : ""));
-  s += summary_line(
-      "",
-      fmt::format(
-          "numeric/KJ − 1 = {}   KJ/seed = {}", kj != 0 ? num(*f.cl / kj - 1, "{:.3e}") : "undefined (Γ = 0)",
-          !spinning ? "undefined (ω = 0)"
-          : given ? fmt::format("{} (= α_Γ·π/(2α): π/2 only when Γ = 2πa²ω)", num(kj / seed, "{:.6f}"))
-                  : fmt::format("{} (π/2 = {:.6f})", num(kj / seed, "{:.6f}"), M_PI / 2)));
+      "", fmt::format("numeric/KJ − 1 = {}   KJ/seed = {}",
+                      d.cl_over_kj_minus_1 ? num(*d.cl_over_kj_minus_1, "{:.3e}") : "undefined (Γ = 0)",
+                      !d.kj_over_seed ? "undefined (ω = 0)"
+                      : given         ? fmt::format("{} (= α_Γ·π/(2α): π/2 only when Γ = 2πa²ω)",
+                                                    num(*d.kj_over_seed, "{:.6f}"))
+                              : fmt::format("{} (π/2 = {:.6f})", num(*d.kj_over_seed, "{:.6f}"), M_PI / 2)));
   return s + summary_line("C_D", num(*f.cd, "{:.3e}"));
 }
 
@@ -128,8 +129,9 @@ std::string pressure_lines(const FlowResult& r) {
       fmt::format("numeric {} Pa   exact 4ρUΓ/(2πa) = {} Pa   seed 2ρUaω = {}",
                   num(f.delta_p_top_bottom, "{:.8g}"), num(f.delta_p_top_bottom_exact, "{:.8g}"),
                   seed_defined(sc) ? num(f.delta_p_seed_estimate, "{:.8g}") + " Pa" : "undefined (ω = 0)"));
-  if (f.delta_p_seed_estimate != 0.0) {
-    const double ratio = f.delta_p_top_bottom / f.delta_p_seed_estimate;
+  const DerivedRatios d = derived_ratios(r);
+  if (d.delta_p_over_seed) {
+    const double ratio = *d.delta_p_over_seed;
     s += summary_line(
         "", given ? fmt::format("numeric/seed = {}: the given Γ, not the spin, sets ΔP (exact 2α_Γ/α)",
                                 num(ratio, "{:.6f}"))
@@ -140,13 +142,12 @@ std::string pressure_lines(const FlowResult& r) {
       !given     ? fmt::format("exact 2πρa² = {} kg/m", fmt_opt(f.magnus_S_exact, "{:.8g}"))
       : spinning ? fmt::format("exact ρΓ/ω = {} kg/m (the given Γ)", fmt_opt(f.magnus_S_exact, "{:.8g}"))
                  : "exact ρΓ/ω = undefined (ω = 0)";
-  return s +
-         summary_line("Magnus S",
-                      fmt::format("numeric {}{}   {}   seed 4ρa² = {} kg/m", fmt_opt(f.magnus_S, "{:.8g}"),
-                                  f.magnus_S ? " kg/m"
-                                  : !moving  ? " (U = 0)"
-                                             : " (ω = 0)",
-                                  s_exact, num(4.0 * sc.density * sc.radius * sc.radius, "{:.8g}")));
+  return s + summary_line("Magnus S", fmt::format("numeric {}{}   {}   seed 4ρa² = {} kg/m",
+                                                  fmt_opt(f.magnus_S, "{:.8g}"),
+                                                  f.magnus_S ? " kg/m"
+                                                  : !moving  ? " (U = 0)"
+                                                             : " (ω = 0)",
+                                                  s_exact, num(d.magnus_S_seed, "{:.8g}")));
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "io/reference_file.hpp"
 #include "io/report.hpp"
 #include "io/rotor_data.hpp"
+#include "postproc/derived.hpp"
 #include "postproc/scene_forces.hpp"
 
 namespace magnus {
@@ -121,16 +122,16 @@ std::string inviscid_bound_lines(const FlowResult& r) {
                     "and some drag");
   const ViscousReference* ref = shipped_reference();
   if (!ref) return s + summary_line("", "viscous reference: the data file cannot be read");
-  if (const auto n = nearest_reference(sc, *ref))
+  if (const auto n = nearest_reference(sc, *ref)) {
+    const std::optional<double> share = share_of_ideal_lift(n->cl, n->alpha);
     s += summary_line(
         "", fmt::format("viscous reference at Re = {}, α = {}: C_L = {} = {} of −2πα ({}, {}){}",
                         num(n->reynolds), num(n->alpha), num(n->cl, "{:.4g}"),
-                        n->alpha != 0.0 ? num(n->cl / (-2.0 * M_PI * n->alpha), "{:.3f}") : "—",
-                        who(n->label), n->source,
+                        share ? num(*share, "{:.3f}") : "—", who(n->label), n->source,
                         sc.viscosity > 0.0 && std::fabs(std::log(sc.reynolds() / n->reynolds)) > std::log(2.0)
                             ? fmt::format(" — not this Re ({})", num(sc.reynolds(), "{:.3g}"))
                             : ""));
-  else {
+  } else {
     double amax = 0.0;
     std::string res;
     for (const auto& d : ref->datasets) {

@@ -13,6 +13,7 @@
 #include "io/report_scene.hpp"
 #include "io/report_steady.hpp"
 #include "io/text_format.hpp"
+#include "postproc/derived.hpp"
 #include "postproc/navier_stokes/resolution.hpp"
 #include "postproc/navier_stokes/run.hpp"
 
@@ -83,18 +84,17 @@ std::string run_text(const FlowResult& r) {
   const ViscousPart& v = *r.viscous;
   std::string s;
   auto line = [&s](const std::string& label, const std::string& text) { s += labelled(label, text); };
-  const double unit = v.time_unit;
-  const long steps_here = v.steps - v.steps_resumed;  // this run's
-  const double steps_per_s = r.timing.solve_s > 0.0 ? double(steps_here) / r.timing.solve_s : 0.0;
+  const ViscousRatios ratios = viscous_ratios(r);
+  const double steps_per_s = ratios.steps_per_second.value_or(0.0);  // this run's steps
   const std::string phases = phases_text(v);
   if (v.newton)
     line("run", fmt::format("steady state by Newton's method, {} ({:.0f} ms){}", wall(r.timing.total_s),
                             1e3 * r.timing.total_s, phases.empty() ? "" : ": " + phases));
   else
     line("run", fmt::format("t = {} s = {} {}, {} steps{} of Δt = {} s ({} {}), {} ({:.0f} steps/s)",
-                            num(v.t), num(v.t / unit, "{:.5g}"), time_unit_name(sc), v.steps,
+                            num(v.t), fmt_opt(ratios.t_convective, "{:.5g}"), time_unit_name(sc), v.steps,
                             v.steps_resumed > 0 ? fmt::format(" ({} before --resume)", v.steps_resumed) : "",
-                            num(v.dt, "{:.4g}"), num(v.dt / unit, "{:.4g}"), time_unit_name(sc),
+                            num(v.dt, "{:.4g}"), fmt_opt(ratios.dt_convective, "{:.4g}"), time_unit_name(sc),
                             wall(r.timing.total_s), steps_per_s));
   if (!v.newton && (v.newton_seconds || v.stability_seconds)) line("", "time: " + phases);
   line("", fmt::format("stopped: {}{}", v.status, v.partial ? " — a PARTIAL result (the file says so)" : ""));
@@ -162,9 +162,10 @@ std::string figures_text(const FlowResult& r, bool unresolved) {
   line("torque", fmt::format("{} N·m/m {}, spin power −Mω = {} W/m", num(v.torque_mean, "{:.6g}"), kind,
                              num(v.spin_power_mean, "{:.6g}")));
   if (!moving) {  // still fluid: the potential vortex u_θ = a²ω/r is an exact viscous solution too
-    const double exact = -4.0 * M_PI * sc.density * sc.viscosity * sc.radius * sc.radius * sc.spin;
+    const ViscousRatios ratios = viscous_ratios(r);
     line("", fmt::format("steady potential vortex: −4πμa²ω = {} N·m/m (this run: {:+.2f}%)",
-                         num(exact, "{:.6g}"), exact != 0.0 ? 100.0 * (v.torque_mean / exact - 1.0) : 0.0));
+                         num(*ratios.torque_potential_vortex, "{:.6g}"),
+                         100.0 * ratios.torque_over_potential_vortex_minus_1.value_or(0.0)));
   }
   return s;
 }
@@ -221,10 +222,6 @@ std::string findings_text(const FlowResult& r) {
 
 bool above_laminar_range(double reynolds) { return reynolds > kReynolds3D * (1.0 + 1e-9); }
 
-double wall_cells(const PolarGrid& g, double reynolds, double alpha) {
-  return (2.0 * g.a / std::sqrt(reynolds * (1.0 + alpha * alpha))) / (g.r[1] - g.r[0]);
-}
-
 bool viscous_length_beyond_grid(const PolarGrid& g, double reynolds) {
   return reynolds > 0.0 && 2.0 * g.a / reynolds > g.outer_radius();
 }
@@ -237,7 +234,7 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
   const Scene& sc = c.scene;
   std::string s = fmt::format("magnus {} — {}\n", MAGNUS_VERSION, c.title);
   // Forces that mean nothing are said so first, before any figure could be read as a finding.
-  const double cells = v.reynolds && *v.reynolds > 0.0 ? wall_cells(g, *v.reynolds, sc.spin_ratio()) : 1e300;
+  const double cells = viscous_ratios(r).wall_cells.value_or(1e300);
   const bool unresolved = cells < kWallCellsResolved;
   const std::string raise = cells < kWallCellsForPercent ? resolving_text(c) : std::string();
   if (unresolved)

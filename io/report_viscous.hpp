@@ -28,10 +28,6 @@ constexpr double kWallCellsForTenPercent = 5.0;
 /// are not meaningful: n_θ = 8 at Re 200, α 6 (0.04 cells) gave C_L of the wrong sign, Re = 1e9 C_D 0.00001.
 constexpr double kWallCellsResolved = 1.0;
 
-/// Cells of the first ring across the boundary layer's thickness D/√(Re(1 + α²)) (spin thins it where the
-/// wall moves against the stream): (2a/√(Re(1 + α²)))/(r_1 − r_0). Needs Re > 0 and two rings.
-double wall_cells(const PolarGrid& g, double reynolds, double alpha);
-
 /// R/a below which the summary notes that the outer boundary is close for a wake (St moves by more than 1%,
 /// the mean forces by 1–9% below 20a). At Re 100, α = 1 on the
 /// default grid, against R = 100a: St −0.7% at 50a, −2.6% at 30a, −6% at 20a (C_D −1.8%), −18% at 10a
