@@ -188,12 +188,11 @@ std::string findings_text(const FlowResult& r) {
                               ? fmt::format("L/D = {:.4f} (steady)", *v.recirculation_length)
                               : std::string("none (no bubble behind the body; steady)"));
   s += steady_study_text(v);
-  if (v.eigenvalue_real && v.eigenvalue_imag)
+  if (const auto st = viscous_ratios(r).eigen_strouhal; v.eigenvalue_real && v.eigenvalue_imag)
     line("stability", fmt::format("steady state's leading eigenvalue λ·{} = {:+.5f} {:+.5f}i ({}; St {})",
                                   time_unit_name(sc), *v.eigenvalue_real, *v.eigenvalue_imag,
                                   *v.eigenvalue_real < 0.0 ? "stable" : "unstable: it sheds",
-                                  moving ? fmt::format("{:.4f}", std::fabs(*v.eigenvalue_imag) / (2.0 * M_PI))
-                                         : std::string("undefined (U = 0)")));
+                                  st ? fmt::format("{:.4f}", *st) : std::string("undefined (U = 0)")));
   if (v.reynolds && above_laminar_range(*v.reynolds))
     line("note",
          fmt::format("Re = {:.6g} > {:.0f}: real flow past a cylinder is three-dimensional there; this is "

@@ -39,6 +39,7 @@ ViscousRatios viscous_ratios(const FlowResult& r) {
     d.t_convective = v.t / v.time_unit;
     d.dt_convective = v.dt / v.time_unit;
   }
+  if (v.eigenvalue_imag && sc.speed > 0.0) d.eigen_strouhal = std::fabs(*v.eigenvalue_imag) / (2.0 * M_PI);
   if (r.timing.solve_s > 0.0) d.steps_per_second = double(v.steps - v.steps_resumed) / r.timing.solve_s;
   if (sc.speed <= 0.0) {  // still fluid: the potential vortex u_θ = a²ω/r is an exact viscous solution
     const double exact = torque_potential_vortex(sc, v.viscosity > 0.0 ? v.viscosity : sc.viscosity);

@@ -23,6 +23,8 @@ struct ViscousRatios {
   std::optional<double> t_convective;      ///< t/(D/U_ref), 1 (undefined when D/U_ref = 0)
   std::optional<double> dt_convective;     ///< Δt/(D/U_ref), 1 (undefined when D/U_ref = 0)
   std::optional<double> steps_per_second;  ///< this run's steps/solve time, 1/s (undefined without one)
+  /// Strouhal number of the leading stability mode, |Im λ|/(2π) with λ in U/D, 1 (U > 0 only).
+  std::optional<double> eigen_strouhal;
   /// The steady potential vortex's torque −4πρνa²ω, N·m/m (still fluid, U = 0, only).
   std::optional<double> torque_potential_vortex;
   /// M̄/(−4πρνa²ω) − 1, 1 (U = 0 and ω ≠ 0 only).

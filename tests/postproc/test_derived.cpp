@@ -73,3 +73,33 @@ TEST_CASE("the ideal lift −2πα, its share, and the potential vortex's torque
   sc.spin = 3.0;
   CHECK(torque_potential_vortex(sc, 0.01) == Approx(-4.0 * M_PI * 2.0 * 0.01 * 0.25 * 3.0).epsilon(1e-15));
 }
+
+TEST_CASE("viscous ratios: t and Δt over D/U, the mode's St = |Im λ|/(2π), the vortex torque's ratio",
+          "[postproc]") {
+  FlowResult r;
+  r.c = make_case(1.0, 32);
+  r.viscous = ViscousPart{};
+  ViscousPart& v = *r.viscous;
+  v.time_unit = 0.02;
+  v.t = 3.0;
+  v.dt = 0.001;
+  v.eigenvalue_imag = -0.5;
+  v.steps = 300;
+  v.steps_resumed = 100;
+  r.timing.solve_s = 4.0;
+  ViscousRatios d = viscous_ratios(r);
+  CHECK(*d.t_convective == 3.0 / 0.02);
+  CHECK(*d.dt_convective == 0.001 / 0.02);
+  CHECK(*d.eigen_strouhal == 0.5 / (2.0 * M_PI));
+  CHECK(*d.steps_per_second == 50.0);
+  CHECK_FALSE(d.wall_cells);               // no Re
+  CHECK_FALSE(d.torque_potential_vortex);  // U > 0
+  r.c.scene.speed = 0.0;                   // still fluid: no St, the potential vortex's torque
+  r.c.scene.spin = 2.0;
+  v.viscosity = 1e-6;
+  v.torque_mean = 1.5 * torque_potential_vortex(r.c.scene, 1e-6);
+  d = viscous_ratios(r);
+  CHECK_FALSE(d.eigen_strouhal);
+  CHECK(*d.torque_potential_vortex == torque_potential_vortex(r.c.scene, 1e-6));
+  CHECK(*d.torque_over_potential_vortex_minus_1 == Approx(0.5).epsilon(1e-14));
+}
