@@ -14,6 +14,7 @@
 #include "io/case_keys.hpp"
 #include "io/text_format.hpp"
 #include "physics/reference_data.hpp"
+#include "postproc/derived.hpp"
 
 namespace magnus {
 
@@ -196,7 +197,7 @@ std::string sweep_reference_text(const SweepResult& s, const ViscousReference& r
       if (p.alpha < lo - 1e-9 || p.alpha > hi + 1e-9) continue;
       rows += fmt::format("{:>8} {:>12} {:>12} {:>12}  {}, {}\n", cell(p.alpha, "{:.4g}"),
                           cell(p.cl, "{:.4f}"), p.cd ? cell(*p.cd, "{:.4f}") : std::string("—"),
-                          cell(-2 * M_PI * p.alpha, "{:.4f}"), d.label, d.source);
+                          cell(cl_ideal(p.alpha), "{:.4f}"), d.label, d.source);
     }
   if (rows.empty()) return {};
   return fmt::format(
