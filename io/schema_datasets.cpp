@@ -134,94 +134,117 @@ DatasetSpec snapshot(const char* name, const char* units, const char* descriptio
           Models::viscous};
 }
 
-std::vector<DatasetSpec> make_datasets() {
-  std::vector<DatasetSpec> table = {
-      {"/grid/r", "m", "radius r_i of grid row i (dimension scale of every field's first axis)",
-       DataShape::n_r, [](const FlowResult& r) { return r.grid.r; },
-       [](FlowResult& r, std::vector<double> v) { r.grid.r = std::move(v); }},
-      {"/grid/theta", "rad",
-       "angle θ_j of grid column j from the freestream direction, counter-clockwise (wind frame; dimension "
-       "scale)",
-       DataShape::n_theta, [](const FlowResult& r) { return r.grid.theta; },
-       [](FlowResult& r, std::vector<double> v) { r.grid.theta = std::move(v); }},
-      {"/grid/x",
-       "m",
-       "world x of each node: r cos(θ + direction)",
-       DataShape::grid,
-       [](const FlowResult& r) { return coordinate(r.grid, false, r.c.scene.direction_deg); },
-       {}},
-      {"/grid/y",
-       "m",
-       "world y of each node: r sin(θ + direction)",
-       DataShape::grid,
-       [](const FlowResult& r) { return coordinate(r.grid, true, r.c.scene.direction_deg); },
-       {}},
-      field("psi", "m^2/s", "stream function ψ", &Fields::psi),
-      field("u_r", "m/s", "radial velocity u_r = (1/r) ∂ψ/∂θ", &Fields::u_r),
-      field("u_theta", "m/s", "angular velocity u_θ = −∂ψ/∂r", &Fields::u_theta),
-      world_velocity("u_x", "velocity component along the world +x", false),
-      world_velocity("u_y", "velocity component along the world +y", true),
-      described_viscous(field("pressure", "Pa", "pressure p = p∞ + ½ρ(U² − |u|²)", &Fields::pressure),
-                        "pressure from the pressure Poisson equation ∇²p = 2ρ(∂u_x/∂x ∂u_y/∂y − ∂u_x/∂y "
-                        "∂u_y/∂x), fixed to p∞ far upstream"),
-      field("cp", "1", "pressure coefficient (p − p∞)/(½ρU²) (undefined when U = 0)", &Fields::cp),
-      only(Models::potential,
-           field("psi_exact", "m^2/s", "exact stream function on the same grid", &Fields::psi_exact)),
-      only(Models::potential, field("psi_error", "m^2/s", "ψ − ψ_exact", &Fields::psi_error)),
-      only(Models::viscous, field("vorticity", "1/s", "vorticity ζ = −∇²ψ", &Fields::vorticity)),
-      surface("theta", "rad", "angle of the body points (= /grid/theta)", &Surface::theta),
-      surface("u_theta", "m/s", "velocity on the body r = a", &Surface::u_theta),
-      surface("pressure", "Pa", "pressure on the body", &Surface::pressure),
-      surface("cp", "1", "pressure coefficient on the body (undefined when U = 0)", &Surface::cp),
-      only(Models::potential,
-           surface("cp_exact", "1", "exact pressure coefficient on the body (undefined when U = 0)",
-                   &Surface::cp_exact)),
-      only(Models::viscous,
-           surface("shear_stress", "Pa", "wall shear stress τ_w = μ(ζ_w − 2ω)", &Surface::shear_stress)),
-      only(Models::potential,
-           stagnation("r", "m", "radius of each stagnation point, numeric (sorted by θ)", false, false)),
-      only(Models::potential,
-           stagnation("theta", "rad",
-                      "angle of each stagnation point from the freestream direction, numeric, in [0, 2π)",
-                      false, true)),
-      only(Models::potential,
-           stagnation("r_exact", "m", "radius of each stagnation point, exact", true, false)),
-      only(Models::potential,
-           stagnation("theta_exact", "rad",
-                      "angle of each stagnation point from the freestream direction, exact, in [0, 2π)", true,
-                      true)),
-      only(Models::viscous,
-           {"/separation/theta", "rad",
-            "separation points: angles where the wall shear stress changes sign from + to − (the wall flow "
-             "leaves the wall); stagnation, reattachment and symmetry points are not listed", DataShape::points,
-            [](const FlowResult& r) { return r.viscous ? r.viscous->separation : std::vector<double>(); },
-            [](FlowResult& r, std::vector<double> v) { vis(r).separation = std::move(v); }}),
-      history("t", "s", "time of each step", &ForceSample::t),
-      {"/history/t_convective",
-       "1",
-       "time of each step in convective units D/U (D/(a|ω|) when U = 0)",
-       DataShape::steps,
-       [](const FlowResult& r) {
-         std::vector<double> v;
-         if (r.viscous)
-           for (const ForceSample& f : r.viscous->history) v.push_back(f.t / r.viscous->time_unit);
-         return v;
-       },
-       {},
-       Models::viscous},
-      history("cl", "1", "lift coefficient", &ForceSample::C_L),
-      history("cd", "1", "drag coefficient", &ForceSample::C_D),
-      history("cm", "1", "torque coefficient", &ForceSample::C_M),
-      history("lift", "N/m", "lift per unit span", &ForceSample::F_y),
-      history("drag", "N/m", "drag per unit span", &ForceSample::F_x),
-      history("torque", "N*m/m", "torque per unit span", &ForceSample::M),
-      snapshot("t", "s", "time of each stored state (output.snapshots), oldest first", nullptr),
-      snapshot("psi", "m^2/s", "stream function ψ of each stored state, (N, n_r, n_theta)", &Snapshot::psi),
-      snapshot("vorticity", "1/s", "vorticity ζ of each stored state, (N, n_r, n_theta)",
-               &Snapshot::vorticity),
+/// The rows of /grid: the radii, angles and Cartesian coordinates of the nodes.
+std::vector<DatasetSpec> grid_rows() {
+  return {
+    {"/grid/r", "m", "radius r_i of grid row i (dimension scale of every field's first axis)",
+     DataShape::n_r, [](const FlowResult& r) { return r.grid.r; },
+     [](FlowResult& r, std::vector<double> v) { r.grid.r = std::move(v); }},
+    {"/grid/theta", "rad",
+     "angle θ_j of grid column j from the freestream direction, counter-clockwise (wind frame; dimension "
+     "scale)",
+     DataShape::n_theta, [](const FlowResult& r) { return r.grid.theta; },
+     [](FlowResult& r, std::vector<double> v) { r.grid.theta = std::move(v); }},
+    {"/grid/x",
+     "m",
+     "world x of each node: r cos(θ + direction)",
+     DataShape::grid,
+     [](const FlowResult& r) { return coordinate(r.grid, false, r.c.scene.direction_deg); },
+     {}},
+    {"/grid/y",
+     "m",
+     "world y of each node: r sin(θ + direction)",
+     DataShape::grid,
+     [](const FlowResult& r) { return coordinate(r.grid, true, r.c.scene.direction_deg); },
+     {}},
   };
-  const std::vector<DatasetSpec> study = study_datasets();
-  table.insert(table.end(), study.begin(), study.end());
+}
+
+/// The rows of /fields: the selected fields on the grid.
+std::vector<DatasetSpec> field_rows() {
+  return {
+    field("psi", "m^2/s", "stream function ψ", &Fields::psi),
+    field("u_r", "m/s", "radial velocity u_r = (1/r) ∂ψ/∂θ", &Fields::u_r),
+    field("u_theta", "m/s", "angular velocity u_θ = −∂ψ/∂r", &Fields::u_theta),
+    world_velocity("u_x", "velocity component along the world +x", false),
+    world_velocity("u_y", "velocity component along the world +y", true),
+    described_viscous(field("pressure", "Pa", "pressure p = p∞ + ½ρ(U² − |u|²)", &Fields::pressure),
+                      "pressure from the pressure Poisson equation ∇²p = 2ρ(∂u_x/∂x ∂u_y/∂y − ∂u_x/∂y "
+                      "∂u_y/∂x), fixed to p∞ far upstream"),
+    field("cp", "1", "pressure coefficient (p − p∞)/(½ρU²) (undefined when U = 0)", &Fields::cp),
+    only(Models::potential,
+         field("psi_exact", "m^2/s", "exact stream function on the same grid", &Fields::psi_exact)),
+    only(Models::potential, field("psi_error", "m^2/s", "ψ − ψ_exact", &Fields::psi_error)),
+    only(Models::viscous, field("vorticity", "1/s", "vorticity ζ = −∇²ψ", &Fields::vorticity)),
+  };
+}
+
+/// The rows of /surface and /stagnation: values on the body and its stagnation points.
+std::vector<DatasetSpec> surface_rows() {
+  return {
+    surface("theta", "rad", "angle of the body points (= /grid/theta)", &Surface::theta),
+    surface("u_theta", "m/s", "velocity on the body r = a", &Surface::u_theta),
+    surface("pressure", "Pa", "pressure on the body", &Surface::pressure),
+    surface("cp", "1", "pressure coefficient on the body (undefined when U = 0)", &Surface::cp),
+    only(Models::potential,
+         surface("cp_exact", "1", "exact pressure coefficient on the body (undefined when U = 0)",
+                 &Surface::cp_exact)),
+    only(Models::viscous,
+         surface("shear_stress", "Pa", "wall shear stress τ_w = μ(ζ_w − 2ω)", &Surface::shear_stress)),
+    only(Models::potential,
+         stagnation("r", "m", "radius of each stagnation point, numeric (sorted by θ)", false, false)),
+    only(Models::potential,
+         stagnation("theta", "rad",
+                    "angle of each stagnation point from the freestream direction, numeric, in [0, 2π)",
+                    false, true)),
+    only(Models::potential,
+         stagnation("r_exact", "m", "radius of each stagnation point, exact", true, false)),
+    only(Models::potential,
+         stagnation("theta_exact", "rad",
+                    "angle of each stagnation point from the freestream direction, exact, in [0, 2π)", true,
+                    true)),
+    only(Models::viscous,
+         {"/separation/theta", "rad",
+          "separation points: angles where the wall shear stress changes sign from + to − (the wall flow "
+           "leaves the wall); stagnation, reattachment and symmetry points are not listed", DataShape::points,
+          [](const FlowResult& r) { return r.viscous ? r.viscous->separation : std::vector<double>(); },
+          [](FlowResult& r, std::vector<double> v) { vis(r).separation = std::move(v); }}),
+  };
+}
+
+/// The rows of /history and /snapshots: the force history and the stored states of a march.
+std::vector<DatasetSpec> history_rows() {
+  return {
+    history("t", "s", "time of each step", &ForceSample::t),
+    {"/history/t_convective",
+     "1",
+     "time of each step in convective units D/U (D/(a|ω|) when U = 0)",
+     DataShape::steps,
+     [](const FlowResult& r) {
+       std::vector<double> v;
+       if (r.viscous)
+         for (const ForceSample& f : r.viscous->history) v.push_back(f.t / r.viscous->time_unit);
+       return v;
+     },
+     {},
+     Models::viscous},
+    history("cl", "1", "lift coefficient", &ForceSample::C_L),
+    history("cd", "1", "drag coefficient", &ForceSample::C_D),
+    history("cm", "1", "torque coefficient", &ForceSample::C_M),
+    history("lift", "N/m", "lift per unit span", &ForceSample::F_y),
+    history("drag", "N/m", "drag per unit span", &ForceSample::F_x),
+    history("torque", "N*m/m", "torque per unit span", &ForceSample::M),
+    snapshot("t", "s", "time of each stored state (output.snapshots), oldest first", nullptr),
+    snapshot("psi", "m^2/s", "stream function ψ of each stored state, (N, n_r, n_theta)", &Snapshot::psi),
+    snapshot("vorticity", "1/s", "vorticity ζ of each stored state, (N, n_r, n_theta)",
+             &Snapshot::vorticity),
+  };
+}
+
+std::vector<DatasetSpec> make_datasets() {
+  std::vector<DatasetSpec> table;
+  for (const auto& part : {grid_rows(), field_rows(), surface_rows(), history_rows(), study_datasets()})
+    table.insert(table.end(), part.begin(), part.end());
   return table;
 }
 

@@ -4,10 +4,15 @@
 
 namespace magnus::schema_build {
 
-std::vector<AttrSpec> viscous_attributes() {
-  const char* P = "/parameters";
-  const char* F = "/forces";
-  const char* T = "/timing";
+namespace {
+
+// The groups the rows name (P, F, T).
+const char* const P = "/parameters";
+const char* const F = "/forces";
+const char* const T = "/timing";
+
+/// The viscous rows of /parameters: ν, Re, the time unit and the run's settings.
+std::vector<AttrSpec> viscous_parameter_rows() {
   return {
       vnum(P, "viscosity", "m^2/s", "kinematic viscosity ν", &ViscousPart::viscosity),
       vnum(P, "reynolds", "1", "Reynolds number U·2a/ν (undefined when U = 0)", &ViscousPart::reynolds),
@@ -26,6 +31,12 @@ std::vector<AttrSpec> viscous_attributes() {
                P, "advection_order_xi", "order of the advection term in ξ: 2 (Arakawa's Jacobian) or 4",
                [](const FlowResult& r) { return opt(double(r.c.solver.advection_order_xi)); },
                [](FlowResult& r, double v) { r.c.solver.advection_order_xi = checked_cast<int>(v, "advection_order_xi"); })),
+  };
+}
+
+/// The viscous rows of /forces: mean and last-step forces, the ideal lift beside them, the leading eigenvalue.
+std::vector<AttrSpec> viscous_force_rows() {
+  return {
       row(vnum(F, "cl_mean", "1", "mean lift coefficient (over the last shedding period, or the last step)",
                &ViscousPart::cl_mean),
           "C_L mean (viscous)", "cl_mean", "{:.6g}"),
@@ -72,6 +83,12 @@ std::vector<AttrSpec> viscous_attributes() {
            "relative residual ‖Jx − λMx‖/(‖Jx‖ + |λ|‖Mx‖) of the leading mode (time.mode = \"auto\")",
            &ViscousPart::eigenvalue_residual),
       vnum(F, "circulation_outer", "m^2/s", "circulation on the outer ring r = R", &ViscousPart::Gamma_R),
+  };
+}
+
+/// The viscous rows of /timing: the phases of the run and where it stopped.
+std::vector<AttrSpec> viscous_timing_rows() {
+  return {
       vnum(T, "newton_s", "s", "wall clock, Newton's method (time.mode \"steady\" or \"auto\")",
            &ViscousPart::newton_seconds),
       vnum(T, "stability_s", "s", "wall clock, the eigenvalue test (time.mode \"auto\")",
@@ -85,6 +102,15 @@ std::vector<AttrSpec> viscous_attributes() {
                [](const FlowResult& r) { return r.viscous ? opt(double(r.viscous->steps)) : std::nullopt; },
                [](FlowResult& r, double v) { vis(r).steps = checked_cast<long>(v, "steps"); })),
   };
+}
+
+}  // namespace
+
+std::vector<AttrSpec> viscous_attributes() {
+  std::vector<AttrSpec> table;
+  for (const auto& part : {viscous_parameter_rows(), viscous_force_rows(), viscous_timing_rows()})
+    table.insert(table.end(), part.begin(), part.end());
+  return table;
 }
 
 }  // namespace magnus::schema_build
