@@ -3,7 +3,7 @@
 lines in the given folders (default: every layer outside tests/). A brace-matching scan, not a parser:
 a function is a brace block at namespace depth whose opening line (or the three before it) holds ')'.
 Usage: python3 scripts/function_lengths.py [folder ...]   (run from the repository root)
-Declared tables (the schema's row lists in io/schema*.cpp) are expected in its output."""
+Today it lists nothing."""
 import sys, os, re
 N = 80
 roots = sys.argv[1:] or ['physics','mesh','solver','postproc','io','plot','app','python','base']
