@@ -31,6 +31,10 @@ std::vector<double> fd_weights(double x0, const std::vector<double>& x, int m) {
   return w;
 }
 
+std::array<double, 3> one_sided_weights(double h1, double h2) {
+  return {-(2.0 * h1 + h2) / (h1 * (h1 + h2)), (h1 + h2) / (h1 * h2), -h1 / (h2 * (h1 + h2))};
+}
+
 RadialDerivative radial_derivative(const std::vector<double>& xi, int order, bool odd_at_wall) {
   const int n = int(xi.size());
   order = std::min(order, n - 1);  // a grid with fewer rings than the stencil is wide: lower the order

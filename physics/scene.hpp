@@ -73,6 +73,11 @@ CourseForce course_force(double drag, double lift, double direction_deg, double 
 /// (x, y) turned CCW by `deg` degrees: (x cos − y sin, x sin + y cos); exact for multiples of 90°.
 WorldForce rotate_deg(double x, double y, double deg);
 
+/// The navier-stokes rings' clustering at the wall (grid.wall_refinement = Δξ_far/Δξ_wall, 1: uniform ξ)
+/// and the ξ-length over which the spacing relaxes to the far one (grid.wall_layer).
+constexpr double kNsDefaultWallRefinement = 1.0;
+constexpr double kNsDefaultWallLayer = 0.1;
+
 /// The grid asked for: the domain, the spacing and the resolution (or a tolerance that picks it).
 struct GridRequest {
   double outer_radius = 20.0;  ///< R/a, dimensionless
@@ -82,6 +87,8 @@ struct GridRequest {
   Spacing spacing = Spacing::geometric;
   bool spacing_given = false;  ///< grid.spacing was stated (file or --set): a tolerance search keeps it
   double tolerance = 0.0;      ///< target relative lift error; 0: the grid as given
+  double wall_refinement = kNsDefaultWallRefinement;  ///< Δξ_far/Δξ_wall ≥ 1 (navier-stokes only)
+  double wall_layer = kNsDefaultWallLayer;  ///< ξ-length of the spacing's transition (navier-stokes only)
 };
 
 /// The linear solver and the stencil (potential flow); the advection's order in θ (navier-stokes).

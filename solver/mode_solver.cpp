@@ -1,10 +1,12 @@
 #include "solver/mode_solver.hpp"
 
+#include "mesh/fd_weights.hpp"
 #include "solver/fft_modes.hpp"
 
 #include <fftw3.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <complex>
@@ -329,9 +331,8 @@ std::vector<double> ModeSolver::influence(int k) const {
 
 double ModeSolver::influence_wall_slope(int k) const {
   const std::vector<double> phi = influence(k);
-  const double h1 = d_xi_[0], h2 = d_xi_[1];
-  return -(2.0 * h1 + h2) / (h1 * (h1 + h2)) * phi[0] + (h1 + h2) / (h1 * h2) * phi[1] -
-         h1 / (h2 * (h1 + h2)) * phi[2];
+  const std::array<double, 3> w = one_sided_weights(d_xi_[0], d_xi_[1]);
+  return w[0] * phi[0] + w[1] * phi[1] + w[2] * phi[2];
 }
 
 }  // namespace magnus
