@@ -8,6 +8,7 @@
 #include <umfpack.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -118,22 +119,23 @@ void advection_entries(TripletSink& sink, const Unknowns& u, const NsParams& p, 
 }
 
 /// The ψ and ζ rows of the rings 1…n_r−2: the 5-point Laplacians, J ζ, and the advection's entries.
-void interior_rows(TripletSink& sink, const Unknowns& u, const PolarGrid& g, const NsParams& p, double h,
-                   double s_psi, double s_zeta) {
+void interior_rows(TripletSink& sink, const Unknowns& u, const PolarGrid& g, const NsParams& p, double s_psi,
+                   double s_zeta) {
   const int n = g.n_theta, iN = g.n_r - 1;
-  const double q2 = (h / g.d_theta) * (h / g.d_theta);
-  const double cN = -h * h / p.nu / (12.0 * g.d_theta * h) * s_zeta;  // ∂/∂(term) of −(h²/ν)·N, scaled
   for (int i = 1; i < iN; ++i) {
-    const double Jh2 = h * h * g.r[i] * g.r[i];
+    const XiFlux xf = xi_flux(g, i);  // the rows of ring i are scaled by h_i²
+    const double h = xf.h, q2 = (h / g.d_theta) * (h / g.d_theta), Jh2 = h * h * g.r[i] * g.r[i];
+    const double cN = -h * h / p.nu / (12.0 * g.d_theta * h) * s_zeta;  // ∂/∂(term) of −(h_i²/ν)·N, scaled
+    const double c0 = -xf.c_m - xf.c_p - 2.0 * q2;
     for (int j = 0; j < n; ++j) {
       const int e = u.wrap(j + 1), w = u.wrap(j - 1);
       const long rp = u.cp(i, j), rz = u.cz(i, j);
-      sink.add(rp, u.cp(i + 1, j), s_psi), sink.add(rp, u.cp(i - 1, j), s_psi);
-      sink.add(rp, u.cp(i, j), (-2.0 - 2.0 * q2) * s_psi);
+      sink.add(rp, u.cp(i + 1, j), xf.c_p * s_psi), sink.add(rp, u.cp(i - 1, j), xf.c_m * s_psi);
+      sink.add(rp, u.cp(i, j), c0 * s_psi);
       sink.add(rp, u.cp(i, e), q2 * s_psi), sink.add(rp, u.cp(i, w), q2 * s_psi);
       sink.add(rp, u.cz(i, j), Jh2 * s_psi);
-      sink.add(rz, u.cz(i + 1, j), s_zeta), sink.add(rz, u.cz(i - 1, j), s_zeta);
-      sink.add(rz, u.cz(i, j), (-2.0 - 2.0 * q2) * s_zeta);
+      sink.add(rz, u.cz(i + 1, j), xf.c_p * s_zeta), sink.add(rz, u.cz(i - 1, j), xf.c_m * s_zeta);
+      sink.add(rz, u.cz(i, j), c0 * s_zeta);
       sink.add(rz, u.cz(i, e), q2 * s_zeta), sink.add(rz, u.cz(i, w), q2 * s_zeta);
       if (!p.stokes) advection_entries(sink, u, p, g.n_r, i, j, cN);
     }
@@ -141,9 +143,11 @@ void interior_rows(TripletSink& sink, const Unknowns& u, const PolarGrid& g, con
 }
 
 /// The rows of the outer ring (ψ with the far field's ghost ring, ζ inflow/outflow) and of Γ_R (the flux).
-void outer_rows(TripletSink& sink, const Unknowns& u, const PolarGrid& g, const NsParams& p, double h,
-                double s_psi, double s_zeta, long gamma) {
+void outer_rows(TripletSink& sink, const Unknowns& u, const PolarGrid& g, const NsParams& p, double s_psi,
+                double s_zeta, long gamma) {
   const int n = g.n_theta, iN = g.n_r - 1;
+  const double h = g.d_xi(iN - 1);  // the outer ring's rows are scaled by Δξ_{N−1/2}²
+  const std::array<double, 3> wz = outer_slope_weights(g);
   const double dth = g.d_theta, q2 = (h / dth) * (h / dth), R = g.outer_radius();
   const double ff = h / (2.0 * M_PI * p.nu) * s_zeta * dth;  // the flux row's scale times Δθ
   for (int j = 0; j < n; ++j) {
@@ -160,9 +164,9 @@ void outer_rows(TripletSink& sink, const Unknowns& u, const PolarGrid& g, const 
     sink.add(rz, u.cz(iN - 1, j), out ? -s_zeta : 0.0);
     sink.add(gamma, u.cp(iN, e), -u.Z(iN, j) / (2.0 * dth) * ff);
     sink.add(gamma, u.cp(iN, w), u.Z(iN, j) / (2.0 * dth) * ff);
-    sink.add(gamma, u.cz(iN, j), (-p_theta + 1.5 * p.nu / h) * ff);
-    sink.add(gamma, u.cz(iN - 1, j), -2.0 * p.nu / h * ff);
-    sink.add(gamma, u.cz(iN - 2, j), 0.5 * p.nu / h * ff);
+    sink.add(gamma, u.cz(iN, j), (-p_theta + p.nu * wz[0]) * ff);
+    sink.add(gamma, u.cz(iN - 1, j), p.nu * wz[1] * ff);
+    sink.add(gamma, u.cz(iN - 2, j), p.nu * wz[2] * ff);
   }
 }
 
@@ -188,8 +192,8 @@ void SteadyJacobian::assemble(const std::vector<double>& x) {
     sink.add(u.cz(0, j), u.cp(1, j), s_psi_);
     sink.add(u.cz(0, j), u.cz(0, j), 0.5 * a2 * h * h * s_psi_);
   }
-  interior_rows(sink, u, grid_, p_, h, s_psi_, s_zeta_);
-  outer_rows(sink, u, grid_, p_, h, s_psi_, s_zeta_, size_ - 1);
+  interior_rows(sink, u, grid_, p_, s_psi_, s_zeta_);
+  outer_rows(sink, u, grid_, p_, s_psi_, s_zeta_, size_ - 1);
   if (!first && sink.k != Slot_.size()) throw std::logic_error("SteadyJacobian: the pattern changed");
   if (first) {
     triplet_pattern(size_, Ti_, Tj_, Ap_, Ai_, Map_);

@@ -73,12 +73,13 @@ NsState SteadyJacobian::unpack(const std::vector<double>& x) const {
 std::vector<double> SteadyJacobian::residual(const std::vector<double>& x) const {
   if (x.size() != size_t(size_)) throw std::invalid_argument("SteadyJacobian::residual: wrong size");
   const int nr = grid_.n_r, n = grid_.n_theta, iN = nr - 1;
-  const double h = h_, dth = grid_.d_theta, q2 = (h / dth) * (h / dth), R = grid_.outer_radius();
-  const double a2 = p_.a * p_.a, h2_nu = h * h / p_.nu;
+  const double dth = grid_.d_theta, R = grid_.outer_radius();
+  const double a2 = p_.a * p_.a, h = h_, hN = grid_.d_xi(iN - 1), q2N = (hN / dth) * (hN / dth);
   const NsState s = unpack(x);
   // The time step's stages without the time derivative: its advection, Laplacian and outer-ring flux.
+  // Each ring's rows are scaled by h_i² (ring_width; the outer ring's: Δξ_{N−1/2}²).
   std::vector<double> N(size_t(nr) * n);
-  advection_field(grid_, p_, h, s.psi.data(), s.zeta.data(), N.data());
+  advection_field(grid_, p_, s.psi.data(), s.zeta.data(), N.data());
   auto P = [&](int i, int j) { return s.psi[size_t(i) * n + j]; };
   auto Z = [&](int i, int j) { return s.zeta[size_t(i) * n + j]; };
   auto row = [n](const std::vector<double>& f, int i) { return f.data() + size_t(i) * n; };
@@ -88,14 +89,16 @@ std::vector<double> SteadyJacobian::residual(const std::vector<double>& x) const
     F[2 * j + 1] = (P(1, j) + 0.5 * a2 * h * h * Z(0, j) + h * a2 * p_.omega) * s_psi_;
   }
   for (int i = 1; i < iN; ++i) {
-    const double Jh2 = h * h * grid_.r[i] * grid_.r[i];
+    const XiFlux xf = xi_flux(grid_, i);
+    const double hi2 = xf.h * xf.h, q2 = hi2 / (dth * dth), Jh2 = hi2 * grid_.r[i] * grid_.r[i];
+    const double h2_nu = hi2 / p_.nu;
     for (int j = 0; j < n; ++j) {
       const int e = east(j, n), w = west(j, n);
       const size_t q = size_t(i) * n + j;
       const SecondDifferences dp =
-          second_differences(row(s.psi, i - 1), row(s.psi, i), row(s.psi, i + 1), j, e, w);
+          second_differences(row(s.psi, i - 1), row(s.psi, i), row(s.psi, i + 1), j, e, w, xf);
       const SecondDifferences dz =
-          second_differences(row(s.zeta, i - 1), row(s.zeta, i), row(s.zeta, i + 1), j, e, w);
+          second_differences(row(s.zeta, i - 1), row(s.zeta, i), row(s.zeta, i + 1), j, e, w, xf);
       F[2 * q] = (dp.xi + q2 * dp.theta + Jh2 * Z(i, j)) * s_psi_;
       F[2 * q + 1] = (dz.xi + q2 * dz.theta - h2_nu * N[q]) * s_zeta_;
     }
@@ -104,14 +107,14 @@ std::vector<double> SteadyJacobian::residual(const std::vector<double>& x) const
     const int e = east(j, n), w = west(j, n);
     const size_t q = size_t(iN) * n + j;
     const double g = p_.U * R * std::sin(grid_.theta[j]) - x.back() / (2.0 * M_PI);
-    F[2 * q] = (2.0 * (P(iN - 1, j) - P(iN, j)) + q2 * (P(iN, e) - 2.0 * P(iN, j) + P(iN, w)) +
-                h * h * R * R * Z(iN, j) + 2.0 * h * g) *
+    F[2 * q] = (2.0 * (P(iN - 1, j) - P(iN, j)) + q2N * (P(iN, e) - 2.0 * P(iN, j) + P(iN, w)) +
+                hN * hN * R * R * Z(iN, j) + 2.0 * hN * g) *
                s_psi_;
     const bool out = outflow(p_, psi_theta(row(s.psi, iN), j, n, dth));
     F[2 * q + 1] = (out ? Z(iN, j) - Z(iN - 1, j) : Z(iN, j)) * s_zeta_;
   }
-  const double flux = circulation_flux(grid_, p_, h, s.psi.data(), s.zeta.data());
-  F.back() = flux * h / (2.0 * M_PI * p_.nu) * s_zeta_;
+  const double flux = circulation_flux(grid_, p_, s.psi.data(), s.zeta.data());
+  F.back() = flux * hN / (2.0 * M_PI * p_.nu) * s_zeta_;
   return F;
 }
 

@@ -2,7 +2,9 @@
 // Steady states of the viscous model by Newton's method on the time stepper's own discrete equations.
 //
 // A state is a fixed point of advance() (with the AB2 history equal to the current advection) exactly when
-// it solves, on the log-polar grid of ns_grid(p) (ring 0 = wall, ring N = n_r−1 at R, uniform Δξ = h):
+// it solves, on the log-polar grid of ns_grid(p) (ring 0 = wall, ring N = n_r−1 at R; shown for uniform
+// Δξ = h: on a stretched ξ, h is Δξ_0 at the wall, inside the flux form of xi_flux with rows scaled by h_i²,
+// on ring N Δξ_{N−1/2}):
 //   wall ψ row        ψ_0j = 0
 //   wall ζ row        ψ_1j + (a²h²/2)·ζ_0j + h·a²ω = 0                      (Thom, the stepper's closure)
 //   rings 1…N−1, ζ    ν(ζ_ξξ + ζ_θθ) − N(ψ, ζ) = 0                          (5-point, Arakawa's N)

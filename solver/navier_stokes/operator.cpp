@@ -28,6 +28,9 @@ void check_params(const NsParams& p, double dt) {
   if (p.n_theta < 8 || p.n_theta % 2 != 0)
     throw std::invalid_argument("NsOperator: n_theta must be even and >= 8, got " +
                                 std::to_string(p.n_theta));
+  if (!(p.wall_refinement >= 1.0 && p.wall_refinement <= 100.0) || !(p.wall_layer > 0.0) ||
+      !finite(p.wall_layer))
+    throw std::invalid_argument("NsOperator: need 1 <= wall_refinement <= 100 and wall_layer > 0");
   if (!(dt > 0.0) || !finite(dt)) throw std::invalid_argument("NsOperator: dt must be positive and finite");
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // 2D incompressible laminar Navier–Stokes past the spinning cylinder, vorticity–streamfunction
-// on the log-polar grid ξ = ln(r/a) (geometric spacing, uniform Δξ), J = r²:
+// on the log-polar grid ξ = ln(r/a) (uniform Δξ, or rings clustered at the wall: ns_grid), J = r²:
 //     ψ_ξξ + ψ_θθ = −J ζ,     J ζ_t + ψ_θ ζ_ξ − ψ_ξ ζ_θ = ν (ζ_ξξ + ζ_θθ),     u_r = ψ_θ/r, u_θ = −ψ_ξ/r.
 //
 // Time step (AB2/CN): the advection N = ψ_θ ζ_ξ − ψ_ξ ζ_θ is Arakawa's Jacobian (energy and enstrophy
@@ -14,6 +14,7 @@
 // ζ_w^{n+1} is the unknown that makes it hold at t^{n+1}: per Fourier mode k, ζ^{n+1} = ζ* + ζ̂_w,k φ_k and
 // ψ^{n+1} = ψ* + ζ̂_w,k χ_k (φ_k: Helmholtz response to unit wall vorticity, χ_k: its ψ), so the closure is
 // one scalar per mode:  ζ̂_w,k = (−Δξ a²ω δ_k0 − ψ̂*_{1,k}) / (χ_k(ξ_1) + a²Δξ²/2).  Exact at every step.
+// Δξ here is the wall's spacing Δξ_0 = ξ_1 − ξ_0; inside, ξ-derivatives take the mode solver's flux form.
 //
 // Far field at R: ψ_ξ = U R sinθ − Γ_R/(2π) (Neumann: the freestream's tangential velocity, the normal
 // velocity free so the wake's displacement flux can leave), with Γ_R the circulation on r = R, advanced
@@ -45,6 +46,8 @@ struct NsParams {
   /// default is n_θ = 192 with cells 5/3 finer in ξ, Δξ = 2π/320: n_r = 236 at R = 100a.
   int n_r = 0;
   double radial_refinement = 5.0 / 3.0;  ///< Δθ/Δξ when n_r = 0 (1: square cells)
+  double wall_refinement = kNsDefaultWallRefinement;  ///< Δξ_far/Δξ_wall ≥ 1 (1: uniform ξ, today's geometric grid)
+  double wall_layer = kNsDefaultWallLayer;  ///< ξ-length over which Δξ relaxes from the wall's to the far value
   double dt = 0.0;                       ///< time step, s; 0: from the CFL number
   /// Target CFL number Δt·max(|ψ_θ|/(JΔξ) + |ψ_ξ|/(JΔθ)). The forces do not depend on it (CFL 0.35,
   /// 0.4, 0.5, 0.7 gave the same means to 1e-5 at Re 100, α = 1): the largest safe value below the limit.
@@ -133,6 +136,7 @@ class NsOperator {
   const NsParams& params() const { return p_; }
   const PolarGrid& grid() const { return grid_; }
   double dt() const { return dt_; }
+  /// Δξ_0 = ξ_1 − ξ_0, the wall's spacing (Thom's closure; every Δξ on a uniform ξ).
   double d_xi() const { return h_; }
 
   /// The closure: ζ_w (and ψ, from ζ with ψ = 0 on the wall and the far-field ψ_ξ = U R sinθ − Γ_R/2π)
@@ -152,6 +156,7 @@ class NsOperator {
 
 /// The grid of the parameters: geometric spacing; n_r = 0: the fewest rings with Δξ ≤ Δθ/radial_refinement
 /// (R as asked; radial_refinement ≤ 0 or 1 with n_r = 0: square cells, R rounded up to whole cells).
+/// wall_refinement > 1: the rings clustered at the wall (make_stretched_grid, Δ_f = Δθ/radial_refinement).
 PolarGrid ns_grid(const NsParams& p);
 
 /// One AB2/CN step of op.dt() from old to next (next may not alias old). Throws std::runtime_error when the

@@ -38,11 +38,13 @@ std::optional<cplx> uncovered(const std::vector<ShiftSearch>& searches, double u
 std::vector<double> mass_matrix(const NsParams& p, const SteadyJacobian& jac, const NsState& steady) {
   const PolarGrid& g = jac.grid();
   const int nr = g.n_r, n = g.n_theta;
-  const double h = jac.d_xi();
   std::vector<double> m(size_t(jac.size()), 0.0);
-  for (int i = 1; i < nr - 1; ++i)
+  for (int i = 1; i < nr - 1; ++i) {
+    const double h = g.ring_width(i);  // ring i's rows are scaled by h_i² (newton.cpp)
     for (int j = 0; j < n; ++j)
       m[2 * (size_t(i) * n + j) + 1] = jac.zeta_row_scale() * h * h * g.r[i] * g.r[i] / p.nu;
+  }
+  const double h = g.d_xi(nr - 2);  // the outer ring's spacing
   // The stepper's outer ring: ζ_t = −(ψ_θ/R²)(ζ_N − ζ_{N−1})/h where the wake leaves (row s_ζ(ζ_N −
   // ζ_{N−1})), and dΓ_R/dt = the flux (row s_ζ·h/(2πν)·flux): dynamic rows, slow ones. Treated as algebraic
   // they would tie Γ_R to the tiny far-field vorticity at once, which the stepper does not.

@@ -4,20 +4,21 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mesh/fd_weights.hpp"
 #include "solver/navier_stokes/arakawa.hpp"
 
 namespace magnus {
 
 using cplx = std::complex<double>;
 
-double advection_ring(const PolarGrid& g, const NsParams& p, double h, const double* psi, const double* zeta,
-                      int i, double* N) {
+double advection_ring(const PolarGrid& g, const NsParams& p, const double* psi, const double* zeta, int i,
+                      double* N) {
   const int nr = g.n_r, n = g.n_theta;
   if (p.stokes) {
     std::fill(N, N + n, 0.0);
     return 0.0;
   }
-  const double scale = 1.0 / (12.0 * g.d_theta * h);
+  const double scale = 1.0 / (12.0 * g.d_theta * g.ring_width(i));
   const int order = p.advection_order, order_xi = p.advection_order_xi;
   const double kappa = advection_factor(order), kappa_xi = advection_factor(order_xi);
   const double *pm = psi + size_t(i - 1) * n, *p0 = psi + size_t(i) * n, *pp = psi + size_t(i + 1) * n;
@@ -32,25 +33,26 @@ double advection_ring(const PolarGrid& g, const NsParams& p, double h, const dou
   return ring_rate;
 }
 
-void advection_field(const PolarGrid& g, const NsParams& p, double h, const double* psi, const double* zeta,
-                     double* N, double* rate) {
+void advection_field(const PolarGrid& g, const NsParams& p, const double* psi, const double* zeta, double* N,
+                     double* rate) {
   const int nr = g.n_r, n = g.n_theta;
   double r = std::fabs(p.omega) / g.d_theta;  // the wall ring: ψ_θ = 0, ψ_ξ = −a²ω
   std::fill(N, N + n, 0.0);
   std::fill(N + size_t(nr - 1) * n, N + size_t(nr) * n, 0.0);
   for (int i = 1; i < nr - 1; ++i)
-    r = std::max(r, ring_cfl_rate(g, h, i, advection_ring(g, p, h, psi, zeta, i, N + size_t(i) * n)));
+    r = std::max(r, ring_cfl_rate(g, i, advection_ring(g, p, psi, zeta, i, N + size_t(i) * n)));
   if (rate) *rate = r;
 }
 
-void diffusion_rhs_ring(const PolarGrid& g, const NsParams& p, double h, double dt, const double* zeta, int i,
+void diffusion_rhs_ring(const PolarGrid& g, const NsParams& p, double dt, const double* zeta, int i,
                         const double* N, const double* N_prev, double w1, double w0, double* f, double& acc) {
   const int n = g.n_theta;
   const double *zm = zeta + size_t(i - 1) * n, *z0 = zeta + size_t(i) * n, *zp = zeta + size_t(i + 1) * n;
   const double sigma = 2.0 * g.r[i] * g.r[i] / (p.nu * dt);
-  const double inv_h2 = 1.0 / (h * h), inv_t2 = 1.0 / (g.d_theta * g.d_theta), two_nu = 2.0 / p.nu;
+  const XiFlux x = xi_flux(g, i);
+  const double inv_h2 = 1.0 / (x.h * x.h), inv_t2 = 1.0 / (g.d_theta * g.d_theta), two_nu = 2.0 / p.nu;
   for (int j = 0; j < n; ++j) {
-    const SecondDifferences d = second_differences(zm, z0, zp, j, east(j, n), west(j, n));
+    const SecondDifferences d = second_differences(zm, z0, zp, j, east(j, n), west(j, n), x);
     const double lap = d.xi * inv_h2 + d.theta * inv_t2;
     const double adv = N_prev ? w1 * N[j] + w0 * N_prev[j] : N[j];
     f[j] = -sigma * z0[j] - lap + two_nu * adv;
@@ -58,23 +60,29 @@ void diffusion_rhs_ring(const PolarGrid& g, const NsParams& p, double h, double 
   }
 }
 
-double circulation_flux(const PolarGrid& g, const NsParams& p, double h, const double* psi,
-                        const double* zeta) {
+std::array<double, 3> outer_slope_weights(const PolarGrid& g) {
+  const std::array<double, 3> w = one_sided_weights(g.d_xi(g.n_r - 2), g.d_xi(g.n_r - 3));
+  return {-w[0], -w[1], -w[2]};
+}
+
+double circulation_flux(const PolarGrid& g, const NsParams& p, const double* psi, const double* zeta) {
   const int n = g.n_theta;
+  const std::array<double, 3> w = outer_slope_weights(g);
   const double* z = zeta + size_t(g.n_r - 1) * n;
   const double* ps = psi + size_t(g.n_r - 1) * n;
   double flux = 0.0;
   for (int j = 0; j < n; ++j) {
     const double p_theta = psi_theta(ps, j, n, g.d_theta);
-    const double z_xi = (3.0 * z[j] - 4.0 * z[j - n] + z[j - 2 * n]) / (2.0 * h);
+    const double z_xi = w[0] * z[j] + w[1] * z[j - n] + w[2] * z[j - 2 * n];
     flux += (-p_theta * z[j] + p.nu * z_xi) * g.d_theta;
   }
   return flux;
 }
 
-void outer_vorticity(const PolarGrid& g, const NsParams& p, double h, double dt, const double* psi,
-                     const double* zeta, double* out) {
+void outer_vorticity(const PolarGrid& g, const NsParams& p, double dt, const double* psi, const double* zeta,
+                     double* out) {
   const int n = g.n_theta;
+  const double h = g.d_xi(g.n_r - 2);
   const double R = g.outer_radius();
   const double* z = zeta + size_t(g.n_r - 1) * n;
   const double* ps = psi + size_t(g.n_r - 1) * n;

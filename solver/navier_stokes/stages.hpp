@@ -3,8 +3,9 @@
 // discretised: advance() (time_step.cpp) calls them in order, Newton's steady residual (newton.cpp) calls
 // the ones it shares (the advection, the 5-point Laplacian, the outer ring's flux and inflow/outflow
 // choice). Free functions of the grid, the parameters and row-major arrays (n_r, n_θ), ring 0 the wall,
-// ring N = n_r − 1 at R, uniform Δξ = h; Fourier-space stages work on the modes [kb, ke) of (n_r, m)
+// ring N = n_r − 1 at R, any ξ spacing (the mode solver's flux form; ring widths h_i = ring_width(i)); Fourier-space stages work on the modes [kb, ke) of (n_r, m)
 // arrays (m = n_θ/2 + 1, FFTW's unnormalised r2c), so several threads may run them on disjoint ranges.
+#include <array>
 #include <complex>
 #include <vector>
 
@@ -18,36 +19,54 @@ namespace magnus {
 inline int east(int j, int n) { return j + 1 == n ? 0 : j + 1; }
 inline int west(int j, int n) { return j == 0 ? n - 1 : j - 1; }
 
+/// The ξ-part of ring i's Laplacian (1 ≤ i ≤ n_r − 2) in the mode solver's flux form (any ξ spacing),
+/// times h_i²: c_p(u_{i+1} − u_i) − c_m(u_i − u_{i−1}), c_p = h_i/Δξ_{i+1/2}, c_m = h_i/Δξ_{i−1/2},
+/// h_i = ring_width(i). On a uniform ξ: u_{i+1} − 2u_i + u_{i−1} (c_m = c_p = 1, summed as always).
+struct XiFlux {
+  double h, c_m, c_p;
+  bool uniform;
+  double operator()(double um, double u0, double up) const {
+    return uniform ? up - 2.0 * u0 + um : c_p * (up - u0) - c_m * (u0 - um);
+  }
+};
+inline XiFlux xi_flux(const PolarGrid& g, int i) {
+  const double h = g.ring_width(i);
+  if (g.uniform_in_xi()) return {h, 1.0, 1.0, true};
+  return {h, h / g.d_xi(i - 1), h / g.d_xi(i), false};
+}
+
 /// The 5-point stencil's second differences of u at column j (neighbours e, w) of the rings um, u0, up:
-/// ξ: u_p − 2u_0 + u_m, θ: u_e − 2u_0 + u_w (units of u; u_ξξ + u_θθ = xi/Δξ² + theta/Δθ²).
+/// ξ: x(u_m, u_0, u_p) (XiFlux), θ: u_e − 2u_0 + u_w (units of u; u_ξξ + u_θθ = xi/h_i² + theta/Δθ²).
 struct SecondDifferences {
   double xi, theta;
 };
 inline SecondDifferences second_differences(const double* um, const double* u0, const double* up, int j,
-                                            int e, int w) {
-  return {up[j] - 2.0 * u0[j] + um[j], u0[e] - 2.0 * u0[j] + u0[w]};
+                                            int e, int w, const XiFlux& x) {
+  return {x(um[j], u0[j], up[j]), u0[e] - 2.0 * u0[j] + u0[w]};
 }
 
 /// Advection N = ψ_θ ζ_ξ − ψ_ξ ζ_θ on ring i (1 ≤ i ≤ n_r − 2) by Arakawa's Jacobian of p's orders
 /// (arakawa.hpp) into N (n_θ values), m²/s²; 0 with p.stokes. Returns max_j κ_ξ|ψ_e − ψ_w| + κ_θ|ψ_p − ψ_m|
 /// (κ = advection_factor of each direction's order; 0 with p.stokes), m²/s: ring_cfl_rate turns it into 1/s.
-double advection_ring(const PolarGrid& g, const NsParams& p, double h, const double* psi, const double* zeta,
-                      int i, double* N);
+/// On a stretched ξ it is Arakawa's Jacobian in the ring index s (uniform) divided by the metric dξ/ds:
+/// the same stencil over 12·Δθ·h_i (h_i = ring_width(i)), conserving with the mode solver's weights h_i.
+double advection_ring(const PolarGrid& g, const NsParams& p, const double* psi, const double* zeta, int i,
+                      double* N);
 
-/// The CFL rate of ring i, 1/s, from advection_ring's value m: m/(2ΔθΔξ J_i) (CFL number = rate·Δt).
-inline double ring_cfl_rate(const PolarGrid& g, double h, int i, double m) {
-  return m * (1.0 / (2.0 * g.d_theta * h)) * (1.0 / (g.r[i] * g.r[i]));
+/// The CFL rate of ring i, 1/s, from advection_ring's value m: m/(2Δθ h_i J_i) (CFL number = rate·Δt).
+inline double ring_cfl_rate(const PolarGrid& g, int i, double m) {
+  return m * (1.0 / (2.0 * g.d_theta * g.ring_width(i))) * (1.0 / (g.r[i] * g.r[i]));
 }
 
 /// advection_ring on rings 1…n_r−2 into N (n_r·n_θ values; 0 on rings 0 and n_r−1), m²/s², one thread.
 /// rate (optional): the largest ring_cfl_rate and the wall ring's |ω|/Δθ, 1/s.
-void advection_field(const PolarGrid& g, const NsParams& p, double h, const double* psi, const double* zeta,
-                     double* N, double* rate = nullptr);
+void advection_field(const PolarGrid& g, const NsParams& p, const double* psi, const double* zeta, double* N,
+                     double* rate = nullptr);
 
 /// The Crank–Nicolson right-hand side on ring i (1 ≤ i ≤ n_r − 2), 1/s:
 ///     f_j = −σ_i ζ_j − (ζ_ξξ + ζ_θθ)_j + (2/ν)(w1 N_j + w0 N_prev_j),   σ_i = 2J_i/(νΔt)
 /// (N_prev null: the Euler start, N alone). Adds Σ_j f_j to acc (a finiteness check).
-void diffusion_rhs_ring(const PolarGrid& g, const NsParams& p, double h, double dt, const double* zeta, int i,
+void diffusion_rhs_ring(const PolarGrid& g, const NsParams& p, double dt, const double* zeta, int i,
                         const double* N, const double* N_prev, double w1, double w0, double* f, double& acc);
 
 /// ψ_θ at column j of the ring ps (central, periodic), m²/s.
@@ -61,14 +80,17 @@ inline bool outflow(const NsParams& p, double p_theta) {
   return p.outer_vorticity == NsOuterVorticity::inflow_outflow && p_theta > 0.0;
 }
 
-/// dΓ_R/dt = Σ_j (−ψ_θ ζ + ν ζ_ξ)|_R Δθ (ζ_ξ one-sided, second order) of the fields psi, zeta, m²/s².
-double circulation_flux(const PolarGrid& g, const NsParams& p, double h, const double* psi,
-                        const double* zeta);
+/// ∂ζ/∂ξ on the outer ring from the rings N, N−1, N−2 (one-sided, second order, any ξ spacing):
+/// w_0 ζ_N + w_1 ζ_{N−1} + w_2 ζ_{N−2}, the weights w (1 per unit ξ).
+std::array<double, 3> outer_slope_weights(const PolarGrid& g);
+
+/// dΓ_R/dt = Σ_j (−ψ_θ ζ + ν ζ_ξ)|_R Δθ (ζ_ξ by outer_slope_weights) of the fields psi, zeta, m²/s².
+double circulation_flux(const PolarGrid& g, const NsParams& p, const double* psi, const double* zeta);
 
 /// ζ on the outer ring a step dt later into out (n_θ values), 1/s: 0 on inflow; on outflow
-/// ζ_t + (ψ_θ/J) ζ_ξ = 0, explicit upwind.
-void outer_vorticity(const PolarGrid& g, const NsParams& p, double h, double dt, const double* psi,
-                     const double* zeta, double* out);
+/// ζ_t + (ψ_θ/J) ζ_ξ = 0, explicit upwind (over the last spacing Δξ_{N−1/2}).
+void outer_vorticity(const PolarGrid& g, const NsParams& p, double dt, const double* psi, const double* zeta,
+                     double* out);
 
 /// r2c of the far-field data ψ_ξ = U R sinθ − Γ_R/2π into g_hat (m values: modes 0 and 1, the rest 0).
 void far_field_hat(const PolarGrid& g, const NsParams& p, double Gamma_R, std::complex<double>* g_hat);

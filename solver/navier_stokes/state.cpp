@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mesh/fd_weights.hpp"
 #include "solver/navier_stokes/arakawa.hpp"
 #include "solver/navier_stokes/operator.hpp"
 
@@ -17,26 +18,29 @@ double psi_theta_at(const std::vector<double>& psi, int i, int j, int n, double 
   return (psi[size_t(i) * n + e] - psi[size_t(i) * n + w]) / (2.0 * d_theta);
 }
 
-/// ∂ψ/∂ξ at node (i, j), second order: one-sided at the wall (i = 0) and at R (i = nr − 1), centred inside;
-/// uniform Δξ = h.
-double psi_xi_at(const std::vector<double>& psi, int i, int j, int n, int nr, double h) {
-  const size_t q = size_t(i) * n + j;
-  if (i == 0) return (-3.0 * psi[q] + 4.0 * psi[q + n] - psi[q + 2 * n]) / (2.0 * h);
-  if (i == nr - 1) return (3.0 * psi[q] - 4.0 * psi[q - n] + psi[q - 2 * n]) / (2.0 * h);
-  return (psi[q + n] - psi[q - n]) / (2.0 * h);
+/// ∂ψ/∂ξ at node (i, j) by the weights d (radial_derivative of order 2: one-sided at the wall and at R,
+/// centred inside, any ξ spacing).
+double psi_xi_at(const std::vector<double>& psi, int i, int j, int n, const RadialDerivative& d) {
+  double s = 0.0;
+  const std::vector<double>& w = d.weights[size_t(i)];
+  for (size_t m = 0; m < w.size(); ++m) s += w[m] * psi[size_t(d.first[size_t(i)] + int(m)) * n + j];
+  return s;
 }
 
 }  // namespace
 
 PolarGrid ns_grid(const NsParams& p) {
-  GridRequest req;
+  const bool grid_ok = p.n_theta > 0 && p.outer_over_a > 1.0;
+  if (grid_ok && (p.wall_refinement != 1.0 || (p.n_r <= 0 && p.radial_refinement > 1.0))) {
+    const double d_theta = 2.0 * M_PI / p.n_theta;
+    const double d_far = p.radial_refinement > 0.0 ? d_theta / p.radial_refinement : d_theta;
+    return make_stretched_grid(p.a, p.outer_over_a, p.n_r, p.n_theta, d_far, p.wall_refinement,
+                               p.wall_layer);
+  }
+  GridRequest req;  // square cells (R rounded up to whole cells), or n_r rings as given
   req.outer_radius = p.outer_over_a;
   req.n_theta = p.n_theta;
   req.n_r = p.n_r;
-  if (p.n_r <= 0 && p.radial_refinement > 1.0 && p.n_theta > 0 && p.outer_over_a > 1.0) {
-    const double d_xi = 2.0 * M_PI / p.n_theta / p.radial_refinement;
-    req.n_r = int(std::ceil(std::log(p.outer_over_a) / d_xi - 1e-9)) + 1;
-  }
   req.spacing = Spacing::geometric;
   return make_grid(req, p.a);
 }
@@ -44,13 +48,14 @@ PolarGrid ns_grid(const NsParams& p) {
 double cfl_number(const PolarGrid& g, const std::vector<double>& psi, double dt, int order_theta,
                   int order_xi) {
   const int nr = g.n_r, n = g.n_theta;
-  const double h = g.d_xi(0), kappa = advection_factor(order_theta), kappa_xi = advection_factor(order_xi);
+  const double kappa = advection_factor(order_theta), kappa_xi = advection_factor(order_xi);
+  const RadialDerivative d = radial_derivative(g.xi, 2, false);
   double rate = 0.0;
   for (int i = 0; i < nr; ++i) {
-    const double J = g.r[i] * g.r[i];
+    const double J = g.r[i] * g.r[i], h = g.ring_width(i);
     for (int j = 0; j < n; ++j) {
       const double p_theta = psi_theta_at(psi, i, j, n, g.d_theta);
-      const double p_xi = psi_xi_at(psi, i, j, n, nr, h);
+      const double p_xi = psi_xi_at(psi, i, j, n, d);
       rate =
           std::max(rate, kappa_xi * std::fabs(p_theta) / (J * h) + kappa * std::fabs(p_xi) / (J * g.d_theta));
     }
@@ -90,14 +95,14 @@ void add_vortex_blob(const PolarGrid& g, NsState& s, double x_b, double y_b, dou
 void ns_velocity(const PolarGrid& g, const std::vector<double>& psi, std::vector<double>& u_r,
                  std::vector<double>& u_theta) {
   const int nr = g.n_r, n = g.n_theta;
-  const double h = g.d_xi(0);
+  const RadialDerivative d = radial_derivative(g.xi, 2, false);
   u_r.assign(size_t(nr) * n, 0.0);
   u_theta.assign(size_t(nr) * n, 0.0);
   for (int i = 0; i < nr; ++i)
     for (int j = 0; j < n; ++j) {
       const size_t q = size_t(i) * n + j;
       u_r[q] = psi_theta_at(psi, i, j, n, g.d_theta) / g.r[i];
-      u_theta[q] = -psi_xi_at(psi, i, j, n, nr, h) / g.r[i];
+      u_theta[q] = -psi_xi_at(psi, i, j, n, d) / g.r[i];
     }
 }
 

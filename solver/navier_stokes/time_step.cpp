@@ -119,10 +119,10 @@ void right_hand_side(Step& s, const NsState& old, const Ab2& ab, std::vector<dou
           std::fill(f, f + n, 0.0);
           continue;
         }
-        const double ring = advection_ring(s.g, s.p, s.h, old.psi.data(), old.zeta.data(), i, Ni);
+        const double ring = advection_ring(s.g, s.p, old.psi.data(), old.zeta.data(), i, Ni);
         const double* N_prev = ab.first ? nullptr : &old.N_prev[size_t(i) * n];
-        diffusion_rhs_ring(s.g, s.p, s.h, s.dt, old.zeta.data(), i, Ni, N_prev, ab.w1, ab.w0, f, sum);
-        rmax = std::max(rmax, ring_cfl_rate(s.g, s.h, i, ring));
+        diffusion_rhs_ring(s.g, s.p, s.dt, old.zeta.data(), i, Ni, N_prev, ab.w1, ab.w0, f, sum);
+        rmax = std::max(rmax, ring_cfl_rate(s.g, i, ring));
       }
     }
     rate_part[t] = rmax;
@@ -230,8 +230,8 @@ void advance(const NsOperator& op, const NsState& old, NsState& next, NsStepTime
   {
     // Outer ring: dΓ_R/dt, Γ_R^{n+1} by AB2, and ζ^{n+1} there (its r2c: the Helmholtz solve's data at R).
     ScopedTimer timer(s.at(s.clock.boundary));
-    flux = circulation_flux(g, s.p, s.h, old.psi.data(), old.zeta.data());
-    outer_vorticity(g, s.p, s.h, s.dt, old.psi.data(), old.zeta.data(), s.b.ring.p);
+    flux = circulation_flux(g, s.p, old.psi.data(), old.zeta.data());
+    outer_vorticity(g, s.p, s.dt, old.psi.data(), old.zeta.data(), s.b.ring.p);
     fftw_execute_dft_r2c(im.step_ring_r2c, s.b.ring.p, reinterpret_cast<fftw_complex*>(s.b.ring_hat.p));
     next.Gamma_R = old.Gamma_R + s.dt * (ab.w1 * flux + ab.w0 * old.Gamma_flux_prev);
   }

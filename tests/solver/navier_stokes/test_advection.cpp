@@ -24,14 +24,15 @@ namespace {
 std::vector<double> advection(const NsOperator& op, const std::vector<double>& psi,
                               const std::vector<double>& zeta, double* rate = nullptr) {
   std::vector<double> N(psi.size());
-  advection_field(op.grid(), op.params(), op.d_xi(), psi.data(), zeta.data(), N.data(), rate);
+  advection_field(op.grid(), op.params(), psi.data(), zeta.data(), N.data(), rate);
   return N;
 }
 
 /// Random ψ and ζ in (−1, 1), zero on the `edge` outer rings each side (no boundary flux: 2 rings for the
 /// ξ-stride 1; 4 for order 4 in ξ, whose stride-2 Jacobian on rings 1 and n_r − 2, where the scheme falls
 /// back to stride 1, must vanish as well); checks that the advection N of op conserves vorticity,
-/// energy and enstrophy: Σ N, Σ ψN, Σ ζN vanish to round-off. Returns the fields (psi, zeta) it used.
+/// energy and enstrophy: Σ h_i N, Σ h_i ψN, Σ h_i ζN vanish to round-off (h_i = ring_width(i), the mode
+/// solver's control widths; constant on a uniform ξ). Returns the fields (psi, zeta) it used.
 std::pair<std::vector<double>, std::vector<double>> check_advection_conserves(const NsOperator& op,
                                                                               unsigned seed, int edge = 2) {
   const PolarGrid& g = op.grid();
@@ -43,8 +44,11 @@ std::pair<std::vector<double>, std::vector<double>> check_advection_conserves(co
       psi[size_t(i) * g.n_theta + j] = d(rng), zeta[size_t(i) * g.n_theta + j] = d(rng);
   const std::vector<double> N = advection(op, psi, zeta);
   double s1 = 0.0, s_psi = 0.0, s_zeta = 0.0, scale = 0.0;
-  for (size_t q = 0; q < N.size(); ++q)
-    s1 += N[q], s_psi += psi[q] * N[q], s_zeta += zeta[q] * N[q], scale += std::fabs(N[q]);
+  for (size_t q = 0; q < N.size(); ++q) {
+    const int i = int(q / size_t(g.n_theta));
+    const double w = i > 0 && i < g.n_r - 1 ? g.ring_width(i) : 0.0;  // N = 0 on rings 0 and n_r − 1
+    s1 += w * N[q], s_psi += w * psi[q] * N[q], s_zeta += w * zeta[q] * N[q], scale += w * std::fabs(N[q]);
+  }
   CHECK(std::fabs(s1) < 1e-12 * scale);
   CHECK(std::fabs(s_psi) < 1e-12 * scale);
   CHECK(std::fabs(s_zeta) < 1e-12 * scale);
@@ -89,6 +93,37 @@ TEST_CASE("[ns] Arakawa's Jacobian conserves vorticity, energy and enstrophy, it
         }));
   }
   CHECK(observed_order(err[0], err[1]) == Approx(2.0).margin(0.1));
+}
+
+TEST_CASE("[ns] Arakawa's Jacobian on rings clustered at the wall conserves with the ring widths h_i",
+          "[ns]") {
+  // On a stretched ξ the stencil is Arakawa's in the ring index s over 12Δθh_i: Σ h_i N, Σ h_i ψN and
+  // Σ h_i ζN vanish; with the widths of a uniform grid instead (dropping h_i) they would not.
+  NsParams p;
+  p.a = 1.0, p.U = 1.0, p.nu = 0.01, p.outer_over_a = 10.0, p.n_theta = 32, p.threads = 1;
+  p.wall_refinement = 4.0, p.wall_layer = 0.5;
+  for (const auto& [order, order_xi] : {std::pair{2, 2}, std::pair{4, 2}, std::pair{2, 4}, std::pair{4, 4}}) {
+    p.advection_order = order, p.advection_order_xi = order_xi;
+    const NsOperator op(p, 0.01);
+    REQUIRE(!op.grid().uniform_in_xi());
+    INFO("advection order " << order << ", in xi " << order_xi);
+    check_advection_conserves(op, 5, order_xi == 4 ? 4 : 2);
+  }
+  // Smooth fields: N → ψ_θ ζ_ξ − ψ_ξ ζ_θ at second order on the stretched rings too (n_θ and n_r doubled).
+  std::vector<double> err;
+  p.advection_order = 2, p.advection_order_xi = 2;
+  for (int n : {32, 64, 128}) {
+    p.n_theta = n;
+    err.push_back(advection_error(
+        NsOperator(p, 0.01), [](double x, double t) { return std::sin(x) * std::cos(2 * t); },
+        [](double x, double t) { return std::cos(1.5 * x) * std::sin(t); },
+        [](double x, double t) {
+          return -2.0 * std::sin(x) * std::sin(2 * t) * (-1.5 * std::sin(1.5 * x) * std::sin(t)) -
+                 std::cos(x) * std::cos(2 * t) * std::cos(1.5 * x) * std::cos(t);
+        }));
+  }
+  INFO("errors " << err[0] << " " << err[1] << " " << err[2]);
+  CHECK(observed_order(err[1], err[2]) == Approx(2.0).margin(0.1));
 }
 
 TEST_CASE("[ns] advection of order 4 in theta: it conserves as Arakawa's does, fourth order in theta",
