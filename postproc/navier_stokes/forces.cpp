@@ -1,6 +1,9 @@
 #include "postproc/navier_stokes/forces.hpp"
 
+#include "mesh/fd_weights.hpp"
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 
@@ -8,13 +11,13 @@ namespace magnus {
 
 namespace {
 
-/// ∂ζ/∂ξ on the wall ring, one-sided second order on uniform ξ, 1/s.
+/// ∂ζ/∂ξ on the wall ring, one-sided second order (any ξ spacing), 1/s.
 std::vector<double> wall_zeta_xi(const PolarGrid& g, const NsState& s) {
   const int n = g.n_theta;
-  const double h = g.d_xi(0);
+  const std::array<double, 3> w = one_sided_weights(g.d_xi(0), g.d_xi(1));
   std::vector<double> z_xi(n);
   for (int j = 0; j < n; ++j)
-    z_xi[j] = (-3.0 * s.zeta[j] + 4.0 * s.zeta[size_t(n) + j] - s.zeta[size_t(2 * n) + j]) / (2.0 * h);
+    z_xi[j] = w[0] * s.zeta[j] + w[1] * s.zeta[size_t(n) + j] + w[2] * s.zeta[size_t(2 * n) + j];
   return z_xi;
 }
 

@@ -1,11 +1,14 @@
 #include "postproc/navier_stokes/pressure.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "mesh/fd_weights.hpp"
 #include "solver/mode_solver.hpp"
+#include "solver/navier_stokes/stages.hpp"
 
 namespace magnus {
 
@@ -22,26 +25,36 @@ void require_field(const std::vector<double>& v, size_t n, const char* name) {
                                   "] is not finite");
 }
 
+/// ∂u/∂ξ on the wall ring of the field u, one-sided second order (any ξ spacing), units of u.
+std::vector<double> wall_slope(const PolarGrid& g, const std::vector<double>& u) {
+  const int n = g.n_theta;
+  const std::array<double, 3> w = one_sided_weights(g.d_xi(0), g.d_xi(1));
+  std::vector<double> out(n);
+  for (int j = 0; j < n; ++j) out[j] = w[0] * u[j] + w[1] * u[size_t(n) + j] + w[2] * u[size_t(2 * n) + j];
+  return out;
+}
+
 /// J·rhs = 2ρ [(ψ_ξξ − ψ_ξ)(ψ_ξ + ψ_θθ) − (ψ_ξθ − ψ_θ)²]/r², the source of p_ξξ + p_θθ, on rings 1…n_r−2
-/// (central differences, ψ_ξθ by the 4-point cross difference, uniform Δξ = h), Pa; 0 on the wall and
+/// (central 3-point differences on any ξ spacing, ψ_ξθ the θ-difference of ψ_ξ), Pa; 0 on the wall and
 /// outer rings (ModeSolver ignores them).
-std::vector<double> pressure_source(const PolarGrid& g, double rho, const std::vector<double>& psi,
-                                    double h) {
+std::vector<double> pressure_source(const PolarGrid& g, double rho, const std::vector<double>& psi) {
   const int n = g.n_theta, N = g.n_r - 1;
   const double dth = g.d_theta;
   std::vector<double> f(size_t(g.n_r) * n, 0.0);
   auto at = [n](int i, int j) { return size_t(i) * n + size_t((j + n) % n); };
   for (int i = 1; i < N; ++i) {
     const double r2 = g.r[i] * g.r[i];
+    const std::vector<double> x{g.xi[i - 1], g.xi[i], g.xi[i + 1]};
+    const std::vector<double> d1 = fd_weights(g.xi[i], x, 1), d2 = fd_weights(g.xi[i], x, 2);
+    auto xi_diff = [&](const std::vector<double>& w, int j) {
+      return w[0] * psi[at(i - 1, j)] + w[1] * psi[at(i, j)] + w[2] * psi[at(i + 1, j)];
+    };
     for (int j = 0; j < n; ++j) {
       const double c = psi[at(i, j)];
-      const double ps_xi = (psi[at(i + 1, j)] - psi[at(i - 1, j)]) / (2.0 * h);
-      const double ps_xixi = (psi[at(i + 1, j)] - 2.0 * c + psi[at(i - 1, j)]) / (h * h);
+      const double ps_xi = xi_diff(d1, j), ps_xixi = xi_diff(d2, j);
       const double ps_th = (psi[at(i, j + 1)] - psi[at(i, j - 1)]) / (2.0 * dth);
       const double ps_thth = (psi[at(i, j + 1)] - 2.0 * c + psi[at(i, j - 1)]) / (dth * dth);
-      const double ps_xith =
-          (psi[at(i + 1, j + 1)] - psi[at(i + 1, j - 1)] - psi[at(i - 1, j + 1)] + psi[at(i - 1, j - 1)]) /
-          (4.0 * h * dth);
+      const double ps_xith = (xi_diff(d1, j + 1) - xi_diff(d1, j - 1)) / (2.0 * dth);
       const double cross = ps_xith - ps_th;
       f[at(i, j)] = 2.0 * rho * ((ps_xixi - ps_xi) * (ps_xi + ps_thth) - cross * cross) / r2;
     }
@@ -52,13 +65,10 @@ std::vector<double> pressure_source(const PolarGrid& g, double rho, const std::v
 /// ∂p/∂ξ on the wall ring from the steady r-momentum equation, a·∂p/∂r = −ρ(a u_r ∂u_r/∂r + u_θ ∂u_r/∂θ −
 /// u_θ²) − μ ∂ζ/∂θ = −(ρ/a²)[ψ_θ(ψ_ξθ − ψ_θ) − ψ_ξ ψ_θθ − ψ_ξ²] − μ ζ_θ, Pa (one-sided 3-point ψ_ξ, central
 /// θ derivatives). On a no-slip wall (ψ_θ = 0, u_r ≡ 0: exact for unsteady flow too) ρ u_θ(a)² − μ ζ_θ.
-std::vector<double> wall_pressure_slope(const PolarGrid& g, double rho, double mu, const NsState& s,
-                                        double h) {
+std::vector<double> wall_pressure_slope(const PolarGrid& g, double rho, double mu, const NsState& s) {
   const int n = g.n_theta;
   const double dth = g.d_theta, a2 = g.a * g.a;
-  std::vector<double> ps_xi(n);
-  for (int j = 0; j < n; ++j)
-    ps_xi[j] = (-3.0 * s.psi[j] + 4.0 * s.psi[size_t(n) + j] - s.psi[size_t(2 * n) + j]) / (2.0 * h);
+  const std::vector<double> ps_xi = wall_slope(g, s.psi);
   std::vector<double> out(n);
   for (int j = 0; j < n; ++j) {
     const int e = (j + 1) % n, w = (j + n - 1) % n;
@@ -72,13 +82,14 @@ std::vector<double> wall_pressure_slope(const PolarGrid& g, double rho, double m
 }
 
 /// |u|² = (ψ_ξ² + ψ_θ²)/R² on the outer ring (ψ_ξ one-sided 3-point, ψ_θ central), m²/s².
-std::vector<double> outer_speed_squared(const PolarGrid& g, const std::vector<double>& psi, double h) {
+std::vector<double> outer_speed_squared(const PolarGrid& g, const std::vector<double>& psi) {
   const int n = g.n_theta, N = g.n_r - 1;
   const double dth = g.d_theta, R = g.outer_radius();
+  const std::array<double, 3> w = outer_slope_weights(g);
   auto at = [n](int i, int j) { return size_t(i) * n + size_t((j + n) % n); };
   std::vector<double> out(n);
   for (int j = 0; j < n; ++j) {
-    const double ps_xi = (3.0 * psi[at(N, j)] - 4.0 * psi[at(N - 1, j)] + psi[at(N - 2, j)]) / (2.0 * h);
+    const double ps_xi = w[0] * psi[at(N, j)] + w[1] * psi[at(N - 1, j)] + w[2] * psi[at(N - 2, j)];
     const double ps_th = (psi[at(N, j + 1)] - psi[at(N, j - 1)]) / (2.0 * dth);
     out[j] = (ps_xi * ps_xi + ps_th * ps_th) / (R * R);
   }
@@ -89,16 +100,16 @@ std::vector<double> outer_speed_squared(const PolarGrid& g, const std::vector<do
 /// removed; periodic cumulative trapezoid) from H = p∞ + ½ρU² at θ = π; ζ_ξ one-sided 3-point, ψ_θ
 /// central, Pa.
 std::vector<double> outer_head(const PolarGrid& g, const NsParams& p, double rho, double p_inf,
-                               const NsState& s, double h) {
+                               const NsState& s) {
   const int n = g.n_theta, N = g.n_r - 1;
   const double dth = g.d_theta, mu = rho * p.nu;
+  const std::array<double, 3> w = outer_slope_weights(g);
   auto at = [n](int i, int j) { return size_t(i) * n + size_t((j + n) % n); };
   std::vector<double> q(n);
   double q_mean = 0.0;
   for (int j = 0; j < n; ++j) {
     const double ps_th = (s.psi[at(N, j + 1)] - s.psi[at(N, j - 1)]) / (2.0 * dth);
-    const double z_xi =
-        (3.0 * s.zeta[at(N, j)] - 4.0 * s.zeta[at(N - 1, j)] + s.zeta[at(N - 2, j)]) / (2.0 * h);
+    const double z_xi = w[0] * s.zeta[at(N, j)] + w[1] * s.zeta[at(N - 1, j)] + w[2] * s.zeta[at(N - 2, j)];
     q[j] = -rho * ps_th * s.zeta[at(N, j)] + mu * z_xi;
     q_mean += q[j] / n;
   }
@@ -115,32 +126,30 @@ std::vector<double> outer_head(const PolarGrid& g, const NsParams& p, double rho
 std::vector<double> ns_pressure_field(const PolarGrid& g, const NsParams& p, double rho, double p_inf,
                                       const NsState& s) {
   const int n = g.n_theta, nr = g.n_r;
-  if (!g.uniform_in_xi() || nr < 4 || n < 4 || g.r.size() != size_t(nr) || g.theta.size() != size_t(n))
+  if (g.spacing != Spacing::geometric || nr < 4 || n < 4 || g.r.size() != size_t(nr) || g.theta.size() != size_t(n))
     throw std::invalid_argument(
-        "ns_pressure_field: need a geometric (uniform-xi) grid with n_r >= 4, n_theta >= 4");
+        "ns_pressure_field: need a geometric grid with n_r >= 4, n_theta >= 4");
   if (!(rho > 0.0) || !std::isfinite(rho) || !std::isfinite(p_inf) || !std::isfinite(p.nu) ||
       !std::isfinite(p.U))
     throw std::invalid_argument("ns_pressure_field: need rho > 0 and finite rho, p_inf, nu and U");
   require_field(s.psi, size_t(g.nodes()), "psi");
   require_field(s.zeta, size_t(g.nodes()), "zeta");
-  const double h = g.d_xi(0), mu = rho * p.nu;
+  const double mu = rho * p.nu;
 
-  const std::vector<double> f = pressure_source(g, rho, s.psi, h);
-  const std::vector<double> wall_slope = wall_pressure_slope(g, rho, mu, s, h);
-  std::vector<double> p_outer = outer_head(g, p, rho, p_inf, s, h);
-  const std::vector<double> u2 = outer_speed_squared(g, s.psi, h);
+  const std::vector<double> f = pressure_source(g, rho, s.psi);
+  const std::vector<double> slope = wall_pressure_slope(g, rho, mu, s);
+  std::vector<double> p_outer = outer_head(g, p, rho, p_inf, s);
+  const std::vector<double> u2 = outer_speed_squared(g, s.psi);
   for (int j = 0; j < n; ++j) p_outer[j] -= 0.5 * rho * u2[j];  // p = H − ½ρ|u|²
 
   // p_ξξ + p_θθ = f with the Dirichlet-wall solver (σ = 0): first p_D with p = 0 on the wall, then the wall
-  // values W whose influence vectors make the one-sided slope (−3p_0 + 4p_1 − p_2)/2h equal the Neumann
+  // values W whose influence vectors make the one-sided slope (wall_slope) equal the Neumann
   // data, mode by mode: Ŵ_k = (ĝ_k − slope(p_D)_k)/φ_k'(0). The solve with wall data W is p (linearity).
   const ModeSolver solver(g, std::vector<double>(size_t(nr), 0.0), OuterBoundary::dirichlet,
                           std::max(1, p.threads));
   const std::vector<double> p_d = solver.solve(f, std::vector<double>(size_t(n), 0.0), p_outer);
-  std::vector<double> deficit(n);
-  for (int j = 0; j < n; ++j)
-    deficit[j] =
-        wall_slope[j] - (-3.0 * p_d[j] + 4.0 * p_d[size_t(n) + j] - p_d[size_t(2 * n) + j]) / (2.0 * h);
+  std::vector<double> deficit = wall_slope(g, p_d);
+  for (int j = 0; j < n; ++j) deficit[j] = slope[j] - deficit[j];
   // Real DFT of the deficit (direct: one ring), divided per mode by the influence slope, and back.
   std::vector<double> cos_tab(n), sin_tab(n);
   for (int q = 0; q < n; ++q)

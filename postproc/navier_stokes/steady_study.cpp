@@ -105,18 +105,19 @@ NsState interpolate_state(const PolarGrid& from, const NsState& s, const PolarGr
     return out;
   };
   const std::vector<double> psi = theta_up(s.psi), zeta = theta_up(s.zeta);
-  const double hc = std::log(from.r[1] / from.r[0]);
   NsState out;
   out.psi.resize(size_t(nrf) * nf), out.zeta.resize(size_t(nrf) * nf);
   out.Gamma_R = s.Gamma_R;
   for (int i = 0; i < nrf; ++i) {
-    const double x = std::min(std::log(to.r[i] / to.r[0]) / hc, double(nrc - 1));
-    const int i0 = std::clamp(int(std::floor(x)) - 1, 0, nrc - 4);
+    // Cubic Lagrange in ξ through the four coarse rings around ξ_i (any ξ spacing).
+    const double x = std::min(to.xi[i], from.xi.back());
+    const int below = int(std::upper_bound(from.xi.begin(), from.xi.end(), x) - from.xi.begin()) - 1;
+    const int i0 = std::clamp(below - 1, 0, nrc - 4);
     double w[4];
     for (int m = 0; m < 4; ++m) {
       w[m] = 1.0;
       for (int l = 0; l < 4; ++l)
-        if (l != m) w[m] *= (x - (i0 + l)) / double(m - l);
+        if (l != m) w[m] *= (x - from.xi[i0 + l]) / (from.xi[i0 + m] - from.xi[i0 + l]);
     }
     for (int j = 0; j < nf; ++j) {
       double a = 0.0, b = 0.0;
