@@ -81,7 +81,7 @@ void check_model_keys(const Reader& r, bool ns, const std::string& circulation_m
     std::vector<std::string> ns_only;
     for (const auto& k : case_key_table().at("time")) ns_only.push_back("time." + k);
     ns_only.insert(ns_only.end(), {"output.snapshots", "output.snapshot_interval", "solver.advection_order",
-                                   "solver.advection_order_xi"});
+                                   "solver.advection_order_xi", "grid.wall_refinement", "grid.wall_layer"});
     for (const auto& k : ns_only)
       if (has_key(r, k)) r.fail(k, "is only used with model.flow = \"navier-stokes\"");
   }
@@ -238,8 +238,15 @@ void read_grid_solver_output(const Reader& r, bool ns, Case& c) {
       "an integer from 0 (none) to 9"));
 }
 
-/// navier-stokes: the advection's orders, [time] and the snapshots.
+/// navier-stokes: the rings' clustering at the wall, the advection's orders, [time] and the snapshots.
 void read_navier_stokes(const Reader& r, Case& c) {
+  c.grid.wall_refinement = r.number(
+      "grid", "wall_refinement", c.grid.wall_refinement, [](double v) { return v >= 1.0 && v <= 100.0; },
+      "1 (uniform in ξ) ... 100 (Δξ_far/Δξ_wall)");
+  const double span = std::log(c.grid.outer_radius);
+  c.grid.wall_layer = r.number(
+      "grid", "wall_layer", c.grid.wall_layer, [span](double v) { return v > 0.0 && v <= span; },
+      "> 0 and <= ln(R/a), R/a = domain.outer_radius (the ξ-length of the spacing's transition)");
   c.solver.advection_order = int(r.integer(
       "solver", "advection_order", c.solver.advection_order, [](long v) { return v == 2 || v == 4; },
       "2 (Arakawa's Jacobian) or 4 (fourth order in θ)"));

@@ -5,6 +5,16 @@
 
 namespace magnus {
 
+namespace {
+
+/// A TOML float: the shortest text that reads back exactly, with ".0" when it would read as an integer.
+std::string num(double v) {
+  std::string s = fmt::format("{}", v);
+  return s.find_first_of(".eE") == std::string::npos ? s + ".0" : s;
+}
+
+}  // namespace
+
 std::string to_toml(const Case& c) {
   auto str = [](const std::string& v) {
     std::string q = "\"";
@@ -22,10 +32,6 @@ std::string to_toml(const Case& c) {
       q += ch;
     }
     return q + "\"";
-  };
-  auto num = [](double v) {
-    std::string s = fmt::format("{}", v);
-    return s.find_first_of(".eE") == std::string::npos ? s + ".0" : s;
   };
   // A navier-stokes case leaves out the keys of potential flow's circulation, far field and solver (they
   // would be errors), and adds its model, [time] and snapshots; a potential case writes none of these.
@@ -62,6 +68,9 @@ std::string to_toml(const Case& c) {
     t += fmt::format("tolerance = {}\n", num(c.grid.tolerance));
   else
     t += fmt::format("n_theta = {}\nn_r = {}\n", c.grid.n_theta, c.grid.n_r);
+  if (ns)
+    t += fmt::format("wall_refinement = {}\nwall_layer = {}\n", num(c.grid.wall_refinement),
+                     num(c.grid.wall_layer));
   if (!ns) {
     t += fmt::format("\n[solver]\nmethod = {}\n", str(to_string(c.solver.method)));
     if (c.grid.tolerance == 0.0) t += fmt::format("stencil = {}\n", str(to_string(c.solver.stencil)));

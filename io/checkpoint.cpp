@@ -93,6 +93,10 @@ std::vector<IdentityEntry> checkpoint_identity(const Case& c) {
   id.push_back({"domain.outer_radius", num(g.outer_radius() / p.a)});
   id.push_back({"grid.n_theta", std::to_string(g.n_theta)});
   id.push_back({"grid.n_r", std::to_string(g.n_r)});
+  if (p.wall_refinement != 1.0) {  // uniform ξ: no entries, as checkpoints stored before the stretched rings
+    id.push_back({"grid.wall_refinement", num(p.wall_refinement)});
+    id.push_back({"grid.wall_layer", num(p.wall_layer)});
+  }
   id.push_back({"solver.advection_order", std::to_string(p.advection_order)});
   id.push_back({"solver.advection_order_xi", std::to_string(p.advection_order_xi)});
   return id;

@@ -31,6 +31,14 @@ std::vector<AttrSpec> viscous_parameter_rows() {
                P, "advection_order_xi", "order of the advection term in ξ: 2 (Arakawa's Jacobian) or 4",
                [](const FlowResult& r) { return opt(double(r.c.solver.advection_order_xi)); },
                [](FlowResult& r, double v) { r.c.solver.advection_order_xi = checked_cast<int>(v, "advection_order_xi"); })),
+      only(Models::viscous, num(
+                                P, "wall_refinement", "1", "grid.wall_refinement: Δξ_far/Δξ_wall (1: uniform ξ)",
+                                [](const FlowResult& r) { return opt(r.c.grid.wall_refinement); },
+                                [](FlowResult& r, double v) { r.c.grid.wall_refinement = v; })),
+      only(Models::viscous, num(
+                                P, "wall_layer", "1", "grid.wall_layer: ξ-length of the rings' transition",
+                                [](const FlowResult& r) { return opt(r.c.grid.wall_layer); },
+                                [](FlowResult& r, double v) { r.c.grid.wall_layer = v; })),
   };
 }
 

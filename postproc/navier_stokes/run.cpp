@@ -22,6 +22,8 @@ NsParams ns_params(const Case& c) {
   p.outer_over_a = c.grid.outer_radius;
   p.n_theta = c.grid.n_theta;
   p.n_r = c.grid.n_r;
+  p.wall_refinement = c.grid.wall_refinement;
+  p.wall_layer = c.grid.wall_layer;
   p.cfl = c.time.cfl;
   p.advection_order = c.solver.advection_order;
   p.advection_order_xi = c.solver.advection_order_xi;
