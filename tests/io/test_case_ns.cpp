@@ -327,11 +327,13 @@ TEST_CASE("the resolved case: potential text unchanged, navier-stokes text reads
       "far_field = \"exact\"\n\n[grid]\nspacing = \"geometric\"\nn_theta = 256\nn_r = 0\n\n[solver]\n"
       "method = \"auto\"\nstencil = \"5-point\"\n\n[output]\nfile = \"magnus.h5\"\n");
 
+  // The navier-stokes text states the rings' clustering (grid.wall_refinement, grid.wall_layer) too.
   const Case n = parse(ns_scene);
   CHECK(n.source_text ==
         "title = \"Spinning cylinder\"\n\n[model]\nflow = \"navier-stokes\"\n\n[cylinder]\nradius = 0.005\n"
         "spin = 2.0\n\n[flow]\nspeed = 0.01\ndensity = 1.225\npressure = 0.0\nviscosity = 1e-06\n\n[domain]\n"
-        "outer_radius = 100.0\n\n[grid]\nspacing = \"geometric\"\nn_theta = 192\nn_r = 0\n\n[solver]\n"
+        "outer_radius = 100.0\n\n[grid]\nspacing = \"geometric\"\nn_theta = 192\nn_r = 0\n"
+        "wall_refinement = 1.0\nwall_layer = 0.1\n\n[solver]\n"
         "advection_order = 2\nadvection_order_xi = 2\n\n[time]\n"
         "mode = \"auto\"\nend = 300.0\ndt = 0.0\ncfl = 0.7\nmean_tolerance = 0.001\ncheckpoint_interval = "
         "10.0\n"
