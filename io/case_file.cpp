@@ -71,7 +71,6 @@ void check_model_keys(const Reader& r, bool ns, const std::string& circulation_m
              "\"uniform\" is only used with model.flow = \"potential\": the navier-stokes grid is geometric");
     const std::vector<std::pair<std::string, const char*>> potential_only = {
         {"domain.far_field", "sets its own far-field conditions"},
-        {"grid.tolerance", "takes the grid as given (grid.n_theta, grid.n_r)"},
         {"solver.method", "has its own solver"},
         {"solver.stencil", "has its own discretisation"}};
     for (const auto& [k, why] : potential_only)
@@ -81,7 +80,8 @@ void check_model_keys(const Reader& r, bool ns, const std::string& circulation_m
     std::vector<std::string> ns_only;
     for (const auto& k : case_key_table().at("time")) ns_only.push_back("time." + k);
     ns_only.insert(ns_only.end(), {"output.snapshots", "output.snapshot_interval", "solver.advection_order",
-                                   "solver.advection_order_xi", "grid.wall_refinement", "grid.wall_layer"});
+                                   "solver.advection_order_xi", "grid.wall_refinement", "grid.wall_layer",
+                                   "grid.refine"});
     for (const auto& k : ns_only)
       if (has_key(r, k)) r.fail(k, "is only used with model.flow = \"navier-stokes\"");
   }
@@ -220,9 +220,19 @@ void read_grid_solver_output(const Reader& r, bool ns, Case& c) {
                        ? Spacing::geometric
                        : Spacing::uniform;
   c.grid.spacing_given = r.has("grid", "spacing");
-  c.grid.tolerance = r.number(
-      "grid", "tolerance", 0.0, [](double v) { return v == 0.0 || (v >= 1e-14 && v <= 0.1); },
-      "0 (grid as given) or 1e-14 ... 0.1");
+  c.grid.n_theta_given = r.has("grid", "n_theta");
+  if (ns)
+    c.grid.tolerance = r.number(
+        "grid", "tolerance", 0.0, [](double v) { return v == 0.0 || (v >= kNsMinTolerance && v <= 0.1); },
+        "0 (the scene's grid) or 1e-4 ... 0.1 (navier-stokes: relative, on mean C_L, C_D and St; below 1e-4 "
+        "the run's own error estimate is not reliable)");
+  else
+    c.grid.tolerance = r.number(
+        "grid", "tolerance", 0.0, [](double v) { return v == 0.0 || (v >= 1e-14 && v <= 0.1); },
+        "0 (grid as given) or 1e-14 ... 0.1");
+  c.grid.refine = r.number(
+      "grid", "refine", 1.0, [](double v) { return v >= 0.25 && v <= 16.0; },
+      "0.25 ... 16 (the scene's grid: n_θ times it, every spacing divided by it)");
   const std::string method = r.word("solver", "method", "auto", {"auto", "cholmod", "fft"});
   c.solver.method = method == "auto"      ? Method::automatic
                     : method == "cholmod" ? Method::cholmod
@@ -247,6 +257,8 @@ void read_navier_stokes(const Reader& r, Case& c) {
   c.grid.wall_layer = r.number(
       "grid", "wall_layer", c.grid.wall_layer, [span](double v) { return v > 0.0 && v <= span; },
       "> 0 and <= ln(R/a), R/a = domain.outer_radius (the ξ-length of the spacing's transition)");
+  c.grid.wall_refinement_given = r.has("grid", "wall_refinement");
+  c.grid.wall_layer_given = r.has("grid", "wall_layer");
   c.solver.advection_order = int(r.integer(
       "solver", "advection_order", c.solver.advection_order, [](long v) { return v == 2 || v == 4; },
       "2 (Arakawa's Jacobian) or 4 (fourth order in θ)"));
@@ -305,7 +317,7 @@ void check_combinations(const Reader& r, const Case& c) {
   }
   if (c.solver.stencil == StencilKind::nine_point && c.grid.spacing == Spacing::uniform)
     r.fail("solver.stencil", "\"9-point\" needs grid.spacing = \"geometric\" (uniform in ln r)");
-  for (const char* key : {"grid.n_theta", "grid.n_r", "solver.stencil"})
+  for (const char* key : {"grid.n_theta", "grid.n_r", "solver.stencil", "grid.refine"})
     if (c.grid.tolerance > 0.0 && has_key(r, key))
       r.fail("grid.tolerance",
              fmt::format("conflicts with {}: the tolerance chooses the grid and stencil", key));

@@ -64,13 +64,18 @@ std::string to_toml(const Case& c) {
   t += "\n[grid]\n";
   if (c.grid.tolerance == 0.0 || c.grid.spacing_given)
     t += fmt::format("spacing = {}\n", str(to_string(c.grid.spacing)));
+  // navier-stokes without a stated grid: the scene's rule chooses it again from the same keys.
+  const bool ns_rule = ns && !c.grid.n_theta_given && c.grid.n_r == 0;
   if (c.grid.tolerance > 0.0)
     t += fmt::format("tolerance = {}\n", num(c.grid.tolerance));
+  else if (ns_rule)
+    t += fmt::format("refine = {}\n", num(c.grid.refine));
   else
     t += fmt::format("n_theta = {}\nn_r = {}\n", c.grid.n_theta, c.grid.n_r);
-  if (ns)
-    t += fmt::format("wall_refinement = {}\nwall_layer = {}\n", num(c.grid.wall_refinement),
-                     num(c.grid.wall_layer));
+  // The rings' clustering as stated (left out, the scene's rule or the given grid's uniform rings decide).
+  if (ns && c.grid.wall_refinement_given)
+    t += fmt::format("wall_refinement = {}\n", num(c.grid.wall_refinement));
+  if (ns && c.grid.wall_layer_given) t += fmt::format("wall_layer = {}\n", num(c.grid.wall_layer));
   if (!ns) {
     t += fmt::format("\n[solver]\nmethod = {}\n", str(to_string(c.solver.method)));
     if (c.grid.tolerance == 0.0) t += fmt::format("stencil = {}\n", str(to_string(c.solver.stencil)));

@@ -89,6 +89,10 @@ struct GridRequest {
   double tolerance = 0.0;      ///< target relative lift error; 0: the grid as given
   double wall_refinement = kNsDefaultWallRefinement;  ///< Δξ_far/Δξ_wall ≥ 1 (navier-stokes only)
   double wall_layer = kNsDefaultWallLayer;  ///< ξ-length of the spacing's transition (navier-stokes only)
+  bool n_theta_given = false;  ///< grid.n_theta was stated: navier-stokes then takes it instead of its rule
+  double refine = 1.0;         ///< navier-stokes: the scene's grid refined by this factor (n_θ·f, Δξ/f)
+  bool wall_refinement_given = false;  ///< grid.wall_refinement was stated (navier-stokes)
+  bool wall_layer_given = false;       ///< grid.wall_layer was stated (navier-stokes)
 };
 
 /// The linear solver and the stencil (potential flow); the advection's order in θ (navier-stokes).
@@ -103,6 +107,9 @@ struct SolverChoice {
 /// outer boundary (R/a) and the boundary layer fewer θ points than potential flow's round-off accuracy.
 constexpr double kNsDefaultOuterRadius = 100.0;
 constexpr int kNsDefaultNTheta = 192;
+/// The finest grid.tolerance navier-stokes takes: four digits (the companion run's estimate, and the
+/// converged periodic means, are not reliable below it).
+constexpr double kNsMinTolerance = 1e-4;
 
 /// Time marching of a navier-stokes case ([time]). Times are in convective units D/U_ref, D = 2a,
 /// U_ref = Scene::reference_speed().

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "postproc/navier_stokes/grid_rule.hpp"
 #include "postproc/navier_stokes/resolution.hpp"
 #include "postproc/navier_stokes/run_paths.hpp"
 
@@ -28,6 +29,7 @@ NsParams ns_params(const Case& c) {
   p.advection_order = c.solver.advection_order;
   p.advection_order_xi = c.solver.advection_order_xi;
   p.dt = c.time.dt > 0.0 && s.reference_speed() > 0.0 ? c.time.dt * s.time_unit() : 0.0;
+  apply_scene_grid(c, p);
   return p;
 }
 
@@ -40,6 +42,7 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
     throw std::invalid_argument("flow.speed and cylinder.spin are both 0: nothing moves, there is no flow");
   check_resolvable(c);  // before anything is solved or allocated
   NsParams p = ns_params(c);
+  check_tolerance(c, p);  // the grid a tolerance asks for must fit, before anything is solved
   p.threads = std::max(1, threads);
   const PolarGrid g = ns_grid(p);
   const double unit = sc.time_unit();

@@ -1,0 +1,58 @@
+#pragma once
+// The grid a navier-stokes scene gets by default: chosen from Re and α (from the spin alone in still
+// fluid), not one grid for every scene. Two lengths set it:
+//  - the boundary layer, δ = D/√(Re(1 + α²)) (spin thins it where the wall moves against the stream): the
+//    first ring sits kRuleWallCells cells inside it, and the rings spread out smoothly from there
+//    (Δξ grows by at most kRuleGrowth from one ring to the next, NsParams::wall_refinement, wall_layer);
+//  - the wake: n_θ grows as √Re (the wake's vortices shrink as the viscous length does), and the far rings
+//    keep the cell shape Δξ = Δθ/(5/3) of the model's validation studies.
+// grid.refine scales it (n_θ·refine, every spacing /refine); grid.tolerance picks refine.
+#include <cstddef>
+#include <string>
+
+#include "physics/scene.hpp"
+#include "solver/navier_stokes/operator.hpp"
+
+namespace magnus {
+
+/// First-ring cells across δ = D/√(Re(1 + α²)) on the default grid (refine = 1).
+constexpr double kRuleWallCells = 10.0;
+/// Largest relative growth of Δξ from the wall's ring to the next one (the smooth map's steepest point).
+constexpr double kRuleGrowth = 0.08;
+/// The design error of the default grid (relative; C_D gets twice it): mean C_L and St within 1%.
+constexpr double kRuleTolerance = 1e-2;
+
+/// The scene's grid: n_θ, and the ring map's wall_refinement (Δξ_far/Δξ_wall) and wall_layer (ξ).
+struct SceneGrid {
+  int n_theta = kNsDefaultNTheta;
+  double wall_refinement = 1.0;  ///< Δξ_far/Δξ_wall ≥ 1
+  double wall_layer = 0.1;       ///< ξ-length of the transition from Δξ_wall to Δξ_far
+  double delta_xi = 0.0;         ///< ξ-thickness of δ: ln(1 + δ/a)
+};
+
+/// The default grid of a scene at Reynolds number Re (U·D/ν, or a|ω|·D/ν in still fluid) and spin ratio α
+/// (0 in still fluid), refined by `refine` (> 0; 1: the default): n_θ = 32·⌈6·refine·√(max(Re, 20)/100)⌉
+/// (even, ≥ 16); Δξ_far = Δθ/(5/3); Δξ_wall = ln(1 + δ/a)/(kRuleWallCells·refine), capped at Δξ_far;
+/// wall_layer = (q − 1)·Δξ_far/kRuleGrowth with q = Δξ_far/Δξ_wall (so the spacing grows by kRuleGrowth per
+/// ring at most), or 0.1 when q = 1.
+SceneGrid scene_grid(double Re, double alpha, double refine = 1.0);
+
+/// The refine factor that grid.tolerance τ (on mean C_L, C_D and St alike) asks for first: the rule's grid
+/// meets 2·kRuleTolerance on C_D and the error falls as the spacing squared, so refine = √(2·kRuleTolerance/τ)
+/// (at least 0.5).
+double tolerance_refine(double tolerance);
+
+/// Applies the scene's grid to p (n_θ, wall_refinement, wall_layer) where the case leaves them to magnus:
+/// all three when neither grid.n_theta nor grid.n_r is given; a case that gives either keeps today's
+/// uniform rings unless it gives grid.wall_refinement too. grid.refine and grid.tolerance scale the rule.
+void apply_scene_grid(const Case& c, NsParams& p);
+
+/// Throws std::invalid_argument (one line naming grid.tolerance, the grid it needs, its memory with the
+/// companion run, the limit and the estimate behind it) when the grid that grid.tolerance asks for needs more
+/// than `limit` bytes (0: the memory available). Before anything is solved; no check without a tolerance.
+void check_tolerance(const Case& c, const NsParams& p, size_t limit = 0);
+
+/// One line for the summary: what the rule chose and why, e.g. "rule: δ = 0.141a, 10 wall cells, …".
+std::string scene_grid_text(const Case& c, const NsParams& p);
+
+}  // namespace magnus
