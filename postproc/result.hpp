@@ -66,6 +66,16 @@ struct ViscousPart {
   std::vector<Snapshot> snapshots;       ///< the last output.snapshots states, oldest first
   /// time.mode = "steady": the grids solved, Newton's residuals, the Richardson values (state moved out).
   std::optional<SteadyStudy> steady_study;
+  /// Estimated discretisation error of cl_mean, cd_mean, strouhal, relative (1): |f − f_2h|/|f| against a
+  /// companion run on the grid twice as coarse (Roache's GCI, safety 3, order 2: 3|Δ|/(2² − 1) = |Δ|), plus
+  /// the means' spread when they had not converged; absent when undefined (error_note says why).
+  std::optional<double> cl_mean_rel_estimate, cd_mean_rel_estimate, strouhal_rel_estimate;
+  bool means_converged = true;              ///< the means (or steady values) had converged when it stopped
+  std::optional<double> means_spread_rel;   ///< the spread added when they had not (largest of C_L, C_D, St)
+  int companion_n_theta = 0, companion_n_r = 0;  ///< the companion's grid (0: no companion run)
+  std::optional<double> companion_seconds;       ///< the companion's wall time, s
+  std::string error_method;                      ///< how the estimate was formed ("" when none was)
+  std::string error_note;                        ///< why a part of it is undefined ("" when all are defined)
 };
 
 struct FlowResult {

@@ -145,6 +145,7 @@ void finish_point(const Case& base, const NsMapOptions& o, NsMapPoint& m) {
     c.output.fields = std::vector<std::string>{};
     RunHooks marching;
     marching.viscous.march_at_once = true;
+    marching.viscous.error_estimate = false;  // no companion run on the map's points
     const FlowResult r = run_case(c, marching);
     const ViscousPart& v = *r.viscous;
     m.source = v.steady      ? MapSource::marched_steady

@@ -52,7 +52,7 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
   if (c.time.mode == TimeMode::automatic && hooks.march_at_once)
     choice.why = "auto: marched in time (asked to march at once); ";
   else if (c.time.mode == TimeMode::automatic && !resume) {
-    choice = auto_steady(c, p, g);
+    choice = auto_steady(c, p, g, hooks.error_estimate);
     if (choice.steady) return std::move(*choice.steady);
   }
   return march(c, p, g, unit, hooks, resume, choice);

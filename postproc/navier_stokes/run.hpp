@@ -36,6 +36,9 @@ struct ViscousHooks {
   /// time.mode = "auto" marches at once, without its Newton solve and stability test: the caller (the
   /// S map) already knows that the steady state Newton would find is unstable, or that there is none.
   bool march_at_once = false;
+  /// Run a companion on the grid twice as coarse beside the run, for the error estimate of its mean C_L,
+  /// mean C_D and St (postproc/navier_stokes/error_estimate.hpp); the S map and sweeps set it false.
+  bool error_estimate = true;
 };
 
 /// What time.mode = "auto" does first, decided from Re and α alone before any solve.

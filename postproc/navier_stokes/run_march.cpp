@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "postproc/navier_stokes/error_estimate.hpp"
 #include "postproc/navier_stokes/run_paths.hpp"
 #include "postproc/navier_stokes/unsteady.hpp"
 
@@ -154,12 +155,34 @@ FlowResult march(const Case& c, const NsParams& p, const PolarGrid& g, double un
   o.mean_tol = c.time.mean_tolerance;
   if (c.time.mode == TimeMode::unsteady) o.steady_tol = 0.0;  // march on: a steady flow runs to time.end
 
+  // The companion for the error estimate: from rest on the grid twice as coarse, beside the run.
+  const std::string refusal = hooks.error_estimate ? companion_refusal(p, g, resume != nullptr) : "";
+  const NsParams pc = companion_params(p, g);
+  std::unique_ptr<CompanionMarch> companion;
+  if (hooks.error_estimate && refusal.empty())
+    companion = start_companion(pc, o, march_start(c, pc, ns_grid(pc), unit, nullptr));
+
   MarchRecord rec(c, hooks, unit, start.t, resume);
   o.steps_taken = &rec.steps;
   o.on_step = [&rec](const NsState& s, const ViscousForces& f) { return rec.step(s, f); };
   UnsteadyResult run =
       run_unsteady(p, o, std::move(start), resume ? resume->history : std::vector<ForceSample>{});
-  return marched_result(c, p, run, rec, choice);
+  FlowResult r = marched_result(c, p, run, rec, choice);
+  if (!hooks.error_estimate) return r;
+  ViscousPart& v = *r.viscous;
+  v.means_converged = run.converged;
+  if (!companion) {
+    v.error_note = refusal;
+    return r;
+  }
+  const UnsteadyResult coarse = finish_companion(*companion);
+  v.companion_n_theta = pc.n_theta, v.companion_n_r = pc.n_r;
+  v.companion_seconds = coarse.wall_seconds;
+  v.error_method = fmt::format("from a companion run on {} × {}: |f − f_coarse|, 3× the Richardson estimate",
+                               pc.n_theta, pc.n_r);
+  estimate_from_companion(v, run, coarse,
+                          means_spread(run, o.converged_periods + 1, o.steady_window * 2.0 * p.a / p.U));
+  return r;
 }
 
 }  // namespace magnus

@@ -27,8 +27,9 @@ FlowResult steady_by_newton(const Case& c, const NsParams& p, const PolarGrid& g
 
 /// time.mode = "auto" (see auto_plan): Newton from the potential flow; a converged state that is linearly
 /// stable (leading eigenvalue Re λ < 0), or one where steady flow is certain, is the result; otherwise the
-/// flow is marched in time.
-AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g);
+/// flow is marched in time. error_estimate: a companion Newton solve on the grid twice as coarse beside it
+/// gives a steady result its error estimate.
+AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g, bool error_estimate);
 
 /// The march in time from rest (or from the checkpoint `resume`) to time.end, unit = D/U_ref (s): snapshots
 /// and checkpoints as the case asks, hooks called after every step; `choice` (what "auto" found before)

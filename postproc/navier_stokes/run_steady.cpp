@@ -4,9 +4,11 @@
 
 #include <cmath>
 #include <complex>
+#include <future>
 #include <stdexcept>
 #include <string>
 
+#include "postproc/navier_stokes/error_estimate.hpp"
 #include "postproc/navier_stokes/forces.hpp"
 #include "postproc/navier_stokes/run_paths.hpp"
 #include "postproc/navier_stokes/steady_study.hpp"
@@ -58,10 +60,58 @@ FlowResult steady_result(const Case& c, const NsParams& p, const PolarGrid& g, N
   return r;
 }
 
+/// The companion of a steady solve: Newton from the potential flow on the grid twice as coarse (pc), on a
+/// thread of its own (one thread), beside the case's solve.
+std::future<NewtonResult> start_companion_newton(NsParams pc, const NewtonOptions& o) {
+  pc.threads = 1;
+  return std::async(std::launch::async, [pc, o] { return solve_steady(pc, potential_guess(pc, ns_grid(pc)), o); });
+}
+
+/// The steady values of a converged solve as a run's result (C_L, C_D; ok = Newton converged).
+UnsteadyResult steady_values(const NsParams& p, double rho, const NewtonResult& nr) {
+  UnsteadyResult u;
+  u.ok = nr.converged;
+  u.message = nr.message;
+  u.steady = u.converged = true;
+  if (!nr.converged) return u;
+  const ViscousForces f = viscous_forces(ns_grid(p), p, rho, nr.state);
+  u.C_L_mean = f.C_L.value_or(0.0), u.C_D_mean = f.C_D.value_or(0.0);
+  return u;
+}
+
+/// The error estimate of the steady result r of the solve `fine` from its companion's solve (pc its grid).
+void steady_estimate(FlowResult& r, const NsParams& p, const NsParams& pc, const NewtonResult& fine,
+                     const NewtonResult& coarse) {
+  ViscousPart& v = *r.viscous;
+  const double rho = r.c.scene.density;
+  v.companion_n_theta = pc.n_theta, v.companion_n_r = pc.n_r;
+  v.companion_seconds = coarse.wall_seconds;
+  v.error_method = fmt::format(
+      "from a companion Newton solve on {} × {}: |f − f_coarse|, 3× the Richardson estimate", pc.n_theta, pc.n_r);
+  estimate_from_companion(v, steady_values(p, rho, fine), steady_values(pc, rho, coarse), MeansSpread{});
+}
+
 /// The status tail of a converged Newton solve.
 std::string newton_text(const NewtonResult& nr) {
   return fmt::format("steady, by Newton's method: {} steps, residual {:.1e}", nr.iterations,
                      nr.residuals.empty() ? 0.0 : nr.residuals.back());
+}
+
+}  // namespace
+
+namespace {
+
+/// time.mode = "steady": the study's Richardson bars as the estimates, (|f* − f_N| + its bar)/|f_N|.
+void study_estimate(ViscousPart& v, const SteadyStudy& study) {
+  v.error_method = "from the grid study: |f − f_Richardson| + its error bar";
+  auto rel = [](const std::optional<Richardson>& x) -> std::optional<double> {
+    if (!x || !(std::fabs(x->finest) >= kEstimateZero)) return std::nullopt;
+    return (std::fabs(x->value - x->finest) + x->error) / std::fabs(x->finest);
+  };
+  v.cl_mean_rel_estimate = rel(study.C_L), v.cd_mean_rel_estimate = rel(study.C_D);
+  if (!v.cl_mean_rel_estimate || !v.cd_mean_rel_estimate)
+    v.error_note = study.levels.size() < 2 ? "one grid solved: no Richardson estimate"
+                                           : "C_L or C_D ≈ 0 (or U = 0): no relative error";
 }
 
 }  // namespace
@@ -83,11 +133,12 @@ FlowResult steady_by_newton(const Case& c, const NsParams& p, const PolarGrid& g
   NsState state = std::move(study.state);
   study.state = NsState{};
   FlowResult r = steady_result(c, p, g, std::move(state), status, study.wall_seconds, nullptr);
+  study_estimate(*r.viscous, study);
   r.viscous->steady_study = std::move(study);
   return r;
 }
 
-AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g) {
+AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g, bool error_estimate) {
   AutoChoice a;
   const AutoPlan plan = auto_plan(p);
   if (plan.start == AutoStart::march) {
@@ -96,6 +147,15 @@ AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g) {
   }
   NewtonOptions o;
   o.max_iterations = 15;
+  const std::string refusal = error_estimate ? companion_refusal(p, g, false) : "";
+  const NsParams pc = companion_params(p, g);
+  std::future<NewtonResult> companion;
+  if (error_estimate && refusal.empty()) companion = start_companion_newton(pc, o);
+  // The estimate of a steady result: from the companion's solve (it waits for it), or why there is none.
+  auto estimate = [&](FlowResult& r, const NewtonResult& fine) {
+    if (companion.valid()) steady_estimate(r, p, pc, fine, companion.get());
+    else if (error_estimate) r.viscous->error_note = refusal;
+  };
   const NewtonResult nr = solve_steady(p, potential_guess(p, g), o);
   a.newton_seconds = nr.wall_seconds;
   if (!nr.converged) {
@@ -105,6 +165,7 @@ AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g) {
   if (plan.start == AutoStart::newton_only) {
     a.steady = steady_result(c, p, g, nr.state, "auto: steady (" + plan.why + "); " + newton_text(nr),
                              nr.wall_seconds, nullptr);
+    estimate(*a.steady, nr);
     return a;
   }
   StabilityResult st;
@@ -136,6 +197,7 @@ AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g) {
         fmt::format("auto: stable ({}{}); {}", lam,
                     st.covered ? "" : "; not verified: the search left a gap right of it", newton_text(nr)),
         nr.wall_seconds, &st);
+    estimate(*a.steady, nr);
   } else
     a.why = fmt::format("auto: marched in time (the steady state is unstable: {}); ", lam);
   return a;

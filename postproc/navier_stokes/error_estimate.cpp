@@ -1,0 +1,112 @@
+#include "postproc/navier_stokes/error_estimate.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "postproc/navier_stokes/periodic.hpp"
+#include "postproc/result.hpp"
+
+namespace magnus {
+
+NsParams companion_params(const NsParams& p, const PolarGrid& fine) {
+  NsParams pc = p;
+  pc.n_theta = (fine.n_theta / 2 + 1) / 2 * 2;
+  pc.n_r = (fine.n_r - 1) / 2 + 1;
+  return pc;
+}
+
+std::string companion_refusal(const NsParams& p, const PolarGrid& fine, bool resumed) {
+  if (!(p.U > 0.0)) return "U = 0: no coefficients to estimate";
+  if (resumed) return "resumed from a checkpoint: a companion would march from rest, past the run's end";
+  const NsParams pc = companion_params(p, fine);
+  if (pc.n_theta < kCompanionMinTheta)
+    return fmt::format("the grid twice as coarse, n_θ {}, is below {} points", pc.n_theta, kCompanionMinTheta);
+  return "";
+}
+
+namespace {
+
+/// (max − min)/|f| of values (0 when fewer than two or f = 0).
+double spread_of(const std::vector<double>& x, double f) {
+  if (x.size() < 2 || !(std::fabs(f) > 0.0)) return 0.0;
+  const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+  return (*hi - *lo) / std::fabs(f);
+}
+
+}  // namespace
+
+MeansSpread means_spread(const UnsteadyResult& run, int periods, double window) {
+  MeansSpread s;
+  const std::vector<ForceSample>& h = run.history;
+  if (h.empty()) return s;
+  if (run.periodic) {
+    const std::vector<PeriodWindow> w = lift_periods(h, size_t(std::max(2, periods)));
+    std::vector<double> L, D, T;
+    for (const PeriodWindow& p : w) L.push_back(p.C_L), D.push_back(p.C_D), T.push_back(p.length());
+    s.cl = spread_of(L, run.C_L_mean), s.cd = spread_of(D, run.C_D_mean);
+    s.st = spread_of(T, run.period);
+    return s;
+  }
+  const ForceSample& last = h.back();
+  const auto from = std::lower_bound(h.begin(), h.end(), last.t - window,
+                                     [](const ForceSample& x, double t) { return x.t < t; });
+  s.cl = spread_of({from->C_L, last.C_L}, last.C_L), s.cd = spread_of({from->C_D, last.C_D}, last.C_D);
+  return s;
+}
+
+std::optional<double> relative_estimate(double f_h, double f_2h, double spread) {
+  if (!std::isfinite(f_h) || !std::isfinite(f_2h) || !(std::fabs(f_h) >= kEstimateZero)) return std::nullopt;
+  return std::fabs(f_h - f_2h) / std::fabs(f_h) + spread;
+}
+
+void estimate_from_companion(ViscousPart& v, const UnsteadyResult& fine, const UnsteadyResult& coarse,
+                             const MeansSpread& spread) {
+  v.means_converged = fine.converged;
+  if (fine.interrupted) {
+    v.error_note = "the run was interrupted";
+    return;
+  }
+  if (!coarse.ok) {
+    v.error_note = "the companion run failed: " + coarse.message;
+    return;
+  }
+  if (coarse.interrupted) {
+    v.error_note = "the companion had not reached its end when the run ended";
+    return;
+  }
+  const MeansSpread add = fine.converged ? MeansSpread{} : spread;
+  if (!fine.converged) v.means_spread_rel = std::max({add.cl, add.cd, fine.periodic ? add.st : 0.0});
+  std::string note;
+  auto one = [&](const char* name, double f_h, double f_2h, double s, std::optional<double>& out) {
+    out = relative_estimate(f_h, f_2h, s);
+    if (!out) note += fmt::format("{}{} ≈ 0: no relative error", note.empty() ? "" : "; ", name);
+  };
+  one("C_L", fine.C_L_mean, coarse.C_L_mean, add.cl, v.cl_mean_rel_estimate);
+  one("C_D", fine.C_D_mean, coarse.C_D_mean, add.cd, v.cd_mean_rel_estimate);
+  if (fine.St > 0.0 && coarse.St > 0.0)
+    v.strouhal_rel_estimate = relative_estimate(fine.St, coarse.St, add.st);
+  else if (fine.St > 0.0)
+    note += std::string(note.empty() ? "" : "; ") + "St: the companion found no confirmed period";
+  v.error_note = note;
+}
+
+std::unique_ptr<CompanionMarch> start_companion(NsParams pc, UnsteadyOptions o, NsState start) {
+  auto m = std::make_unique<CompanionMarch>();
+  pc.threads = 1;
+  std::atomic<bool>* stop = &m->stop;
+  o.on_step = [stop](const NsState&, const ViscousForces&) { return !stop->load(); };
+  o.steps_taken = nullptr;
+  m->result = std::async(std::launch::async, [pc, o, s = std::move(start)]() mutable {
+    return run_unsteady(pc, o, std::move(s));
+  });
+  return m;
+}
+
+UnsteadyResult finish_companion(CompanionMarch& m) {
+  m.stop = true;
+  return m.result.get();
+}
+
+}  // namespace magnus

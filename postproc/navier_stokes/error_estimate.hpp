@@ -1,0 +1,63 @@
+#pragma once
+// The error bar of every viscous run: a companion run on the grid twice as coarse, beside the run on the
+// second core, and the relative difference of their mean C_L, mean C_D and St (Roache's grid-convergence
+// index with safety factor 3 and order 2, 3·|f_h − f_2h|/(2² − 1) = |f_h − f_2h|), plus the spread of the
+// means between the last periods when they had not converged when the run stopped.
+#include <atomic>
+#include <future>
+#include <memory>
+#include <string>
+
+#include "postproc/navier_stokes/unsteady.hpp"
+
+namespace magnus {
+
+struct ViscousPart;
+
+/// The companion's fewest points in θ: below it the run is not a grid of the same flow.
+constexpr int kCompanionMinTheta = 8;
+/// |f_h| below which a coefficient counts as 0 (C_L at α = 0): a relative error of it is undefined.
+constexpr double kEstimateZero = 1e-3;
+
+/// The parameters of the grid twice as coarse as `fine` (the grid of p): every field copied, n_θ/2 (even)
+/// and (n_r − 1)/2 + 1 rings (R, the ring map, the orders the same).
+NsParams companion_params(const NsParams& p, const PolarGrid& fine);
+
+/// Why a run gets no companion ("" when it does): U = 0 (no coefficients), a resumed run, a companion grid
+/// below kCompanionMinTheta.
+std::string companion_refusal(const NsParams& p, const PolarGrid& fine, bool resumed);
+
+/// Relative spread of the means that had not converged: max − min of the last periods' means of C_L, C_D
+/// and of their lengths (St), each over |f|; with no period, the drift |f(t) − f(t − window)|/|f| of the
+/// last window (s). 0 where undefined.
+struct MeansSpread {
+  double cl = 0.0, cd = 0.0, st = 0.0;
+};
+MeansSpread means_spread(const UnsteadyResult& run, int periods, double window);
+
+/// e = |f_h − f_2h|/|f_h| + spread (relative, 1): Roache's GCI 3·|f_h − f_2h|/(2² − 1) for order 2 on a
+/// grid ratio 2, the safety factor 3 covering an order that is not yet 2. Undefined when |f_h| < kEstimateZero
+/// or either value is not finite.
+std::optional<double> relative_estimate(double f_h, double f_2h, double spread);
+
+/// The estimates of v (cl_mean_rel_estimate, …, means_converged, means_spread_rel, error_note) from the
+/// run `fine` and its companion `coarse` (U > 0); undefined, with the reason in error_note, when the
+/// companion failed or was stopped before its end, or the run was interrupted.
+void estimate_from_companion(ViscousPart& v, const UnsteadyResult& fine, const UnsteadyResult& coarse,
+                             const MeansSpread& spread);
+
+/// A companion march on its own thread; its destructor stops it (the future then waits for its end).
+struct CompanionMarch {
+  std::atomic<bool> stop{false};
+  std::future<UnsteadyResult> result;
+  ~CompanionMarch() { stop = true; }
+};
+
+/// Starts run_unsteady(pc, o, start) on a thread of its own (pc.threads = 1, no hooks): it stops when its
+/// own criteria say so, or when `stop` is set.
+std::unique_ptr<CompanionMarch> start_companion(NsParams pc, UnsteadyOptions o, NsState start);
+
+/// Stops the companion if it still runs and returns its result (interrupted when it was stopped).
+UnsteadyResult finish_companion(CompanionMarch& m);
+
+}  // namespace magnus
