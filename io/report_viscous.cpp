@@ -170,6 +170,32 @@ std::string figures_text(const FlowResult& r, bool unresolved) {
   return s;
 }
 
+/// The run's estimate of its discretisation error (one line), what is undefined and why, and what the
+/// means' spread adds when they had not converged; "" when no estimate was asked (the map's points).
+std::string estimate_text(const ViscousPart& v) {
+  if (v.error_method.empty() && v.error_note.empty()) return "";
+  std::string s;
+  auto line = [&s](const std::string& label, const std::string& text) { s += labelled(label, text); };
+  const bool any = v.cl_mean_rel_estimate || v.cd_mean_rel_estimate || v.strouhal_rel_estimate;
+  if (!any) {
+    line("error (est.)", "undefined (" + v.error_note + ")");
+    return s;
+  }
+  auto pct = [](const char* name, const std::optional<double>& e) {
+    return e ? fmt::format("{} ±{}%", name, num(100.0 * *e, "{:.2f}")) : fmt::format("{} undefined", name);
+  };
+  std::string parts = pct("C_L", v.cl_mean_rel_estimate) + ", " + pct("C_D", v.cd_mean_rel_estimate);
+  if (!v.steady) parts += ", " + pct("St", v.strouhal_rel_estimate);
+  line("error (est.)", parts + " (" + v.error_method + ")");
+  if (!v.error_note.empty()) line("", "undefined: " + v.error_note);
+  if (!v.means_converged && v.means_spread_rel)
+    line("", fmt::format("the means had not converged when the run stopped at time.end: the {}, {}%, is part "
+                         "of the estimate",
+                         v.periodic ? "spread between periods" : "drift over the last window",
+                         num(100.0 * *v.means_spread_rel, "{:.2f}")));
+  return s;
+}
+
 /// Separation, recirculation, the steady study, stability, and the notes on Re, D/Re and R.
 std::string findings_text(const FlowResult& r) {
   const Scene& sc = r.c.scene;
@@ -257,6 +283,7 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
   s += wall_text(r, cells, raise);
   s += run_text(r);
   s += figures_text(r, unresolved);
+  s += estimate_text(v);
   s += scene_lines(r);  // direction, a rotor sail's course, the span's totals
   s += findings_text(r);
   if (!output_path.empty())

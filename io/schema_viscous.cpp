@@ -10,6 +10,7 @@ namespace {
 const char* const P = "/parameters";
 const char* const F = "/forces";
 const char* const T = "/timing";
+const char* const E = "/errors";
 
 /// The viscous rows of /parameters: ν, Re, the time unit and the run's settings.
 std::vector<AttrSpec> viscous_parameter_rows() {
@@ -112,11 +113,59 @@ std::vector<AttrSpec> viscous_timing_rows() {
   };
 }
 
+/// A viscous integer attribute (absent when 0).
+AttrSpec vint(const char* group, const char* name, const char* description, int ViscousPart::*m) {
+  return only(Models::viscous,
+              integer(
+                  group, name, description,
+                  [m](const FlowResult& r) { return r.viscous && (*r.viscous).*m ? opt(double((*r.viscous).*m)) : std::nullopt; },
+                  [m](FlowResult& r, double v) { vis(r).*m = checked_cast<int>(v, "companion grid"); }));
+}
+
+/// A viscous text attribute (absent when empty).
+AttrSpec vtext(const char* group, const char* name, const char* description, std::string ViscousPart::*m) {
+  return only(Models::viscous,
+              Flow::when([m](const FlowResult& r) { return r.viscous && !((*r.viscous).*m).empty(); },
+                         text(
+                             group, name, description,
+                             [m](const FlowResult& r) { return r.viscous ? (*r.viscous).*m : std::string(); },
+                             [m](FlowResult& r, const std::string& v) { vis(r).*m = v; })));
+}
+
+/// The viscous rows of /errors: the run's own estimate of its discretisation error.
+std::vector<AttrSpec> viscous_error_rows() {
+  return {
+      vnum(E, "cl_mean_rel_estimate", "1",
+           "estimated relative error of cl_mean: |f − f_coarse|/|f| against the grid twice as coarse (3× the "
+           "Richardson estimate), plus the means' spread when they had not converged",
+           &ViscousPart::cl_mean_rel_estimate),
+      vnum(E, "cd_mean_rel_estimate", "1", "estimated relative error of cd_mean (as cl_mean_rel_estimate)",
+           &ViscousPart::cd_mean_rel_estimate),
+      vnum(E, "strouhal_rel_estimate", "1", "estimated relative error of strouhal (as cl_mean_rel_estimate)",
+           &ViscousPart::strouhal_rel_estimate),
+      only(Models::viscous,
+           integer(
+               E, "means_converged", "1: the means (or steady values) had converged when the run stopped, 0: not",
+               [](const FlowResult& r) { return r.viscous ? opt(r.viscous->means_converged ? 1.0 : 0.0) : std::nullopt; },
+               [](FlowResult& r, double v) { vis(r).means_converged = v != 0.0; })),
+      vnum(E, "means_spread_rel", "1",
+           "the spread of the last periods' means (or the last window's drift) in the estimate, relative",
+           &ViscousPart::means_spread_rel),
+      vint(E, "companion_n_theta", "points in θ of the companion run's grid", &ViscousPart::companion_n_theta),
+      vint(E, "companion_n_r", "rings of the companion run's grid", &ViscousPart::companion_n_r),
+      vtext(E, "estimate_method", "how the error estimate was formed", &ViscousPart::error_method),
+      vtext(E, "estimate_note", "why a part of the error estimate is undefined", &ViscousPart::error_note),
+      vnum(T, "companion_s", "s", "wall clock, the companion run of the error estimate (beside the run)",
+           &ViscousPart::companion_seconds),
+  };
+}
+
 }  // namespace
 
 std::vector<AttrSpec> viscous_attributes() {
   std::vector<AttrSpec> table;
-  for (const auto& part : {viscous_parameter_rows(), viscous_force_rows(), viscous_timing_rows()})
+  for (const auto& part :
+       {viscous_parameter_rows(), viscous_force_rows(), viscous_timing_rows(), viscous_error_rows()})
     table.insert(table.end(), part.begin(), part.end());
   return table;
 }

@@ -82,3 +82,19 @@ def test_snapshots_of_a_navier_stokes_run(tmp_path):
         assert np.array_equal(f["snapshots/psi"][...], s["psi"])
     assert r.units["snapshots"]["vorticity"] == "1/s"
     assert magnus.run(DEMO, grid__n_theta=16).snapshots is None
+
+
+def test_a_navier_stokes_run_states_its_error(tmp_path):
+    # The companion run on the grid twice as coarse gives every run its error estimate, relative.
+    path = tmp_path / "e.h5"
+    r = magnus.run(NS_CASE, set=NS_TINY, output=path)
+    e = r.errors
+    for k in ("cl_mean_rel_estimate", "cd_mean_rel_estimate"):
+        assert np.isfinite(e[k]) and e[k] > 0, k
+        assert r.units["errors"][k] == "1"
+    assert e["means_converged"] == 0  # one convective time unit: far from converged
+    assert e["companion_n_theta"] == 16
+    back = magnus.read(path)
+    assert back.errors["cl_mean_rel_estimate"] == e["cl_mean_rel_estimate"]
+    with h5py.File(path, "r") as f:
+        assert f["errors"].attrs["cd_mean_rel_estimate"] == e["cd_mean_rel_estimate"]

@@ -163,6 +163,8 @@ const std::map<std::string, std::vector<std::string>> kSummaryToJson = {
     {"grid study+", {"/derived/steady_study/levels"}},
     {"Richardson", {"/derived/steady_study/cd"}},
     {"Richardson+", {"/derived/steady_study/cl", "/derived/steady_study/recirculation_length"}},
+    {"error (est.)", {"/errors/estimate_method"}},
+    {"error (est.)+", {"/errors/means_converged"}},
 };
 
 /// Model-specific figures of labels both summaries share.
@@ -264,7 +266,14 @@ TEST_CASE("run --json, navier-stokes: the means, St, S/(2πρa²), the ideal, st
   CHECK(
       j["forces"]["magnus_ratio"]["value"].get<double>() ==
       Approx(j["forces"]["cl_mean"]["value"].get<double>() / j["forces"]["cl_ideal"]["value"].get<double>()));
-  CHECK_FALSE(j.contains("errors"));
+  // The run's own error estimate (a companion on the grid twice as coarse): /errors, relative, positive.
+  for (const char* k : {"cl_mean_rel_estimate", "cd_mean_rel_estimate", "strouhal_rel_estimate"}) {
+    INFO(k);
+    REQUIRE(j["errors"].contains(k));
+    CHECK(j["errors"][k]["units"] == "1");
+    CHECK(j["errors"][k]["value"].get<double>() > 0.0);
+  }
+  CHECK(j["errors"]["means_converged"]["value"].get<double>() == 0.0);  // time.end 4: far from converged
   CHECK(j["separation"]["units"] == "rad");
 }
 
