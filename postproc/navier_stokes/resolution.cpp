@@ -20,7 +20,7 @@ ResolvingGrid resolving_grid(const Case& c, double cells) {
   g.n_theta = 2.0 * std::ceil(M_PI / (defaults.radial_refinement * h));
   g.n_r = std::ceil(std::log(c.grid.outer_radius) / h - 1e-9) + 1.0;
   g.nodes = g.n_theta * g.n_r;
-  g.bytes = g.nodes * (kMarchBytesPerNode + 16.0 * std::max(0, c.output.snapshots));
+  g.bytes = g.nodes * ((1.0 + kCompanionBytesShare) * kMarchBytesPerNode + 16.0 * std::max(0, c.output.snapshots));
   return g;
 }
 

@@ -16,12 +16,16 @@ constexpr double kWallCellsNeeded = 2.0;
 /// i.e. 190 B per node above the program's own 24 MB.
 constexpr double kMarchBytesPerNode = 200.0;
 
+/// The companion run of the error estimate (the grid twice as coarse, a quarter of the nodes) beside it:
+/// its bytes as a share of the run's march.
+constexpr double kCompanionBytesShare = 0.25;
+
 /// The coarsest navier-stokes grid of the case's cell shape (Δξ = Δθ/(5/3), R/a as given) that puts
 /// `cells` cells of its first ring across D/√(Re(1 + α²)): Δξ = ln(1 + 2/(cells·√(Re(1 + α²)))).
 struct ResolvingGrid {
   double n_theta = 0.0, n_r = 0.0;  ///< points in θ (even), rings
   double nodes = 0.0;               ///< n_θ·n_r
-  double bytes = 0.0;               ///< a march on it with the case's output.snapshots, bytes
+  double bytes = 0.0;  ///< a march on it with the case's output.snapshots and its companion, bytes
 };
 /// Needs U > 0 (Re defined), cells > 0.
 ResolvingGrid resolving_grid(const Case& c, double cells);
