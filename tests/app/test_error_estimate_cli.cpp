@@ -28,7 +28,7 @@ std::string write_ns_case(const std::string& dir, double Re, double alpha, doubl
 
 }  // namespace
 
-TEST_CASE("navier-stokes run: the error estimate in the file and the summary; unconverged means add their "
+TEST_CASE("navier-stokes run: the error estimate in the file and the summary, unconverged means add their "
           "spread",
           "[app][ns][estimate]") {
   const std::string dir = test::temp_dir("ns-estimate");

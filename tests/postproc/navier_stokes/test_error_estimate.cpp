@@ -39,7 +39,7 @@ TEST_CASE("companion_params: n_θ/2 and (n_r − 1)/2 + 1 rings, every other fie
   CHECK(companion_refusal(p, ns_grid(p), false).find("below 8") != std::string::npos);
 }
 
-TEST_CASE("relative_estimate: |f_h − f_2h|/|f_h| + spread; undefined at f_h ≈ 0 and for non-finite input",
+TEST_CASE("relative_estimate: |f_h − f_2h|/|f_h| + spread, undefined at f_h ≈ 0 and for non-finite input",
           "[estimate]") {
   CHECK(*relative_estimate(2.0, 1.9, 0.0) == Approx(0.05).epsilon(1e-12));
   CHECK(*relative_estimate(-2.0, -2.1, 0.01) == Approx(0.06).epsilon(1e-12));
