@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 
 #include "postproc/navier_stokes/periodic.hpp"
 #include "postproc/result.hpp"
@@ -72,8 +73,8 @@ void estimate_from_companion(ViscousPart& v, const UnsteadyResult& fine, const U
     v.error_note = "the companion run failed: " + coarse.message;
     return;
   }
-  if (coarse.interrupted) {
-    v.error_note = "the companion had not reached its end when the run ended";
+  if (coarse.interrupted && coarse.state.t < fine.state.t * (1.0 - 1e-9)) {
+    v.error_note = "the companion was stopped before it reached the run's time";
     return;
   }
   const MeansSpread add = fine.converged ? MeansSpread{} : spread;
@@ -95,17 +96,24 @@ void estimate_from_companion(ViscousPart& v, const UnsteadyResult& fine, const U
 std::unique_ptr<CompanionMarch> start_companion(NsParams pc, UnsteadyOptions o, NsState start) {
   auto m = std::make_unique<CompanionMarch>();
   pc.threads = 1;
-  std::atomic<bool>* stop = &m->stop;
-  o.on_step = [stop](const NsState&, const ViscousForces&) { return !stop->load(); };
+  std::atomic<double>* stop_at = &m->stop_at;
+  o.on_step = [stop_at](const NsState& s, const ViscousForces&) { return s.t < stop_at->load(); };
   o.steps_taken = nullptr;
   m->result = std::async(std::launch::async, [pc, o, s = std::move(start)]() mutable {
-    return run_unsteady(pc, o, std::move(s));
+    try {
+      return run_unsteady(pc, o, std::move(s));
+    } catch (const std::exception& e) {  // the companion's failure leaves the estimate undefined, not the run
+      UnsteadyResult failed;
+      failed.ok = false;
+      failed.message = failed.error = e.what();
+      return failed;
+    }
   });
   return m;
 }
 
-UnsteadyResult finish_companion(CompanionMarch& m) {
-  m.stop = true;
+UnsteadyResult finish_companion(CompanionMarch& m, double t_end) {
+  m.stop_at = t_end;
   return m.result.get();
 }
 

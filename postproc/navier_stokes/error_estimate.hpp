@@ -4,6 +4,7 @@
 // index with safety factor 3 and order 2, 3·|f_h − f_2h|/(2² − 1) = |f_h − f_2h|), plus the spread of the
 // means between the last periods when they had not converged when the run stopped.
 #include <atomic>
+#include <cmath>
 #include <future>
 #include <memory>
 #include <string>
@@ -42,22 +43,24 @@ std::optional<double> relative_estimate(double f_h, double f_2h, double spread);
 
 /// The estimates of v (cl_mean_rel_estimate, …, means_converged, means_spread_rel, error_note) from the
 /// run `fine` and its companion `coarse` (U > 0); undefined, with the reason in error_note, when the
-/// companion failed or was stopped before its end, or the run was interrupted.
+/// companion failed or was stopped before the run's time, or the run was interrupted.
 void estimate_from_companion(ViscousPart& v, const UnsteadyResult& fine, const UnsteadyResult& coarse,
                              const MeansSpread& spread);
 
-/// A companion march on its own thread; its destructor stops it (the future then waits for its end).
+/// A companion march on its own thread; its destructor stops it at once (the future then waits for it).
 struct CompanionMarch {
-  std::atomic<bool> stop{false};
+  std::atomic<double> stop_at{HUGE_VAL};  ///< it stops at its first step at or past this time, s
   std::future<UnsteadyResult> result;
-  ~CompanionMarch() { stop = true; }
+  ~CompanionMarch() { stop_at = -HUGE_VAL; }
 };
 
 /// Starts run_unsteady(pc, o, start) on a thread of its own (pc.threads = 1, no hooks): it stops when its
-/// own criteria say so, or when `stop` is set.
+/// own criteria say so, or at stop_at.
 std::unique_ptr<CompanionMarch> start_companion(NsParams pc, UnsteadyOptions o, NsState start);
 
-/// Stops the companion if it still runs and returns its result (interrupted when it was stopped).
-UnsteadyResult finish_companion(CompanionMarch& m);
+/// The companion stopped at the time t_end (s) the run ended at — at once if it is past it, else once it
+/// gets there (a companion behind the run, on a loaded machine, catches up) — and its result (interrupted
+/// when it was stopped; t_end = −∞: at once, for a run that was interrupted).
+UnsteadyResult finish_companion(CompanionMarch& m, double t_end);
 
 }  // namespace magnus

@@ -175,7 +175,7 @@ FlowResult march(const Case& c, const NsParams& p, const PolarGrid& g, double un
     v.error_note = refusal;
     return r;
   }
-  const UnsteadyResult coarse = finish_companion(*companion);
+  const UnsteadyResult coarse = finish_companion(*companion, run.interrupted ? -HUGE_VAL : run.state.t);
   v.companion_n_theta = pc.n_theta, v.companion_n_r = pc.n_r;
   v.companion_seconds = coarse.wall_seconds;
   v.error_method = fmt::format("from a companion run on {} × {}: |f − f_coarse|, 3× the Richardson estimate",

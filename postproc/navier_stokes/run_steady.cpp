@@ -64,7 +64,15 @@ FlowResult steady_result(const Case& c, const NsParams& p, const PolarGrid& g, N
 /// thread of its own (one thread), beside the case's solve.
 std::future<NewtonResult> start_companion_newton(NsParams pc, const NewtonOptions& o) {
   pc.threads = 1;
-  return std::async(std::launch::async, [pc, o] { return solve_steady(pc, potential_guess(pc, ns_grid(pc)), o); });
+  return std::async(std::launch::async, [pc, o] {
+    try {
+      return solve_steady(pc, potential_guess(pc, ns_grid(pc)), o);
+    } catch (const std::exception& e) {  // the companion's failure leaves the estimate undefined, not the run
+      NewtonResult failed;
+      failed.message = e.what();
+      return failed;
+    }
+  });
 }
 
 /// The steady values of a converged solve as a run's result (C_L, C_D; ok = Newton converged).
@@ -96,10 +104,6 @@ std::string newton_text(const NewtonResult& nr) {
   return fmt::format("steady, by Newton's method: {} steps, residual {:.1e}", nr.iterations,
                      nr.residuals.empty() ? 0.0 : nr.residuals.back());
 }
-
-}  // namespace
-
-namespace {
 
 /// time.mode = "steady": the study's Richardson bars as the estimates, (|f* − f_N| + its bar)/|f_N|.
 void study_estimate(ViscousPart& v, const SteadyStudy& study) {

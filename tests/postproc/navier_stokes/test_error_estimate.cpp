@@ -84,9 +84,16 @@ TEST_CASE("estimate_from_companion: a failed, stopped or interrupted pair gives 
   UnsteadyResult failed = coarse;
   failed.ok = false, failed.message = "CFL above the limit at t = 3 s";
   none(fine, failed, "the companion run failed: CFL above");
+  // A companion stopped short of the run's time has no means of the same flow; one stopped at it has.
+  fine.state.t = 50.0;
   UnsteadyResult stopped = coarse;
   stopped.interrupted = true;
-  none(fine, stopped, "the companion had not reached its end");
+  stopped.state.t = 20.0;
+  none(fine, stopped, "the companion was stopped before it reached the run's time");
+  stopped.state.t = 50.0;
+  ViscousPart caught_up;
+  estimate_from_companion(caught_up, fine, stopped, {});
+  CHECK(caught_up.cl_mean_rel_estimate);
   UnsteadyResult interrupted = fine;
   interrupted.interrupted = true;
   none(interrupted, coarse, "the run was interrupted");
