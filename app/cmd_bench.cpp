@@ -11,6 +11,7 @@
 #include "io/bench_table.hpp"
 #include "io/case_file.hpp"
 #include "io/hdf5_io.hpp"
+#include "postproc/memory_bandwidth.hpp"
 #include "postproc/navier_stokes/bench.hpp"
 #include "plot/curves.hpp"
 
@@ -28,6 +29,7 @@ void bench_viscous(const Case& c, std::vector<int> ladder, int steps, int thread
   if (ladder.empty()) ladder = {c.grid.n_theta / 2 + (c.grid.n_theta / 2) % 2, c.grid.n_theta, 2 * c.grid.n_theta};
   for (int n : ladder)
     if (n % 2) throw std::runtime_error(fmt::format("--ladder: n_theta = {} must be even", n));
+  const double bandwidth = triad_bandwidth(threads);  // bytes/s, measured once, before the steps
   const auto rows = run_ns_bench(c, ladder, steps, 20, threads);
   // With --csv - the CSV alone goes to standard output, the table to standard error.
   std::FILE* table = is_stdout(csv) ? stderr : stdout;
@@ -36,6 +38,10 @@ void bench_viscous(const Case& c, std::vector<int> ladder, int steps, int thread
                "%d thread%s; ms per step and share)\n",
                c.title.c_str(), c.scene.reynolds(), c.scene.spin_ratio(), steps, threads, threads == 1 ? "" : "s");
   std::fputs(ns_bench_table(rows).c_str(), table);
+  NsBound bound;
+  bound.bytes_per_node = kNsStepBytesPerNode, bound.array_bytes_per_node = kNsStepArrayBytesPerNode;
+  bound.bandwidth = bandwidth, bound.cache = double(last_level_cache_bytes()), bound.threads = threads;
+  std::fputs(ns_bench_bound(rows, bound).c_str(), table);
   std::fputs("(The error of a whole run against published values, and its wall time, is the README's validation "
              "table: ctest -L validation.)\n",
              table);

@@ -46,8 +46,8 @@ std::vector<std::pair<const char*, double>> parts(const NsStepTimes& t) {
 }  // namespace
 
 std::string ns_bench_table(const std::vector<NsBenchRow>& rows) {
-  std::string s = fmt::format("{:>6}{:>6}{:>9}{:>11}{:>9}{:>10}", "n_θ", "n_r", "nodes", "Δt (D/U)", "steps/s",
-                              "ms/step");
+  std::string s = fmt::format("{:>6}{:>6}{:>9}{:>11}{:>9}{:>10}{:>9}", "n_θ", "n_r", "nodes", "Δt (D/U)",
+                              "steps/s", "ms/step", "ns/node");
   for (const auto& [name, v] : parts(NsStepTimes{})) {
     (void)v;
     s += fmt::format("{:>17}", name);
@@ -55,8 +55,8 @@ std::string ns_bench_table(const std::vector<NsBenchRow>& rows) {
   s += "\n";
   for (const auto& r : rows) {
     const double n = double(std::max(r.times.steps, 1L)), total = r.times.total();
-    s += fmt::format("{:>6}{:>6}{:>9}{:>11.4g}{:>9.0f}{:>10.3f}", r.n_theta, r.n_r, r.nodes, r.dt / r.time_unit,
-                     r.steps_per_second(), 1e3 * r.wall_s / n);
+    s += fmt::format("{:>6}{:>6}{:>9}{:>11.4g}{:>9.0f}{:>10.3f}{:>9.1f}", r.n_theta, r.n_r, r.nodes,
+                     r.dt / r.time_unit, r.steps_per_second(), 1e3 * r.wall_s / n, r.ns_per_node());
     for (const auto& [name, v] : parts(r.times)) {
       (void)name;
       s += fmt::format("{:>17}", fmt::format("{:.3f} ({:.0f}%)", 1e3 * v / n, total > 0 ? 100.0 * v / total : 0.0));
@@ -72,7 +72,7 @@ std::string ns_bench_csv(const std::vector<NsBenchRow>& rows) {
     (void)v;
     s += fmt::format(",{}_ms", name);
   }
-  s += "\n";
+  s += ",ns_per_node\n";
   for (const auto& r : rows) {
     const double n = double(std::max(r.times.steps, 1L));
     s += fmt::format("{},{},{},{:.6e},{:.6e},{},{:.6g},{:.6g}", r.n_theta, r.n_r, r.nodes, r.dt,
@@ -81,9 +81,31 @@ std::string ns_bench_csv(const std::vector<NsBenchRow>& rows) {
       (void)name;
       s += fmt::format(",{:.6g}", 1e3 * v / n);
     }
-    s += "\n";
+    s += fmt::format(",{:.6g}\n", r.ns_per_node());
   }
   return s;
+}
+
+std::string ns_bench_bound(const std::vector<NsBenchRow>& rows, const NsBound& b) {
+  const std::string measured = fmt::format("{} thread{}", b.threads, b.threads == 1 ? "" : "s");
+  if (!(b.bandwidth > 0.0) || !std::isfinite(b.bandwidth))
+    return fmt::format("The step moves about {:.0f} bytes per node; the memory bandwidth could not be measured "
+                       "(triad, {}).\n", b.bytes_per_node, measured);
+  const double bound = 1e9 * b.bytes_per_node / b.bandwidth;  // ns per node
+  std::string s = fmt::format("The step moves about {:.0f} bytes per node: at the measured {:.1f} GB/s (triad, {}) "
+                              "no step can take less than {:.1f} ns/node",
+                              b.bytes_per_node, b.bandwidth * 1e-9, measured, bound);
+  const NsBenchRow* big = nullptr;
+  for (const auto& r : rows)
+    if (!big || r.nodes > big->nodes) big = &r;
+  if (!big || !(big->ns_per_node() > 0.0)) return s + ".\n";
+  s += fmt::format("; this one takes {:.1f} at n_θ = {} ({:.1f}× the bound)", big->ns_per_node(), big->n_theta,
+                   big->ns_per_node() / bound);
+  const double arrays = b.array_bytes_per_node * double(big->nodes);
+  if (b.cache > 0.0 && arrays < b.cache)
+    s += fmt::format(", though its arrays ({:.0f} MB) fit in the {:.0f} MiB last-level cache", arrays * 1e-6,
+                     b.cache / double(1 << 20));
+  return s + ".\n";
 }
 
 }  // namespace magnus

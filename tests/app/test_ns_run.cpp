@@ -2,6 +2,8 @@
 // a checkpoint), a killed run resumed from its checkpoint. Coarse grids: each run takes well under a second.
 #include <fmt/core.h>
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -298,8 +300,25 @@ TEST_CASE("navier-stokes bench: the step cost per grid, split into its parts", "
                                   dir);
   INFO(o.err);
   REQUIRE(o.status == 0);
-  for (const char* part : {"advection", "diffusion", "Poisson", "wall", "forces", "steps/s"})
+  for (const char* part : {"advection", "diffusion", "Poisson", "wall", "forces", "steps/s", "ns/node"})
     CHECK(o.out.find(part) != std::string::npos);
+  // The bound line: bytes per node, the measured bandwidth and their quotient, finite and consistent
+  // (ns/node = bytes / (GB/s)); its values are data, not checked against a timing.
+  const size_t at = o.out.find("The step moves about ");
+  REQUIRE(at != std::string::npos);
+  double bytes = 0, gbs = 0, bound = 0;
+  REQUIRE(std::sscanf(o.out.c_str() + at, "The step moves about %lf bytes per node: at the measured %lf GB/s", &bytes,
+                      &gbs) == 2);
+  const size_t less = o.out.find("less than ", at);
+  REQUIRE(less != std::string::npos);
+  REQUIRE(std::sscanf(o.out.c_str() + less, "less than %lf ns/node", &bound) == 1);
+  REQUIRE(bytes > 0.0);
+  REQUIRE(std::isfinite(gbs));
+  REQUIRE(gbs > 0.0);
+  CHECK(bound == Approx(bytes / gbs).epsilon(0.05));  // both printed rounded to 0.1
+  const std::string bound_line = o.out.substr(at, o.out.find('\n', at) - at);
+  CHECK(bound_line.find("nan") == std::string::npos);
+  CHECK(bound_line.find("inf") == std::string::npos);
   const std::string csv = test::slurp(dir + "/b.csv");
   REQUIRE(test::lines(csv) == 3);  // header + two grids
   // Each row: the parts (ms per step) are measured inside the step, so they add up to at most the step's
@@ -312,8 +331,10 @@ TEST_CASE("navier-stokes bench: the step cost per grid, split into its parts", "
     std::stringstream ss(line);
     std::string cell;
     while (std::getline(ss, cell, ',')) v.push_back(std::stod(cell));
-    REQUIRE(v.size() == 14);
+    REQUIRE(v.size() == 15);
     REQUIRE(v[5] == 30);  // steps
+    REQUIRE(v[14] > 0.0);  // ns per node per step
+    CHECK(v[14] == Approx(1e6 * v[7] / v[2]).epsilon(1e-4));  // = ms/step over the nodes
     double sum = 0.0;
     for (size_t k = 8; k < 14; ++k) {
       REQUIRE(v[k] >= 0.0);
