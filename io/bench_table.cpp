@@ -92,8 +92,8 @@ std::string ns_bench_bound(const std::vector<NsBenchRow>& rows, const NsBound& b
     return fmt::format("The step moves about {:.0f} bytes per node; the memory bandwidth could not be measured "
                        "(triad, {}).\n", b.bytes_per_node, measured);
   const double bound = 1e9 * b.bytes_per_node / b.bandwidth;  // ns per node
-  std::string s = fmt::format("The step moves about {:.0f} bytes per node: at the measured {:.1f} GB/s (triad, {}) "
-                              "no step can take less than {:.1f} ns/node",
+  std::string s = fmt::format("The step moves about {:.0f} bytes per node: at the measured {:.3g} GB/s (triad, {}) "
+                              "no step can take less than {:.3g} ns/node",
                               b.bytes_per_node, b.bandwidth * 1e-9, measured, bound);
   const NsBenchRow* big = nullptr;
   for (const auto& r : rows)

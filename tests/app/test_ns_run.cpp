@@ -315,7 +315,7 @@ TEST_CASE("navier-stokes bench: the step cost per grid, split into its parts", "
   REQUIRE(bytes > 0.0);
   REQUIRE(std::isfinite(gbs));
   REQUIRE(gbs > 0.0);
-  CHECK(bound == Approx(bytes / gbs).epsilon(0.05));  // both printed rounded to 0.1
+  CHECK(bound == Approx(bytes / gbs).epsilon(0.02));  // both printed to 3 significant digits
   const std::string bound_line = o.out.substr(at, o.out.find('\n', at) - at);
   CHECK(bound_line.find("nan") == std::string::npos);
   CHECK(bound_line.find("inf") == std::string::npos);
