@@ -34,8 +34,8 @@ struct NsBenchRow {
 ///   wall closure      40: ζ̂ and ψ̂ read and written (32), φ_k and χ_k read (8)
 ///   back to the grid  64: two c2r (spectrum read, buffer written: 32), both buffers read, ζ and ψ written (32)
 ///   total            296 bytes/node; the outer ring's boundary and the forces' wall rings are O(n_θ).
-/// With each write's read-for-ownership (8 fresh arrays written) the traffic is 360; the triad's is 32/24 of
-/// its count, so the quotient of the two counts is the like-for-like bound.
+/// With each write's read-for-ownership (8 fresh arrays written) the traffic is 360, 1.22× the count; the
+/// triad's is 32/24 = 1.33× its count: the quotient of the two counts is near like-for-like (~10% low).
 constexpr double kNsStepBytesPerNode = 56 + 60 + 76 + 40 + 64;
 /// Bytes per node of the arrays a step touches (its working set): nine real arrays (old and new ψ, ζ, N; f
 /// and the two c2r buffers: 72), two spectra (ζ̂, ψ̂: 16), six per-mode factors (1/pivot and upper of the two
