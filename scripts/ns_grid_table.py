@@ -1,0 +1,139 @@
+#!/usr/bin/python3
+"""The navier-stokes default grid's error across the (Re, α) plane, and its own error estimate.
+
+For each scene the case is run on the scene's default grid (grid.refine = 1) and on the grid twice as
+fine (grid.refine = 2). The reference is the Richardson extrapolation of the two at order 2:
+f_ref = f_2 + (f_2 − f_1)/3. The actual error of the default grid is |f_1 − f_ref|/|f_ref|; the estimate
+is what the default run states itself (from its companion run on the grid twice as coarse), so the two
+come from different grid pairs. Prints a markdown table; --csv FILE keeps the numbers.
+
+  /usr/bin/python3 scripts/ns_grid_table.py --magnus build/magnus --reynolds 20,40,100,150,200 \
+      --spin-ratio 0,1,2,4,6 --jobs 2 --csv study.csv
+"""
+import argparse
+import concurrent.futures as cf
+import csv
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+CASE = """title = "grid study"
+[model]
+flow = "navier-stokes"
+[cylinder]
+radius = 0.5
+spin_ratio = {alpha}
+[flow]
+speed = 1.0
+density = 1.0
+reynolds = {re}
+[time]
+end = {end}
+"""
+
+QUANTITIES = [("cl_mean", "cl_mean_rel_estimate"), ("cd_mean", "cd_mean_rel_estimate"),
+              ("strouhal", "strouhal_rel_estimate")]
+
+
+def run(magnus, re, alpha, refine, end, extra, workdir):
+    """One run: its --json as a dict, with the wall seconds it took."""
+    tag = f"re{re:g}_a{alpha:g}_f{refine:g}"
+    case = os.path.join(workdir, tag + ".toml")
+    with open(case, "w") as f:
+        f.write(CASE.format(alpha=alpha, re=re, end=end))
+    cmd = [magnus, "run", case, "-o", os.path.join(workdir, tag + ".h5"), "--json",
+           "--set", f"grid.refine={refine}"] + sum((["--set", s] for s in extra), [])
+    t0 = time.time()
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    wall = time.time() - t0
+    if p.returncode != 0:
+        return {"error": p.stderr.strip().splitlines()[-1] if p.stderr.strip() else "failed", "wall": wall}
+    d = json.loads(p.stdout)
+    d["wall"] = wall
+    return d
+
+
+def unwrap(x):
+    """A JSON value: plain, or {"value": v, "units": u}."""
+    return x.get("value") if isinstance(x, dict) else x
+
+
+def value(d, key):
+    """A force value, or the steady value when the run has no mean (steady: cl, cd)."""
+    f = d.get("forces", {})
+    v = unwrap(f.get(key))
+    if v is None and key in ("cl_mean", "cd_mean"):
+        v = unwrap(f.get(key[:2]))
+    return v
+
+
+def row(magnus, re, alpha, end, extra, workdir):
+    coarse = run(magnus, re, alpha, 1, end, extra, workdir)
+    fine = run(magnus, re, alpha, 2, end, extra, workdir)
+    out = {"re": re, "alpha": alpha, "wall": coarse.get("wall"), "wall_fine": fine.get("wall")}
+    if "error" in coarse or "error" in fine:
+        out["note"] = coarse.get("error") or fine.get("error")
+        return out
+    p = coarse["parameters"]
+    out["grid"] = f'{unwrap(p["n_theta"])} × {unwrap(p["n_r"])}'
+    out["status"] = str(unwrap(coarse.get("status", "")))
+    errors = coarse.get("errors", {})
+    for key, est in QUANTITIES:
+        f1, f2 = value(coarse, key), value(fine, key)
+        if f1 is None or f2 is None or f2 == 0.0:
+            continue
+        ref = f2 + (f2 - f1) / 3.0
+        out[key] = f1
+        out[key + "_ref"] = ref
+        out[key + "_actual"] = abs(f1 - ref) / abs(ref) if ref != 0.0 else None
+        out[key + "_estimate"] = unwrap(errors.get(est))
+    return out
+
+
+def pct(x):
+    return "—" if x is None else f"{100.0 * x:.2f}%"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--magnus", default="build/magnus")
+    ap.add_argument("--reynolds", default="20,40,100,150,200")
+    ap.add_argument("--spin-ratio", default="0,1,2,4,6")
+    ap.add_argument("--end", type=float, default=300.0, help="time.end, D/U")
+    ap.add_argument("--set", action="append", default=[], help="extra --set for every run")
+    ap.add_argument("--jobs", type=int, default=1)
+    ap.add_argument("--csv")
+    a = ap.parse_args()
+    scenes = [(float(r), float(s)) for r in a.reynolds.split(",") for s in a.spin_ratio.split(",")]
+    workdir = tempfile.mkdtemp(prefix="magnus-grid-table-")
+    with cf.ThreadPoolExecutor(max_workers=a.jobs) as ex:
+        rows = list(ex.map(lambda sc: row(a.magnus, sc[0], sc[1], a.end, a.set, workdir), scenes))
+    print("| Re | α | default grid | C_L: actual (estimate) | C_D: actual (estimate) | St: actual (estimate) "
+          "| bracketed | wall (default, 2× finer) |")
+    print("|---|---|---|---|---|---|---|---|")
+    for r in rows:
+        if "note" in r:
+            print(f'| {r["re"]:g} | {r["alpha"]:g} | — | {r["note"]} | | | | |')
+            continue
+        cells, ok = [], True
+        for key, _ in QUANTITIES:
+            act, est = r.get(key + "_actual"), r.get(key + "_estimate")
+            cells.append("—" if act is None else f"{pct(act)} ({pct(est)})")
+            if act is not None and (est is None or est < act):
+                ok = False
+        print(f'| {r["re"]:g} | {r["alpha"]:g} | {r["grid"]} | ' + " | ".join(cells) +
+              f' | {"yes" if ok else "NO"} | {r["wall"]:.1f} s, {r["wall_fine"]:.1f} s |')
+    if a.csv:
+        keys = sorted({k for r in rows for k in r})
+        with open(a.csv, "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=keys)
+            w.writeheader()
+            w.writerows(rows)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
