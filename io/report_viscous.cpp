@@ -11,6 +11,7 @@
 #include "io/hdf5_io.hpp"
 #include "io/report.hpp"
 #include "io/report_scene.hpp"
+#include "postproc/navier_stokes/grid_rule.hpp"
 #include "io/report_steady.hpp"
 #include "io/text_format.hpp"
 #include "postproc/derived.hpp"
@@ -64,12 +65,12 @@ std::string wall_text(const FlowResult& r, double cells, const std::string& rais
         : cells < kWallCellsForTenPercent
             ? fmt::format(
                   " — coarse: below {:.0f} cells C_D can be off by more than 10% (+14% with 4.5 cells at "
-                  "Re 100, α 2; raise grid.n_theta)",
+                  "Re 100, α 2; raise grid.refine, or leave grid.n_theta and grid.n_r to magnus)",
                   kWallCellsForTenPercent)
         : cells < kWallCellsForPercent
             ? fmt::format(
                   " — coarse: below {:.0f} cells expect C_D errors of a few % (+4.6% with 5.6 cells at "
-                  "Re 100, α 1.5; raise grid.n_theta)",
+                  "Re 100, α 1.5; raise grid.refine, or leave grid.n_theta and grid.n_r to magnus)",
                   kWallCellsForPercent)
             : std::string();
     line("", fmt::format("boundary layer: {} wall cells across D/√(Re(1 + α²)){}",
@@ -172,7 +173,7 @@ std::string figures_text(const FlowResult& r, bool unresolved) {
 
 /// The run's estimate of its discretisation error (one line), what is undefined and why, and what the
 /// means' spread adds when they had not converged; "" when no estimate was asked (the map's points).
-std::string estimate_text(const ViscousPart& v) {
+std::string estimate_text(const ViscousPart& v, double tolerance) {
   if (v.error_method.empty() && v.error_note.empty()) return "";
   std::string s;
   auto line = [&s](const std::string& label, const std::string& text) { s += labelled(label, text); };
@@ -193,6 +194,10 @@ std::string estimate_text(const ViscousPart& v) {
                          "of the estimate",
                          v.periodic ? "spread between periods" : "drift over the last window",
                          num(100.0 * *v.means_spread_rel, "{:.2f}")));
+  if (v.tolerance_met)
+    line("", fmt::format("grid.tolerance = {:g}: {}{}", tolerance,
+                         *v.tolerance_met ? "met by every estimate" : "NOT met by the estimate above",
+                         v.tolerance_note.empty() ? "" : " (" + v.tolerance_note + ")"));
   return s;
 }
 
@@ -278,12 +283,18 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
       fmt::format("navier-stokes: 2D incompressible laminar, vorticity–streamfunction, no slip held "
                   "exactly; advection order {} in θ, {} in ξ (solver.advection_order, advection_order_xi)",
                   c.solver.advection_order, c.solver.advection_order_xi));
-  s += labelled("grid", fmt::format("n_θ × n_r = {} × {} ({} nodes), geometric spacing, R/a = {:.6g}",
-                                    g.n_theta, g.n_r, g.nodes(), g.outer_radius() / g.a));
+  const std::string rings =
+      c.grid.wall_refinement > 1.0
+          ? fmt::format("rings clustered at the wall (Δξ {:.3g}× finer there, over ξ ≈ {:.2g})",
+                        c.grid.wall_refinement, c.grid.wall_layer)
+          : std::string("geometric spacing (uniform in ξ)");
+  s += labelled("grid", fmt::format("n_θ × n_r = {} × {} ({} nodes), {}, R/a = {:.6g}", g.n_theta, g.n_r,
+                                    g.nodes(), rings, g.outer_radius() / g.a));
+  s += labelled("", scene_grid_text(c));
   s += wall_text(r, cells, raise);
   s += run_text(r);
   s += figures_text(r, unresolved);
-  s += estimate_text(v);
+  s += estimate_text(v, c.grid.tolerance);
   s += scene_lines(r);  // direction, a rotor sail's course, the span's totals
   s += findings_text(r);
   if (!output_path.empty())

@@ -155,6 +155,16 @@ std::vector<AttrSpec> viscous_error_rows() {
       vint(E, "companion_n_r", "rings of the companion run's grid", &ViscousPart::companion_n_r),
       vtext(E, "estimate_method", "how the error estimate was formed", &ViscousPart::error_method),
       vtext(E, "estimate_note", "why a part of the error estimate is undefined", &ViscousPart::error_note),
+      only(Models::viscous,
+           integer(
+               E, "tolerance_met", "grid.tolerance: 1 when every defined estimate met it, 0 when not (absent: none)",
+               [](const FlowResult& r) {
+                 return r.viscous && r.viscous->tolerance_met ? opt(*r.viscous->tolerance_met ? 1.0 : 0.0)
+                                                              : std::nullopt;
+               },
+               [](FlowResult& r, double v) { vis(r).tolerance_met = v != 0.0; })),
+      vtext(E, "tolerance_note", "grid.tolerance: how the grid that met it was found, or why none did",
+            &ViscousPart::tolerance_note),
       vnum(T, "companion_s", "s", "wall clock, the companion run of the error estimate (beside the run)",
            &ViscousPart::companion_seconds),
   };

@@ -76,6 +76,10 @@ struct ViscousPart {
   std::optional<double> companion_seconds;       ///< the companion's wall time, s
   std::string error_method;                      ///< how the estimate was formed ("" when none was)
   std::string error_note;                        ///< why a part of it is undefined ("" when all are defined)
+  /// grid.tolerance: whether every defined estimate met it (absent without a tolerance), and how the grid
+  /// was found when the first one did not meet it.
+  std::optional<bool> tolerance_met;
+  std::string tolerance_note;
 };
 
 struct FlowResult {

@@ -12,13 +12,17 @@
 namespace magnus {
 
 SceneGrid scene_grid(double Re, double alpha, double refine) {
-  SceneGrid g;
   const double f = refine > 0.0 ? refine : 1.0;
-  g.n_theta = std::max(16, 32 * int(std::ceil(6.0 * f * std::sqrt(std::max(Re, 20.0) / 100.0) - 1e-9)));
-  const double d_xi_far = 2.0 * M_PI / g.n_theta / NsParams{}.radial_refinement;
+  auto n_theta_of = [Re](double factor) {
+    return std::max(16, 32 * int(std::ceil(6.0 * factor * std::sqrt(std::max(Re, 20.0) / 100.0) - 1e-9)));
+  };
+  auto d_xi_far_of = [](int n_theta) { return 2.0 * M_PI / n_theta / NsParams{}.radial_refinement; };
+  SceneGrid g;
+  g.n_theta = n_theta_of(f);
   g.delta_xi = std::log1p(2.0 / std::sqrt(std::max(Re, 1e-12) * (1.0 + alpha * alpha)));
-  const double d_xi_wall = std::min(d_xi_far, g.delta_xi / (kRuleWallCells * f));
-  g.wall_refinement = d_xi_far / d_xi_wall;
+  // q and the layer's ξ-length are those of the unrefined grid: refining keeps the map, halving each spacing.
+  const double d_xi_far = d_xi_far_of(n_theta_of(1.0));
+  g.wall_refinement = std::max(1.0, d_xi_far / (g.delta_xi / kRuleWallCells));
   g.wall_layer = g.wall_refinement > 1.0 ? (g.wall_refinement - 1.0) * d_xi_far / kRuleGrowth : 0.1;
   return g;
 }
@@ -66,16 +70,16 @@ void check_tolerance(const Case& c, const NsParams& p, size_t limit) {
       format_bytes(limit)));
 }
 
-std::string scene_grid_text(const Case& c, const NsParams& p) {
-  if (c.grid.n_theta_given || c.grid.n_r > 0) return "as given (grid.n_theta, grid.n_r)";
-  const double f = case_refine(c);
-  return fmt::format("the scene's: δ = D/√(Re(1 + α²)) = {:.3g}a, {:.3g} first-ring cells across it, Δξ "
-                     "{:.3g} times finer at the wall{}",
-                     2.0 / std::sqrt(rule_reynolds(c.scene) * (1.0 + std::pow(c.scene.spin_ratio(), 2))),
-                     kRuleWallCells * f, p.wall_refinement,
-                     f != 1.0 ? fmt::format(", refined {:.3g}×{}", f,
-                                            c.grid.tolerance > 0.0 ? " for grid.tolerance" : "")
-                              : std::string());
+std::string scene_grid_text(const Case& c) {
+  if (c.grid.n_theta_given || c.grid.n_r > 0)
+    return "the grid as given (grid.n_theta, grid.n_r); without them magnus fits the grid to the scene";
+  const double f = case_refine(c), alpha = c.scene.spin_ratio();
+  const std::string why =
+      c.grid.tolerance > 0.0 ? fmt::format(", refined {:.3g}× for grid.tolerance = {:g}", f, c.grid.tolerance)
+      : f != 1.0             ? fmt::format(", refined {:.3g}× (grid.refine)", f)
+                             : std::string();
+  return fmt::format("the scene's grid: n_θ from √Re, {:g} first-ring cells across δ = D/√(Re(1 + α²)) = {:.3g}a{}",
+                     kRuleWallCells * f, 2.0 / std::sqrt(rule_reynolds(c.scene) * (1.0 + alpha * alpha)), why);
 }
 
 }  // namespace magnus

@@ -32,9 +32,10 @@ struct SceneGrid {
 
 /// The default grid of a scene at Reynolds number Re (U·D/ν, or a|ω|·D/ν in still fluid) and spin ratio α
 /// (0 in still fluid), refined by `refine` (> 0; 1: the default): n_θ = 32·⌈6·refine·√(max(Re, 20)/100)⌉
-/// (even, ≥ 16); Δξ_far = Δθ/(5/3); Δξ_wall = ln(1 + δ/a)/(kRuleWallCells·refine), capped at Δξ_far;
-/// wall_layer = (q − 1)·Δξ_far/kRuleGrowth with q = Δξ_far/Δξ_wall (so the spacing grows by kRuleGrowth per
-/// ring at most), or 0.1 when q = 1.
+/// (even, ≥ 16); Δξ_far = Δθ/(5/3); Δξ_wall = ln(1 + δ/a)/kRuleWallCells, capped at Δξ_far, so
+/// q = Δξ_far/Δξ_wall ≥ 1; wall_layer = (q − 1)·Δξ_far/kRuleGrowth (the spacing grows by kRuleGrowth per
+/// ring at most), or 0.1 when q = 1. q and the layer are those of refine = 1: a refined grid is the same
+/// map with every spacing divided by refine (n_θ·refine), a family for Richardson.
 SceneGrid scene_grid(double Re, double alpha, double refine = 1.0);
 
 /// The refine factor that grid.tolerance τ (on mean C_L, C_D and St alike) asks for first: the rule's grid
@@ -52,7 +53,7 @@ void apply_scene_grid(const Case& c, NsParams& p);
 /// than `limit` bytes (0: the memory available). Before anything is solved; no check without a tolerance.
 void check_tolerance(const Case& c, const NsParams& p, size_t limit = 0);
 
-/// One line for the summary: what the rule chose and why, e.g. "rule: δ = 0.141a, 10 wall cells, …".
-std::string scene_grid_text(const Case& c, const NsParams& p);
+/// One line for the summary: where the grid came from (the scene's rule, refined, or as given).
+std::string scene_grid_text(const Case& c);
 
 }  // namespace magnus

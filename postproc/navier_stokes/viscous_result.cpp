@@ -128,6 +128,8 @@ FlowResult viscous_result(const Case& c, const NsParams& p, const UnsteadyResult
   const Scene& sc = c.scene;
   FlowResult r;
   r.c = c;
+  // The rings' map as used (the scene's rule may have chosen it): /parameters tells what was solved.
+  r.c.grid.wall_refinement = p.wall_refinement, r.c.grid.wall_layer = p.wall_layer;
   r.grid = ns_grid(p);
   const PolarGrid& g = r.grid;
   const NsState& st = run.state;

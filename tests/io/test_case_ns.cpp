@@ -190,10 +190,17 @@ TEST_CASE("navier-stokes: potential flow's circulation, far field, solver and to
       error_of(ns_scene + "[domain]\nfar_field = \"exact\"\n") ==
       "test.toml: domain.far_field: is only used with model.flow = \"potential\": navier-stokes sets its own "
       "far-field conditions");
-  CHECK(
-      error_of(ns_scene + "[grid]\ntolerance = 1e-6\n") ==
-      "test.toml: grid.tolerance: is only used with model.flow = \"potential\": navier-stokes takes the grid "
-      "as given (grid.n_theta, grid.n_r)");
+  // navier-stokes takes grid.tolerance from 1e-4 (its own error estimate's floor) to 0.1.
+  CHECK(error_of(ns_scene + "[grid]\ntolerance = 1e-6\n") ==
+        "test.toml: grid.tolerance: 1e-06 is out of range: must be 0 (the scene's grid) or 1e-4 ... 0.1 "
+        "(navier-stokes: relative, on mean C_L, C_D and St; below 1e-4 the run's own error estimate is not "
+        "reliable)");
+  CHECK_NOTHROW(parse_case(ns_scene + "[grid]\ntolerance = 1e-3\n", "test.toml"));
+  CHECK_THAT(error_of(ns_scene + "[grid]\ntolerance = 1e-3\nrefine = 2\n"),
+             Contains("grid.tolerance: conflicts with grid.refine"));
+  CHECK_THAT(error_of(ns_scene + "[grid]\nrefine = 0.1\n"), Contains("grid.refine: 0.1 is out of range"));
+  CHECK_THAT(error_of(scene + "[grid]\nrefine = 2\n"),
+             Contains("grid.refine: is only used with model.flow = \"navier-stokes\""));
   CHECK(error_of(ns_scene + "[solver]\nmethod = \"auto\"\n") ==
         "test.toml: solver.method: is only used with model.flow = \"potential\": navier-stokes has its own "
         "solver");
@@ -201,8 +208,7 @@ TEST_CASE("navier-stokes: potential flow's circulation, far field, solver and to
         "test.toml: solver.stencil: is only used with model.flow = \"potential\": navier-stokes has its own "
         "discretisation");
   // The same by --set, and a potential case file switched to navier-stokes keeps its potential-only keys.
-  CHECK_THAT(error_of(ns_scene, {"grid.tolerance=1e-6"}),
-             Contains("--set grid.tolerance: is only used"));
+  CHECK_THAT(error_of(ns_scene, {"grid.tolerance=1e-6"}), Contains("--set grid.tolerance: 1e-06 is out of range"));
   CHECK_THAT(error_of(ns_scene, {"solver.method=fft"}), Contains("--set solver.method: is only used"));
   CHECK_THAT(error_of(scene + "[domain]\nfar_field = \"freestream\"\n",
                       {"model.flow=navier-stokes", "flow.viscosity=1e-5"}),
@@ -327,18 +333,25 @@ TEST_CASE("the resolved case: potential text unchanged, navier-stokes text reads
       "far_field = \"exact\"\n\n[grid]\nspacing = \"geometric\"\nn_theta = 256\nn_r = 0\n\n[solver]\n"
       "method = \"auto\"\nstencil = \"5-point\"\n\n[output]\nfile = \"magnus.h5\"\n");
 
-  // The navier-stokes text states the rings' clustering (grid.wall_refinement, grid.wall_layer) too.
+  // Without a stated grid the navier-stokes text says grid.refine: the scene's rule chooses the grid again
+  // from the same keys (n_θ, the rings' clustering); stated keys are kept as stated.
   const Case n = parse(ns_scene);
   CHECK(n.source_text ==
         "title = \"Spinning cylinder\"\n\n[model]\nflow = \"navier-stokes\"\n\n[cylinder]\nradius = 0.005\n"
         "spin = 2.0\n\n[flow]\nspeed = 0.01\ndensity = 1.225\npressure = 0.0\nviscosity = 1e-06\n\n[domain]\n"
-        "outer_radius = 100.0\n\n[grid]\nspacing = \"geometric\"\nn_theta = 192\nn_r = 0\n"
-        "wall_refinement = 1.0\nwall_layer = 0.1\n\n[solver]\n"
+        "outer_radius = 100.0\n\n[grid]\nspacing = \"geometric\"\nrefine = 1.0\n\n[solver]\n"
         "advection_order = 2\nadvection_order_xi = 2\n\n[time]\n"
         "mode = \"auto\"\nend = 300.0\ndt = 0.0\ncfl = 0.7\nmean_tolerance = 0.001\ncheckpoint_interval = "
         "10.0\n"
         "\n[output]\nfile = \"magnus.h5\"\nsnapshots = 0\nsnapshot_interval = 0.25\n");
   check_round_trip(n);
+  // A stated grid and clustering read back as stated.
+  const Case g = parse(ns_scene + "[grid]\nn_theta = 64\nwall_refinement = 3\n");
+  CHECK_THAT(g.source_text, Contains("n_theta = 64\nn_r = 0\nwall_refinement = 3.0\n\n[solver]"));
+  CHECK(g.grid.n_theta_given);
+  CHECK(g.grid.wall_refinement_given);
+  CHECK(!g.grid.wall_layer_given);
+  check_round_trip(g);
 
   // Re as given (not the ν derived from it), spin_ratio resolved to ω, every [time] key and the snapshots.
   const Case r = parse(
