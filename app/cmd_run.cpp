@@ -9,6 +9,8 @@
 #include "app/commands.hpp"
 #include "app/run_viscous.hpp"
 #include "app/threads.hpp"
+#include "postproc/navier_stokes/grid_rule.hpp"
+#include "postproc/navier_stokes/resolution.hpp"
 #include "io/case_keys.hpp"
 #include "io/case_file.hpp"
 #include "io/checkpoint.hpp"
@@ -29,10 +31,6 @@ namespace {
 /// locked (another output may have the same checkpoint: r.h5, r.hdf), not another scene's unless resumed;
 /// then the free space for both (before the checkpoint is read).
 void prepare_checkpoint(const Case& c, bool resume, size_t max_bytes, std::optional<OutputLock>& lock) {
-  if (max_bytes > 0)
-    throw std::runtime_error(
-        "--max-memory: only checked for potential flow (a navier-stokes run at the default grid needs about "
-        "35 MB; its Newton and stability solves are measured in the README)");
   const std::string ckpt = checkpoint_path(c.output.file);
   check_writable(ckpt);
   lock.emplace(ckpt);
@@ -40,6 +38,9 @@ void prepare_checkpoint(const Case& c, bool resume, size_t max_bytes, std::optio
     const std::string foreign = foreign_checkpoint(ckpt, c);
     if (!foreign.empty()) throw std::runtime_error(foreign);
   }
+  // The memory first: the output's size is estimated on the grid itself, which must fit.
+  check_resolvable(c, max_bytes);
+  check_grid_memory(c, ns_params(c), max_bytes);
   check_output_space(c, c.output.file);
 }
 

@@ -5,7 +5,9 @@ namespace magnus {
 FlowResult run_case(const Case& c, const RunHooks& hooks) {
   if (c.model == FlowModel::navier_stokes) {
     if (hooks.on_plan) hooks.on_plan(c);
-    return run_viscous(c, hooks.viscous, hooks.resume, hooks.threads);
+    ViscousHooks vh = hooks.viscous;
+    if (hooks.max_bytes > 0) vh.max_bytes = hooks.max_bytes;
+    return run_viscous(c, vh, hooks.resume, hooks.threads);
   }
   const RunPlan plan = plan_run(c, hooks.threads, hooks.max_bytes);
   if (hooks.on_plan) hooks.on_plan(plan.c);

@@ -15,7 +15,7 @@ namespace magnus {
 /// may be empty).
 struct RunHooks {
   int threads = 1;                     ///< for the solver (≥ 1)
-  size_t max_bytes = 0;                ///< potential flow: the memory a run may need, bytes (0: what is free)
+  size_t max_bytes = 0;                ///< the memory a run may need, bytes (0: what is free)
   const Checkpoint* resume = nullptr;  ///< navier-stokes: go on from this state instead of from rest
   /// With the case as it will run (its grid chosen, by the tolerance search if any), before the solve.
   std::function<void(const Case&)> on_plan;

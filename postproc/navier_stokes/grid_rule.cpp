@@ -52,8 +52,7 @@ void apply_scene_grid(const Case& c, NsParams& p) {
   if (!c.grid.wall_layer_given) p.wall_layer = g.wall_layer;
 }
 
-void check_tolerance(const Case& c, const NsParams& p, size_t limit) {
-  if (!(c.grid.tolerance > 0.0)) return;
+void check_grid_memory(const Case& c, const NsParams& p, size_t limit) {
   const PolarGrid g = ns_grid(p);
   // The run and its companion on the grid twice as coarse (a quarter of the nodes) march side by side.
   const double nodes = double(g.nodes()),
@@ -61,13 +60,22 @@ void check_tolerance(const Case& c, const NsParams& p, size_t limit) {
   const bool given = limit > 0;
   if (!given) limit = bytes >= double(kUncheckedBytes) ? available_bytes() : 0;
   if (limit == 0 || bytes <= double(limit)) return;
+  const std::string need = fmt::format(
+      "n_θ {} × {} rings ({:.3g} nodes), about {} with its companion run, more than {} {}", g.n_theta, g.n_r,
+      nodes, format_bytes(size_t(std::min(1e18, bytes))), given ? "the limit" : "the memory available,",
+      format_bytes(limit));
+  if (c.grid.tolerance > 0.0)
+    throw std::invalid_argument(fmt::format(
+        "grid.tolerance: {:g} needs the scene's grid refined {:.3g}× (the default grid is built for {:g} and "
+        "the error falls as the spacing squared): {}; give a larger grid.tolerance",
+        c.grid.tolerance, case_refine(c), kRuleTolerance, need));
+  const bool rule = !c.grid.n_theta_given && c.grid.n_r == 0;
   throw std::invalid_argument(fmt::format(
-      "grid.tolerance: {:g} needs the scene's grid refined {:.3g}× (the default grid is built for {:g} and the "
-      "error falls as the spacing squared): n_θ {} × {} rings ({:.3g} nodes), about {} with its companion "
-      "run, more than {} {}; give a larger grid.tolerance",
-      c.grid.tolerance, case_refine(c), kRuleTolerance, g.n_theta, g.n_r, nodes,
-      format_bytes(size_t(std::min(1e18, bytes))), given ? "the limit" : "the memory available,",
-      format_bytes(limit)));
+      "{}: the grid needs {}; {}", rule ? "grid.refine" : "grid.n_theta", need,
+      rule ? fmt::format("the scene's grid at Re = {:.4g}, α = {:.4g} is that fine: give grid.refine < {:g} for "
+                         "a coarser one (less accurate)",
+                         c.scene.reynolds(), c.scene.spin_ratio(), c.grid.refine)
+           : std::string("give a coarser grid")));
 }
 
 std::string scene_grid_text(const Case& c) {

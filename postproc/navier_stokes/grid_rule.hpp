@@ -48,10 +48,11 @@ double tolerance_refine(double tolerance);
 /// uniform rings unless it gives grid.wall_refinement too. grid.refine and grid.tolerance scale the rule.
 void apply_scene_grid(const Case& c, NsParams& p);
 
-/// Throws std::invalid_argument (one line naming grid.tolerance, the grid it needs, its memory with the
-/// companion run, the limit and the estimate behind it) when the grid that grid.tolerance asks for needs more
-/// than `limit` bytes (0: the memory available). Before anything is solved; no check without a tolerance.
-void check_tolerance(const Case& c, const NsParams& p, size_t limit = 0);
+/// Throws std::invalid_argument (one line naming the key that chose the grid — grid.tolerance, with the
+/// estimate behind it, grid.refine or grid.n_theta — the grid, its memory with the companion run and the
+/// limit) when a march on p's grid with its companion needs more than `limit` bytes (0: the memory
+/// available). Before anything is solved.
+void check_grid_memory(const Case& c, const NsParams& p, size_t limit = 0);
 
 /// One line for the summary: where the grid came from (the scene's rule, refined, or as given).
 std::string scene_grid_text(const Case& c);

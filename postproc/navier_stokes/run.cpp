@@ -43,7 +43,7 @@ namespace {
 /// "auto" choose.
 FlowResult run_on_grid(const Case& c, const ViscousHooks& hooks, const Checkpoint* resume, int threads) {
   NsParams p = ns_params(c);
-  check_tolerance(c, p);  // the grid a tolerance asks for must fit, before anything is solved
+  check_grid_memory(c, p, hooks.max_bytes);  // the grid (and its companion) must fit: before any solve
   p.threads = std::max(1, threads);
   const PolarGrid g = ns_grid(p);
   const double unit = c.scene.time_unit();
@@ -76,7 +76,7 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
   if (!(sc.viscosity > 0.0)) throw std::invalid_argument("flow.viscosity: navier-stokes needs ν > 0");
   if (!(sc.reference_speed() > 0.0))
     throw std::invalid_argument("flow.speed and cylinder.spin are both 0: nothing moves, there is no flow");
-  check_resolvable(c);  // before anything is solved or allocated
+  check_resolvable(c, hooks.max_bytes);  // before anything is solved or allocated
   FlowResult r = run_on_grid(c, hooks, resume, threads);
   const double tol = c.grid.tolerance;
   if (!(tol > 0.0) || !r.viscous || r.viscous->partial) return r;
@@ -87,7 +87,7 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
     Case finer = c;
     finer.grid.refine *= 1.1 * std::sqrt(*worst / tol);
     try {
-      check_tolerance(finer, ns_params(finer));
+      check_grid_memory(finer, ns_params(finer), hooks.max_bytes);
       const std::string first = fmt::format("{} × {}", r.grid.n_theta, r.grid.n_r);
       r = run_on_grid(finer, hooks, nullptr, threads);
       r.c.grid.refine = c.grid.refine;  // the case as given; the grid shows what was solved

@@ -4,6 +4,7 @@
 // forces, means, history, snapshots), beside the potential-flow figures for the same scene.
 // run.cpp checks the case and takes one path (run_paths.hpp): Newton's method and the choice of time.mode
 // "auto" in run_steady.cpp, the march in run_march.cpp; the FlowResult of a state in viscous_result.cpp.
+#include <cstddef>
 #include <functional>
 
 #include "postproc/result.hpp"
@@ -36,6 +37,8 @@ struct ViscousHooks {
   /// time.mode = "auto" marches at once, without its Newton solve and stability test: the caller (the
   /// S map) already knows that the steady state Newton would find is unstable, or that there is none.
   bool march_at_once = false;
+  /// The memory a run may need, bytes (0: what is free): the resolvability check and grid.tolerance's grid.
+  size_t max_bytes = 0;
   /// Run a companion on the grid twice as coarse beside the run, for the error estimate of its mean C_L,
   /// mean C_D and St (postproc/navier_stokes/error_estimate.hpp); the S map and sweeps set it false.
   bool error_estimate = true;

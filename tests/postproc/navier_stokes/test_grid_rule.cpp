@@ -81,7 +81,7 @@ TEST_CASE("grid.tolerance: a grid that does not fit in memory is refused before 
   const NsParams p = ns_params(c);
   const std::string limit_msg = [&] {
     try {
-      check_tolerance(c, p, size_t(64) << 20);
+      check_grid_memory(c, p, size_t(64) << 20);
     } catch (const std::invalid_argument& e) {
       return std::string(e.what());
     }
@@ -90,10 +90,19 @@ TEST_CASE("grid.tolerance: a grid that does not fit in memory is refused before 
   CHECK_THAT(limit_msg, Contains("grid.tolerance: 0.0001 needs the scene's grid refined 14.1×"));
   CHECK_THAT(limit_msg, Contains("more than the limit 64.0 MiB; give a larger grid.tolerance"));
   CHECK(limit_msg.find('\n') == std::string::npos);
-  CHECK_NOTHROW(check_tolerance(ns_case(100, 1, "[grid]\ntolerance = 1e-2\n"),
+  CHECK_NOTHROW(check_grid_memory(ns_case(100, 1, "[grid]\ntolerance = 1e-2\n"),
                                 ns_params(ns_case(100, 1, "[grid]\ntolerance = 1e-2\n")), size_t(64) << 20));
-  // Without a tolerance nothing is checked here.
-  CHECK_NOTHROW(check_tolerance(ns_case(100, 1), ns_params(ns_case(100, 1)), 1));
+  // Without a tolerance the scene's grid (or the given one) is checked the same way.
+  CHECK_THAT(
+      [&] {
+        try {
+          check_grid_memory(ns_case(100, 1), ns_params(ns_case(100, 1)), 1 << 20);
+        } catch (const std::invalid_argument& e) {
+          return std::string(e.what());
+        }
+        return std::string();
+      }(),
+      Contains("grid.refine: the grid needs n_θ 192 × 238 rings") && Contains("give grid.refine < 1"));
 }
 
 TEST_CASE("grid.tolerance: the run's own estimate judges the grid it chose", "[ns][grid_rule]") {
