@@ -39,8 +39,12 @@ QUANTITIES = [("cl_mean", "cl_mean_rel_estimate"), ("cd_mean", "cd_mean_rel_esti
 
 
 def run(magnus, re, alpha, refine, end, extra, workdir):
-    """One run: its --json as a dict, with the wall seconds it took."""
+    """One run: its --json as a dict, with the wall seconds it took (kept in workdir: a rerun reuses it)."""
     tag = f"re{re:g}_a{alpha:g}_f{refine:g}"
+    saved = os.path.join(workdir, tag + ".json")
+    if os.path.exists(saved):
+        with open(saved) as f:
+            return json.load(f)
     case = os.path.join(workdir, tag + ".toml")
     with open(case, "w") as f:
         f.write(CASE.format(alpha=alpha, re=re, end=end))
@@ -53,6 +57,8 @@ def run(magnus, re, alpha, refine, end, extra, workdir):
         return {"error": p.stderr.strip().splitlines()[-1] if p.stderr.strip() else "failed", "wall": wall}
     d = json.loads(p.stdout)
     d["wall"] = wall
+    with open(saved, "w") as f:
+        json.dump(d, f)
     return d
 
 
@@ -72,7 +78,12 @@ def value(d, key):
 
 def row(magnus, re, alpha, end, extra, workdir):
     coarse = run(magnus, re, alpha, 1, end, extra, workdir)
-    fine = run(magnus, re, alpha, 2, end, extra, workdir)
+    # The finer grid solves what the default run found: Newton's steady state on its own (time.mode
+    # steady: no eigenvalue search on the large grid), or the march.
+    steady = "error" not in coarse and bool(unwrap(coarse.get("timing", {}).get("newton_s")))
+    mode = ["time.mode=steady"] if steady and not unwrap(coarse.get("timing", {}).get("march_s")) \
+        else ["time.mode=unsteady"]
+    fine = run(magnus, re, alpha, 2, end, extra + mode, workdir)
     out = {"re": re, "alpha": alpha, "wall": coarse.get("wall"), "wall_fine": fine.get("wall")}
     if "error" in coarse or "error" in fine:
         out["note"] = coarse.get("error") or fine.get("error")
@@ -106,9 +117,11 @@ def main():
     ap.add_argument("--set", action="append", default=[], help="extra --set for every run")
     ap.add_argument("--jobs", type=int, default=1)
     ap.add_argument("--csv")
+    ap.add_argument("--workdir", help="keep each run's JSON here; a rerun reuses them")
     a = ap.parse_args()
     scenes = [(float(r), float(s)) for r in a.reynolds.split(",") for s in a.spin_ratio.split(",")]
-    workdir = tempfile.mkdtemp(prefix="magnus-grid-table-")
+    workdir = a.workdir or tempfile.mkdtemp(prefix="magnus-grid-table-")
+    os.makedirs(workdir, exist_ok=True)
     with cf.ThreadPoolExecutor(max_workers=a.jobs) as ex:
         rows = list(ex.map(lambda sc: row(a.magnus, sc[0], sc[1], a.end, a.set, workdir), scenes))
     print("| Re | α | default grid | C_L: actual (estimate) | C_D: actual (estimate) | St: actual (estimate) "
