@@ -13,26 +13,49 @@ std::string num(double v) {
   return s.find_first_of(".eE") == std::string::npos ? s + ".0" : s;
 }
 
+/// A TOML basic string: quotes, backslashes and control characters escaped.
+std::string str(const std::string& v) {
+  std::string q = "\"";
+  for (char ch : v) {
+    if (ch == '"' || ch == '\\') q += '\\';
+    if (ch == '\n') {
+      q += "\\n";
+      continue;
+    }
+    // TOML basic strings may not hold control characters other than tab: escape them all.
+    if ((unsigned char)ch < 0x20 || ch == 0x7F) {
+      q += fmt::format("\\u{:04X}", (unsigned char)ch);
+      continue;
+    }
+    q += ch;
+  }
+  return q + "\"";
+}
+
+/// The [grid] section. With a tolerance the grid and stencil are chosen at run time (and stored in
+/// /parameters); with a tolerance and no stated spacing the search chooses it too: the text leaves it out.
+/// navier-stokes without a stated grid: grid.refine (the scene's rule chooses the grid again from the same
+/// keys); the rings' clustering only as stated.
+std::string grid_toml(const Case& c, bool ns) {
+  std::string t = "\n[grid]\n";
+  if (c.grid.tolerance == 0.0 || c.grid.spacing_given)
+    t += fmt::format("spacing = {}\n", str(to_string(c.grid.spacing)));
+  const bool ns_rule = ns && !c.grid.n_theta_given && c.grid.n_r == 0;
+  if (c.grid.tolerance > 0.0)
+    t += fmt::format("tolerance = {}\n", num(c.grid.tolerance));
+  else if (ns_rule)
+    t += fmt::format("refine = {}\n", num(c.grid.refine));
+  else
+    t += fmt::format("n_theta = {}\nn_r = {}\n", c.grid.n_theta, c.grid.n_r);
+  if (ns && c.grid.wall_refinement_given)
+    t += fmt::format("wall_refinement = {}\n", num(c.grid.wall_refinement));
+  if (ns && c.grid.wall_layer_given) t += fmt::format("wall_layer = {}\n", num(c.grid.wall_layer));
+  return t;
+}
+
 }  // namespace
 
 std::string to_toml(const Case& c) {
-  auto str = [](const std::string& v) {
-    std::string q = "\"";
-    for (char ch : v) {
-      if (ch == '"' || ch == '\\') q += '\\';
-      if (ch == '\n') {
-        q += "\\n";
-        continue;
-      }
-      // TOML basic strings may not hold control characters other than tab: escape them all.
-      if ((unsigned char)ch < 0x20 || ch == 0x7F) {
-        q += fmt::format("\\u{:04X}", (unsigned char)ch);
-        continue;
-      }
-      q += ch;
-    }
-    return q + "\"";
-  };
   // A navier-stokes case leaves out the keys of potential flow's circulation, far field and solver (they
   // would be errors), and adds its model, [time] and snapshots; a potential case writes none of these.
   const bool ns = c.model == FlowModel::navier_stokes;
@@ -59,23 +82,7 @@ std::string to_toml(const Case& c) {
   }
   t += fmt::format("\n[domain]\nouter_radius = {}\n", num(c.grid.outer_radius));
   if (!ns) t += fmt::format("far_field = {}\n", str(to_string(c.grid.far_field)));
-  // With a tolerance the grid and stencil are chosen at run time (and stored in /parameters).
-  // With a tolerance and no stated spacing the search chooses it too: the resolved case leaves it out.
-  t += "\n[grid]\n";
-  if (c.grid.tolerance == 0.0 || c.grid.spacing_given)
-    t += fmt::format("spacing = {}\n", str(to_string(c.grid.spacing)));
-  // navier-stokes without a stated grid: the scene's rule chooses it again from the same keys.
-  const bool ns_rule = ns && !c.grid.n_theta_given && c.grid.n_r == 0;
-  if (c.grid.tolerance > 0.0)
-    t += fmt::format("tolerance = {}\n", num(c.grid.tolerance));
-  else if (ns_rule)
-    t += fmt::format("refine = {}\n", num(c.grid.refine));
-  else
-    t += fmt::format("n_theta = {}\nn_r = {}\n", c.grid.n_theta, c.grid.n_r);
-  // The rings' clustering as stated (left out, the scene's rule or the given grid's uniform rings decide).
-  if (ns && c.grid.wall_refinement_given)
-    t += fmt::format("wall_refinement = {}\n", num(c.grid.wall_refinement));
-  if (ns && c.grid.wall_layer_given) t += fmt::format("wall_layer = {}\n", num(c.grid.wall_layer));
+  t += grid_toml(c, ns);
   if (!ns) {
     t += fmt::format("\n[solver]\nmethod = {}\n", str(to_string(c.solver.method)));
     if (c.grid.tolerance == 0.0) t += fmt::format("stencil = {}\n", str(to_string(c.solver.stencil)));
