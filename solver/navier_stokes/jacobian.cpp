@@ -174,7 +174,6 @@ void outer_rows(TripletSink& sink, const Unknowns& u, const PolarGrid& g, const 
 
 void SteadyJacobian::assemble(const std::vector<double>& x) {
   const int nr = grid_.n_r, n = grid_.n_theta;
-  const double h = h_, a2 = p_.a * p_.a;
   const bool first = Ti_.empty();
   // Arakawa's 48 terms of a ζ row fall on 18 columns (order 4 in θ: 96 terms on 30 columns): TripletSink
   // merges them on the first assembly.
@@ -187,10 +186,12 @@ void SteadyJacobian::assemble(const std::vector<double>& x) {
   }
   TripletSink sink{Ti_, Tj_, Slot_, Tx_, first, mirror_, size_, n};
   const Unknowns u{x, n};
-  for (int j = 0; j < n; ++j) {  // wall: ψ = 0; Thom
+  const WallClosureRow c = wall_closure_row(grid_, p_);
+  for (int j = 0; j < n; ++j) {  // wall: ψ = 0; the closure's row c_1ψ_1 − c_2ψ_2 + c_w ζ_w
     sink.add(u.cp(0, j), u.cp(0, j), s_psi_);
-    sink.add(u.cz(0, j), u.cp(1, j), s_psi_);
-    sink.add(u.cz(0, j), u.cz(0, j), 0.5 * a2 * h * h * s_psi_);
+    sink.add(u.cz(0, j), u.cp(1, j), c.c1 * s_psi_);
+    if (c.c2 != 0.0) sink.add(u.cz(0, j), u.cp(2, j), -c.c2 * s_psi_);
+    sink.add(u.cz(0, j), u.cz(0, j), c.cw * s_psi_);
   }
   interior_rows(sink, u, grid_, p_, s_psi_, s_zeta_);
   outer_rows(sink, u, grid_, p_, s_psi_, s_zeta_, size_ - 1);

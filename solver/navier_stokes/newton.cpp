@@ -84,9 +84,10 @@ std::vector<double> SteadyJacobian::residual(const std::vector<double>& x) const
   auto Z = [&](int i, int j) { return s.zeta[size_t(i) * n + j]; };
   auto row = [n](const std::vector<double>& f, int i) { return f.data() + size_t(i) * n; };
   std::vector<double> F(static_cast<size_t>(size_));
+  const WallClosureRow c = wall_closure_row(grid_, p_);
   for (int j = 0; j < n; ++j) {
     F[2 * j] = P(0, j) * s_psi_;
-    F[2 * j + 1] = (P(1, j) + 0.5 * a2 * h * h * Z(0, j) + h * a2 * p_.omega) * s_psi_;
+    F[2 * j + 1] = (c.c1 * P(1, j) - c.c2 * P(2, j) + c.cw * Z(0, j) + h * a2 * p_.omega * c.kappa) * s_psi_;
   }
   for (int i = 1; i < iN; ++i) {
     const XiFlux xf = xi_flux(grid_, i);

@@ -6,7 +6,8 @@
 // Δξ = h: on a stretched ξ, h is Δξ_0 at the wall, inside the flux form of xi_flux with rows scaled by h_i²,
 // on ring N Δξ_{N−1/2}):
 //   wall ψ row        ψ_0j = 0
-//   wall ζ row        ψ_1j + (a²h²/2)·ζ_0j + h·a²ω = 0                      (Thom, the stepper's closure)
+//   wall ζ row        ψ_1j + (a²h²/2)·ζ_0j + h·a²ω = 0                      (Thom, the stepper's closure;
+//                     Jensen's 8ψ_1j − ψ_2j + 2a²h²ζ_0j + 6h·a²ω = 0 with NsWallClosure::jensen)
 //   rings 1…N−1, ζ    ν(ζ_ξξ + ζ_θθ) − N(ψ, ζ) = 0                          (5-point, Arakawa's N)
 //   rings 1…N−1, ψ    ψ_ξξ + ψ_θθ + J ζ = 0,  J = r²
 //   ring N, ψ         2(ψ_{N−1} − ψ_N)/h² + 2g/h + ψ_θθ + J ζ_N = 0,  g = U R sinθ − Γ_R/2π  (ghost ring)

@@ -8,6 +8,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "solver/fft_modes.hpp"
 #include "solver/navier_stokes/operator_impl.hpp"
@@ -53,7 +54,7 @@ void plan_fields(NsOperator::Impl& im, int nr, int n, int threads) {
 /// The wall closure's influence data. φ_k: Helmholtz response to unit wall vorticity in mode k. χ_k: ψ of
 /// −J φ_k (ψ = 0 at the wall, ψ_ξ = 0 at R): the Poisson mode solve of mode k with right-hand side −J φ_k,
 /// all modes at once.
-void wall_influence(NsOperator::Impl& im, const PolarGrid& g, const NsParams& p, double h) {
+void wall_influence(NsOperator::Impl& im, const PolarGrid& g, const NsParams& p) {
   const int nr = g.n_r, m = g.n_theta / 2 + 1;
   im.phi.resize(size_t(m) * nr);
   std::vector<cplx> spec(size_t(nr) * m, 0.0), zero_hat(size_t(m), 0.0);
@@ -67,9 +68,11 @@ void wall_influence(NsOperator::Impl& im, const PolarGrid& g, const NsParams& p,
   for (int k = 0; k < m; ++k)
     for (int i = 0; i < nr; ++i) im.chi[size_t(k) * nr + i] = spec[size_t(i) * m + k].real();
   WallInfluence& w = im.wall;
+  w.row = wall_closure_row(g, p);
   w.denom.resize(m);
   for (int k = 0; k < m; ++k) {
-    w.denom[k] = im.chi[size_t(k) * nr + 1] + 0.5 * p.a * p.a * h * h;
+    const double* chi = &im.chi[size_t(k) * nr];
+    w.denom[k] = w.row.c1 * chi[1] - w.row.c2 * chi[2] + w.row.cw;
     if (!(std::fabs(w.denom[k]) > 0.0))
       throw std::runtime_error("NsOperator: the wall closure of mode " + std::to_string(k) + " is singular");
   }
@@ -137,7 +140,7 @@ NsOperator::NsOperator(const NsParams& p, double dt) : p_(p), dt_(dt) {
   impl_->helmholtz = std::make_unique<ModeSolver>(grid_, sigma, OuterBoundary::dirichlet, p.threads);
   impl_->poisson = std::make_unique<ModeSolver>(grid_, zero, OuterBoundary::neumann, p.threads);
   plan_fields(*impl_, nr, n, p.threads);
-  wall_influence(*impl_, grid_, p, h_);
+  wall_influence(*impl_, grid_, p);
   plan_step(*impl_, nr, n, p.threads);
 }
 
@@ -146,16 +149,20 @@ NsOperator::~NsOperator() = default;
 void NsOperator::close_wall(std::vector<double>& psi, std::vector<double>& zeta, double Gamma_R) const {
   const int nr = grid_.n_r, n = grid_.n_theta, m = n / 2 + 1;
   psi = stream_function(*this, *impl_->poisson, zeta, Gamma_R);
-  // Residual of Thom's wall row per mode, then the correction δ_k along (φ_k, χ_k) that removes it.
-  std::vector<cplx> Psi1(m), W0(m), delta(m);
-  std::vector<double> ring(psi.begin() + n, psi.begin() + 2 * n);
-  fftw_execute_dft_r2c(impl_->ring_r2c, ring.data(), reinterpret_cast<fftw_complex*>(Psi1.data()));
+  // Residual of the wall row per mode, then the correction δ_k along (φ_k, χ_k) that removes it.
+  std::vector<cplx> Psi1(m), Psi2(m), W0(m), delta(m);
+  const std::pair<int, cplx*> rings[] = {{1, Psi1.data()}, {2, Psi2.data()}};
+  std::vector<double> ring(static_cast<size_t>(n));
+  for (const auto& r : rings) {
+    ring.assign(psi.begin() + size_t(r.first) * n, psi.begin() + size_t(r.first + 1) * n);
+    fftw_execute_dft_r2c(impl_->ring_r2c, ring.data(), reinterpret_cast<fftw_complex*>(r.second));
+  }
   ring.assign(zeta.begin(), zeta.begin() + n);
   fftw_execute_dft_r2c(impl_->ring_r2c, ring.data(), reinterpret_cast<fftw_complex*>(W0.data()));
-  const double c = 0.5 * p_.a * p_.a * h_ * h_;
+  const WallClosureRow& c = impl_->wall.row;
   for (int k = 0; k < m; ++k) {
-    const double target = k == 0 ? -double(n) * h_ * p_.a * p_.a * p_.omega : 0.0;
-    delta[k] = (target - Psi1[k] - c * W0[k]) / impl_->wall.denom[k];
+    const double target = k == 0 ? -double(n) * h_ * p_.a * p_.a * p_.omega * c.kappa : 0.0;
+    delta[k] = (target - (c.c1 * Psi1[k] - c.c2 * Psi2[k]) - c.cw * W0[k]) / impl_->wall.denom[k];
   }
   std::vector<cplx> spec(size_t(nr) * m);
   std::vector<double> corr(size_t(nr) * n);

@@ -15,6 +15,9 @@
 // ψ^{n+1} = ψ* + ζ̂_w,k χ_k (φ_k: Helmholtz response to unit wall vorticity, χ_k: its ψ), so the closure is
 // one scalar per mode:  ζ̂_w,k = (−Δξ a²ω δ_k0 − ψ̂*_{1,k}) / (χ_k(ξ_1) + a²Δξ²/2).  Exact at every step.
 // Δξ here is the wall's spacing Δξ_0 = ξ_1 − ξ_0; inside, ξ-derivatives take the mode solver's flux form.
+// NsWallClosure::jensen replaces the row by Jensen's (Briley's) second-order one, from Taylor series with
+// ψ_0 = 0, ψ_ξ = −a²ω, ψ_ξξ = −a²ζ_w and ψ_ξξξ eliminated with two rings (uniform ξ):
+// 8ψ_1 − ψ_2 + 2Δξ²a²ζ_w = −6Δξ a²ω; still one scalar per mode (wall_closure_row, stages.hpp).
 //
 // Far field at R: ψ_ξ = U R sinθ − Γ_R/(2π) (Neumann: the freestream's tangential velocity, the normal
 // velocity free so the wake's displacement flux can leave), with Γ_R the circulation on r = R, advanced
@@ -32,6 +35,10 @@ namespace magnus {
 
 /// Vorticity on the outer ring: ζ = 0 on inflow and convected out on outflow (default), or ζ = 0 all round.
 enum class NsOuterVorticity { inflow_outflow, zero };
+
+/// The wall's no-slip closure: Thom's ψ_1 + (a²h²/2)·ζ_w = −h a²ω (first order in ζ_w) or Jensen's
+/// 8ψ_1 − ψ_2 + 2h²a²ζ_w = −6h a²ω (second order; wall_closure_row gives both on any two spacings).
+enum class NsWallClosure { thom, jensen };
 
 /// The viscous scene and its grid (SI). Re = U·2a/ν. The case-file keys map onto this.
 struct NsParams {
@@ -65,6 +72,7 @@ struct NsParams {
   /// direction, and the wake beyond r = 10a sets the last 0.3% of St at Re 100, α = 1.
   int advection_order_xi = 2;
   NsOuterVorticity outer_vorticity = NsOuterVorticity::inflow_outflow;
+  NsWallClosure wall_closure = NsWallClosure::thom;  ///< the wall's ζ_w row: Thom's or Jensen's (stages.hpp)
 
   /// Re = U·2a/ν (0 when U = 0).
   double reynolds() const { return nu > 0.0 ? U * 2.0 * a / nu : 0.0; }
@@ -140,7 +148,7 @@ class NsOperator {
   double d_xi() const { return h_; }
 
   /// The closure: ζ_w (and ψ, from ζ with ψ = 0 on the wall and the far-field ψ_ξ = U R sinθ − Γ_R/2π)
-  /// such that ψ = 0 and Thom's ψ_ξ = −a²ω hold on the wall; zeta's rings 1…n_r−1 are kept, its wall ring
+  /// such that ψ = 0 and the closure's ψ_ξ = −a²ω hold on the wall; zeta's rings 1…n_r−1 are kept, its wall ring
   /// and psi are overwritten (a state interpolated from another grid).
   void close_wall(std::vector<double>& psi, std::vector<double>& zeta, double Gamma_R) const;
 

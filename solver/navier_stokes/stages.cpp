@@ -116,9 +116,20 @@ void poisson_modes(const ModeSolver& poisson, const PolarGrid& g, const cplx* ze
   poisson.solve_mode_range(psi_hat, zero_hat, g_hat, kb, ke);
 }
 
+WallClosureRow wall_closure_row(const PolarGrid& g, const NsParams& p) {
+  const double a2 = p.a * p.a, h0 = g.d_xi(0);
+  if (p.wall_closure == NsWallClosure::thom) return {1.0, 0.0, 0.5 * a2 * h0 * h0, 1.0};
+  const double rho = (h0 + g.d_xi(1)) / h0;
+  return {rho * rho * rho, 1.0, 0.5 * a2 * h0 * h0 * rho * rho * (rho - 1.0), rho * (rho * rho - 1.0)};
+}
+
 void wall_closure_modes(const WallInfluence& w, int n_r, int m, double target0, cplx* zeta_hat, cplx* psi_hat,
                         cplx* delta, int kb, int ke) {
-  for (int k = kb; k < ke; ++k) delta[k] = ((k == 0 ? target0 : 0.0) - psi_hat[size_t(m) + k]) / w.denom[k];
+  const WallClosureRow& c = w.row;
+  for (int k = kb; k < ke; ++k) {
+    const cplx psi_star = c.c1 * psi_hat[size_t(m) + k] - c.c2 * psi_hat[size_t(2 * m) + k];
+    delta[k] = ((k == 0 ? target0 : 0.0) - psi_star) / w.denom[k];
+  }
   for (int i = 0; i < n_r; ++i) {
     cplx* z = zeta_hat + size_t(i) * m;
     cplx* q = psi_hat + size_t(i) * m;

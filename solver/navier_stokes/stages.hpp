@@ -106,14 +106,25 @@ void poisson_modes(const ModeSolver& poisson, const PolarGrid& g, const std::com
                    std::complex<double>* psi_hat, const std::complex<double>* zero_hat,
                    const std::complex<double>* g_hat, int kb, int ke);
 
-/// The wall closure's influence data, ring-major [i][k]: φ_k(ξ_i), χ_k(ξ_i) (operator.hpp), and per mode
-/// χ_k(ξ_1) + a²Δξ²/2.
+/// The wall's ζ_w row c_1ψ_1 − c_2ψ_2 + c_w ζ_w = −κ h_0 a²ω (m²/s) of p.wall_closure on g's first
+/// spacings h_0 = ξ_1 − ξ_0, h_1 = ξ_2 − ξ_1, ρ = (h_0 + h_1)/h_0. Thom: c_1 = 1, c_2 = 0, c_w = a²h_0²/2,
+/// κ = 1. Jensen (ψ_ξξξ eliminated between the two rings' Taylor series): c_1 = ρ³, c_2 = 1,
+/// c_w = a²h_0²ρ²(ρ − 1)/2, κ = ρ(ρ² − 1) (uniform ξ: 8ψ_1 − ψ_2 + 2a²h²ζ_w = −6h a²ω).
+struct WallClosureRow {
+  double c1, c2, cw, kappa;
+};
+WallClosureRow wall_closure_row(const PolarGrid& g, const NsParams& p);
+
+/// The wall closure's influence data, ring-major [i][k]: φ_k(ξ_i), χ_k(ξ_i) (operator.hpp), per mode
+/// c_1χ_k(ξ_1) − c_2χ_k(ξ_2) + c_w, and the row.
 struct WallInfluence {
   std::vector<double> phi_t, chi_t, denom;
+  WallClosureRow row;
 };
 
-/// The wall closure on modes [kb, ke): δ_k = (t_k − ψ̂*_{1,k})/denom_k with t_0 = target0 = −n_θ Δξ a²ω
-/// (Thom's ψ_ξ = −a²ω), t_k = 0 else; ζ̂ += δ_k φ_k, ψ̂ += δ_k χ_k on every ring. delta: m values.
+/// The wall closure on modes [kb, ke): δ_k = (t_k − c_1ψ̂*_{1,k} + c_2ψ̂*_{2,k})/denom_k (ζ̂*_w = 0) with
+/// t_0 = target0 = −n_θ κ h_0 a²ω (the closure's ψ_ξ = −a²ω), t_k = 0 else; ζ̂ += δ_k φ_k, ψ̂ += δ_k χ_k on
+/// every ring. delta: m values.
 void wall_closure_modes(const WallInfluence& w, int n_r, int m, double target0,
                         std::complex<double>* zeta_hat, std::complex<double>* psi_hat,
                         std::complex<double>* delta, int kb, int ke);

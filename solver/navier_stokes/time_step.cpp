@@ -157,7 +157,7 @@ void solve_modes(Step& s, double Gamma_R) {
   StepBuffers& b = s.b;
   std::vector<cplx> g_hat(size_t(s.m));
   far_field_hat(s.g, s.p, Gamma_R, g_hat.data());
-  const double target0 = -double(s.n) * s.h * s.p.a * s.p.a * s.p.omega;
+  const double target0 = -double(s.n) * s.h * s.p.a * s.p.a * s.p.omega * s.im.wall.row.kappa;
   s.pool.run([&](int t) {
     int kb, ke;
     s.pool.split(s.m, t, kb, ke);
