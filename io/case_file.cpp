@@ -80,7 +80,7 @@ void check_model_keys(const Reader& r, bool ns, const std::string& circulation_m
     std::vector<std::string> ns_only;
     for (const auto& k : case_key_table().at("time")) ns_only.push_back("time." + k);
     ns_only.insert(ns_only.end(), {"output.snapshots", "output.snapshot_interval", "solver.advection_order",
-                                   "solver.advection_order_xi", "grid.wall_refinement", "grid.wall_layer",
+                                   "solver.advection_order_xi", "solver.wall_closure", "grid.wall_refinement", "grid.wall_layer",
                                    "grid.refine"});
     for (const auto& k : ns_only)
       if (has_key(r, k)) r.fail(k, "is only used with model.flow = \"navier-stokes\"");
@@ -265,6 +265,7 @@ void read_navier_stokes(const Reader& r, Case& c) {
   c.solver.advection_order_xi = int(r.integer(
       "solver", "advection_order_xi", c.solver.advection_order_xi, [](long v) { return v == 2 || v == 4; },
       "2 (Arakawa's Jacobian) or 4 (fourth order in ξ)"));
+  c.solver.wall_closure = r.word("solver", "wall_closure", c.solver.wall_closure, {"thom", "jensen"});
   const std::string mode = r.word("time", "mode", "auto", {"auto", "steady", "unsteady"});
   c.time.mode = mode == "auto"     ? TimeMode::automatic
                 : mode == "steady" ? TimeMode::steady

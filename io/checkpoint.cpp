@@ -99,6 +99,8 @@ std::vector<IdentityEntry> checkpoint_identity(const Case& c) {
   }
   id.push_back({"solver.advection_order", std::to_string(p.advection_order)});
   id.push_back({"solver.advection_order_xi", std::to_string(p.advection_order_xi)});
+  if (p.wall_closure != NsWallClosure::thom)  // Thom's: no entry, as checkpoints stored before the option
+    id.push_back({"solver.wall_closure", "jensen"});
   return id;
 }
 

@@ -281,7 +281,8 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
   s += labelled(
       "model",
       fmt::format("navier-stokes: 2D incompressible laminar, vorticity–streamfunction, no slip held "
-                  "exactly; advection order {} in θ, {} in ξ (solver.advection_order, advection_order_xi)",
+                  "exactly{}; advection order {} in θ, {} in ξ (solver.advection_order, advection_order_xi)",
+                  c.solver.wall_closure == "jensen" ? " (Jensen's second-order wall closure)" : "",
                   c.solver.advection_order, c.solver.advection_order_xi));
   const std::string rings =
       c.grid.wall_refinement > 1.0

@@ -32,6 +32,11 @@ std::vector<AttrSpec> viscous_parameter_rows() {
                P, "advection_order_xi", "order of the advection term in ξ: 2 (Arakawa's Jacobian) or 4",
                [](const FlowResult& r) { return opt(double(r.c.solver.advection_order_xi)); },
                [](FlowResult& r, double v) { r.c.solver.advection_order_xi = checked_cast<int>(v, "advection_order_xi"); })),
+      only(Models::viscous,
+           text(
+               P, "wall_closure", "the no-slip row for the wall vorticity: thom (first order) or jensen (second)",
+               [](const FlowResult& r) { return r.c.solver.wall_closure; },
+               [](FlowResult& r, const std::string& v) { r.c.solver.wall_closure = v; })),
       only(Models::viscous, num(
                                 P, "wall_refinement", "1", "grid.wall_refinement: Δξ_far/Δξ_wall (1: uniform ξ)",
                                 [](const FlowResult& r) { return opt(r.c.grid.wall_refinement); },

@@ -9,6 +9,7 @@
 
 #include "io/case_file.hpp"
 #include "io/case_parse.hpp"
+#include "postproc/navier_stokes/run.hpp"
 
 using namespace magnus;
 using Catch::Contains;
@@ -110,6 +111,11 @@ TEST_CASE("time keys and the snapshots: every value, and every range named", "[i
   CHECK(parse(ns_scene).solver.advection_order_xi == 2);
   CHECK(parse(ns_scene + "[solver]\nadvection_order_xi = 4\n").solver.advection_order_xi == 4);
   CHECK(parse(ns_scene, {"solver.advection_order_xi=4"}).solver.advection_order_xi == 4);
+  CHECK(parse(ns_scene).solver.wall_closure == "thom");
+  CHECK(parse(ns_scene + "[solver]\nwall_closure = \"jensen\"\n").solver.wall_closure == "jensen");
+  CHECK(parse(ns_scene, {"solver.wall_closure=jensen"}).solver.wall_closure == "jensen");
+  CHECK(ns_params(parse(ns_scene)).wall_closure == NsWallClosure::thom);
+  CHECK(ns_params(parse(ns_scene, {"solver.wall_closure=jensen"})).wall_closure == NsWallClosure::jensen);
 
   const std::vector<std::pair<std::string, std::string>> bad = {
       {"[time]\nmode = \"fast\"\n",
@@ -143,6 +149,8 @@ TEST_CASE("time keys and the snapshots: every value, and every range named", "[i
       {"[solver]\nadvection_order_xi = 6\n",
        "test.toml: solver.advection_order_xi: 6 is out of range: must be 2 (Arakawa's Jacobian) or 4 (fourth "
        "order in ξ)"},
+      {"[solver]\nwall_closure = \"briley\"\n",
+       "test.toml: solver.wall_closure: \"briley\" is not one of \"thom\", \"jensen\""},
   };
   for (const auto& [text, message] : bad) {
     CAPTURE(text);
@@ -163,6 +171,8 @@ TEST_CASE("potential flow: the keys of [time] and the snapshots are refused by n
         "test.toml: solver.advection_order: is only used with model.flow = \"navier-stokes\"");
   CHECK(error_of(scene + "[solver]\nadvection_order_xi = 4\n") ==
         "test.toml: solver.advection_order_xi: is only used with model.flow = \"navier-stokes\"");
+  CHECK(error_of(scene + "[solver]\nwall_closure = \"jensen\"\n") ==
+        "test.toml: solver.wall_closure: is only used with model.flow = \"navier-stokes\"");
   CHECK(error_of(scene + "[output]\nsnapshots = 10\n") ==
         "test.toml: output.snapshots: is only used with model.flow = \"navier-stokes\"");
   CHECK(error_of(scene + "[output]\nsnapshot_interval = 1.0\n") ==
@@ -348,6 +358,10 @@ TEST_CASE("the resolved case: potential text unchanged, navier-stokes text reads
   // A stated grid and clustering read back as stated.
   const Case g = parse(ns_scene + "[grid]\nn_theta = 64\nwall_refinement = 3\n");
   CHECK_THAT(g.source_text, Contains("n_theta = 64\nn_r = 0\nwall_refinement = 3.0\n\n[solver]"));
+  // Jensen's wall closure reads back; Thom's (the default) is left out, as in texts before the key.
+  const Case j = parse(ns_scene, {"solver.wall_closure=jensen"});
+  CHECK_THAT(j.source_text, Contains("advection_order_xi = 2\nwall_closure = \"jensen\"\n\n[time]"));
+  check_round_trip(j);
   CHECK(g.grid.n_theta_given);
   CHECK(g.grid.wall_refinement_given);
   CHECK(!g.grid.wall_layer_given);

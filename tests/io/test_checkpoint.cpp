@@ -102,6 +102,13 @@ TEST_CASE("checkpoint: another advection order is another run, refused", "[io][c
         "checkpoint '" + path +
             "' is from another scene: solver.advection_order_xi 2 there, 4 here; remove it or run without "
             "--resume");
+  // Jensen's wall closure is another run too; Thom's adds no entry, so older checkpoints still resume.
+  CHECK_THAT(checkpoint_key(test::parse(kCase, {"solver.wall_closure=jensen"})),
+             Catch::Matchers::EndsWith("solver.advection_order_xi=2 solver.wall_closure=jensen"));
+  CHECK(refusal(path, test::parse(kCase, {"solver.wall_closure=jensen"})) ==
+        "checkpoint '" + path +
+            "' is from another scene: solver.wall_closure undefined there, jensen here; remove it or run "
+            "without --resume");
 }
 
 TEST_CASE("checkpoint: another scene is refused naming each value that differs, there and here",
