@@ -1,0 +1,166 @@
+// The viscous model against the consensus of published values (physics/viscous_consensus.hpp), run as a
+// user runs it: a case's text → parse_case → run_viscous, on the scene's default grid (grid.refine = 1)
+// and on grid.refine = 2. Marched scenes: the converged value is the Richardson extrapolation at order 2
+// from the two, f₂ + (f₂ − f₁)/3. Steady scenes: time.mode = "steady", the grid study's Richardson value.
+// Label `validation` (tens of minutes): ctest -L validation -R consensus. D = 1 m, U = 1 m/s, ρ = 1 kg/m³.
+#include <fmt/core.h>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+
+#include "io/case_file.hpp"
+#include "physics/viscous_consensus.hpp"
+#include "postproc/navier_stokes/run.hpp"
+
+using namespace magnus;
+
+namespace {
+
+/// A navier-stokes case at Re, α (a = 0.5 m, U = 1 m/s: D/U = 1 s) with extra keys `more` (TOML lines).
+std::string consensus_case(double Re, double alpha, const std::string& mode, double t_end,
+                           const std::string& more = "") {
+  return fmt::format(
+      "title = \"consensus Re {0} alpha {1}\"\n[model]\nflow = \"navier-stokes\"\n[cylinder]\nradius = 0.5\n"
+      "spin_ratio = {1}\n[flow]\nspeed = 1.0\ndensity = 1.0\nreynolds = {0}\n[time]\nmode = \"{2}\"\n"
+      "end = {3}\n{4}",
+      Re, alpha, mode, t_end, more);
+}
+
+/// One run of a case's text (cached: the checks of a scene share its runs); prints its grid and wall time.
+const FlowResult& run_text(const std::string& text, const std::string& overrides) {
+  static std::map<std::string, FlowResult> cache;
+  const std::string key = text + "|" + overrides;
+  if (auto it = cache.find(key); it != cache.end()) return it->second;
+  std::vector<std::string> sets;
+  if (!overrides.empty()) sets.push_back(overrides);
+  const Case c = parse_case(text, "consensus", sets);
+  FlowResult r = run_viscous(c);
+  const ViscousPart& v = *r.viscous;
+  const double wall = v.newton_seconds.value_or(0.0) + v.stability_seconds.value_or(0.0) +
+                      v.march_seconds.value_or(0.0);
+  std::printf("  %s [%s]: grid %d x %d, R/a %.0f; %s; wall %.1f s\n", c.title.c_str(), overrides.c_str(),
+              r.grid.n_theta, r.grid.n_r, r.grid.outer_radius() / c.scene.radius, v.status.c_str(), wall);
+  std::fflush(stdout);
+  return cache.emplace(key, std::move(r)).first->second;
+}
+
+/// Prints ours against the table's entry and checks the entry's tolerance.
+void check_consensus(const char* id, double ours, const std::string& how) {
+  const ConsensusValue& ref = consensus(id);
+  const double diff = (ours - ref.value) / std::fabs(ref.value);
+  std::printf("  %-14s ours %9.4f  published %9.4f (%s)  difference %+6.2f%%  tolerance %.1f%%  (%s)\n",
+              ref.quantity, ours, ref.value, ref.sources, 100.0 * diff, 100.0 * ref.tolerance, how.c_str());
+  std::fflush(stdout);
+  INFO(ref.id << ": ours " << ours << " against " << ref.value);
+  CHECK(std::fabs(diff) <= ref.tolerance);
+}
+
+/// A marched scene on grid.refine 1 and 2: the two results.
+struct Marched {
+  const FlowResult& r1;
+  const FlowResult& r2;
+  /// f₂ + (f₂ − f₁)/3 of a ViscousPart figure (Richardson at order 2, grid ratio 2).
+  template <class F>
+  double richardson(F f) const {
+    const double f1 = f(*r1.viscous), f2 = f(*r2.viscous);
+    std::printf("    refine 1: %.5f  refine 2: %.5f\n", f1, f2);
+    return f2 + (f2 - f1) / 3.0;
+  }
+};
+
+Marched marched(double Re, double alpha, double t_end, const std::string& more = "") {
+  const std::string text = consensus_case(Re, alpha, "unsteady", t_end, more);
+  const FlowResult& r1 = run_text(text, "");
+  const FlowResult& r2 = run_text(text, "grid.refine=2");
+  REQUIRE((r1.viscous->periodic && r2.viscous->periodic));
+  return {r1, r2};
+}
+
+/// A steady scene by the grid study (time.mode = "steady") at grid.refine 2, domain R = R_over_a·a
+/// (domain.outer_radius is R/a).
+const FlowResult& steady(double Re, double alpha, double R_over_a = 100.0) {
+  const FlowResult& r = run_text(
+      consensus_case(Re, alpha, "steady", 100, fmt::format("[domain]\nouter_radius = {}\n", R_over_a)),
+      "grid.refine=2");
+  REQUIRE(r.viscous->steady_study);
+  REQUIRE(r.viscous->steady_study->converged);
+  return r;
+}
+
+/// The separation angle (deg) from the rear stagnation point (θ = 0) on the upper side, α = 0.
+double separation_deg(const FlowResult& r) {
+  for (double t : r.viscous->separation)
+    if (t > 0.05 && t < M_PI) return 180.0 / M_PI * t;
+  return 0.0;
+}
+
+const char* kRich = "Richardson of refine 1 and 2";
+const char* kStudy = "steady grid study, Richardson";
+
+}  // namespace
+
+TEST_CASE("[validation] consensus: steady Re 20, alpha 0: C_D and the wake length", "[validation]") {
+  const SteadyStudy& st = *steady(20, 0).viscous->steady_study;
+  REQUIRE((st.C_D && st.recirculation));
+  check_consensus("re20_cd", st.C_D->value, kStudy);
+  check_consensus("re20_lw", st.recirculation->value, kStudy);
+}
+
+TEST_CASE("[validation] consensus: steady Re 40, alpha 0: C_D at R = 60a, 80a, 100a, wake, separation",
+          "[validation]") {
+  for (const auto& [R, id] : {std::pair{60.0, "re40_cd_60"}, {80.0, "re40_cd_80"}, {100.0, "re40_cd_100"}}) {
+    const SteadyStudy& st = *steady(40, 0, R).viscous->steady_study;
+    REQUIRE(st.C_D);
+    check_consensus(id, st.C_D->value, kStudy);
+  }
+  const FlowResult& r = steady(40, 0, 100.0);
+  REQUIRE(r.viscous->steady_study->recirculation);
+  check_consensus("re40_lw", r.viscous->steady_study->recirculation->value, kStudy);
+  check_consensus("re40_sep", separation_deg(r), "finest grid of the study");
+}
+
+TEST_CASE("[validation] consensus: Re 100, alpha 0: mean C_D and St", "[validation]") {
+  const Marched m = marched(100, 0, 300);
+  check_consensus("re100_a0_cd", m.richardson([](const ViscousPart& v) { return *v.cd_mean; }), kRich);
+  check_consensus("re100_a0_st", m.richardson([](const ViscousPart& v) { return *v.strouhal; }), kRich);
+}
+
+TEST_CASE("[validation] consensus: Re 100, alpha 1: mean |C_L|, C_D, St, C_L amplitude", "[validation]") {
+  const Marched m = marched(100, 1, 300);
+  check_consensus("re100_a1_cl", m.richardson([](const ViscousPart& v) { return -*v.cl_mean; }), kRich);
+  check_consensus("re100_a1_cd", m.richardson([](const ViscousPart& v) { return *v.cd_mean; }), kRich);
+  check_consensus("re100_a1_st", m.richardson([](const ViscousPart& v) { return *v.strouhal; }), kRich);
+  check_consensus("re100_a1_amp", m.richardson([](const ViscousPart& v) { return *v.cl_amplitude; }), kRich);
+}
+
+TEST_CASE("[validation] consensus: Re 100, alpha 1.5: mean C_D", "[validation]") {
+  const Marched m = marched(100, 1.5, 300);
+  check_consensus("re100_a15_cd", m.richardson([](const ViscousPart& v) { return *v.cd_mean; }), kRich);
+}
+
+TEST_CASE("[validation] consensus: steady Re 100, alpha 2: |C_L| and C_D", "[validation]") {
+  const SteadyStudy& st = *steady(100, 2).viscous->steady_study;
+  REQUIRE((st.C_D && st.C_L));
+  check_consensus("re100_a2_cl", -st.C_L->value, kStudy);
+  check_consensus("re100_a2_cd", st.C_D->value, kStudy);
+}
+
+TEST_CASE("[validation] consensus: steady Re 100, alpha 4 and 6: |C_L| (digitised)", "[validation]") {
+  for (const auto& [alpha, id] : {std::pair{4.0, "re100_a4_cl"}, {6.0, "re100_a6_cl"}}) {
+    const SteadyStudy& st = *steady(100, alpha).viscous->steady_study;
+    REQUIRE(st.C_L);
+    check_consensus(id, -st.C_L->value, kStudy);
+  }
+}
+
+TEST_CASE("[validation] consensus: Re 100, alpha 5: the one-sided second shedding mode", "[validation]") {
+  // The second mode's period is ~45 D/U and it grows slowly from rest: a long march, default grid only.
+  const FlowResult& r = run_text(consensus_case(100, 5, "unsteady", 1500), "");
+  const ViscousPart& v = *r.viscous;
+  REQUIRE(v.periodic);
+  check_consensus("re100_a5_cl", -*v.cl_mean, "default grid");
+  check_consensus("re100_a5_cd", *v.cd_mean, "default grid");
+  check_consensus("re100_a5_st", *v.strouhal, "default grid");
+}
