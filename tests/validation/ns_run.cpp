@@ -1,7 +1,8 @@
 // A small driver of the viscous run, for timing and memory (/usr/bin/time -v) and for the validation
 // figures: ns_run Re alpha n_theta R_over_a t_end [cfl] [quiet]. D = 1 m, U = 1 m/s, ρ = 1 kg/m³.
 // Environment: NS_REFINE=k the scene's grid (scene_grid(Re, α, k): n_θ, stretched rings; n_theta ignored),
-// NS_OUTER_ZERO=1 ζ = 0 all round the outer ring, NS_ORDER=4 advection order 4 in θ and ξ.
+// NS_OUTER_ZERO=1 ζ = 0 all round the outer ring, NS_ORDER=4 advection order 4 in θ and ξ
+// (NS_ORDER_THETA, NS_ORDER_XI: one of them), NS_SPLIT_FROM=t0 the mean C_D parts over t ≥ t0.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -35,6 +36,8 @@ int main(int argc, char** argv) {
   }
   if (std::getenv("NS_OUTER_ZERO")) p.outer_vorticity = NsOuterVorticity::zero;
   if (const char* o = std::getenv("NS_ORDER")) p.advection_order = p.advection_order_xi = std::atoi(o);
+  if (const char* o = std::getenv("NS_ORDER_THETA")) p.advection_order = std::atoi(o);
+  if (const char* o = std::getenv("NS_ORDER_XI")) p.advection_order_xi = std::atoi(o);
   const bool quiet = argc > 7;
   UnsteadyOptions o;
   o.t_end = std::atof(argv[5]);
