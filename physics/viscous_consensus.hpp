@@ -35,12 +35,14 @@ inline constexpr ConsensusValue kViscousConsensus[] = {
   {"re100_a0_cd", 100, 0,  0,  "C_D",    1.320, "Qu et al. 2013; Posdziech & Grundmann 2007", 0.01},
   {"re100_a0_st", 100, 0,  0,  "St",     0.1644, "Qu et al. 2013; Posdziech & Grundmann 2007", 0.005},
   {"re100_a1_cl", 100, 1,  0,  "|C_L|",  2.495, "Kang, Choi & Lee 1999 2.488; Stojkovic et al. 2002 2.504", 0.005},
-  {"re100_a1_cd", 100, 1,  0,  "C_D",    1.093, "Kang et al. 1999 (R = 100 D: 1.098); Stojkovic et al. 2002 1.108", 0.01},
+  {"re100_a1_cd", 100, 1,  0,  "C_D",    1.093, "Kang et al. 1999 1.104 at 50 D, -0.55% to 100 D, -0.43% to 301^2; Stojkovic et al. 2002 1.108", 0.01},
   {"re100_a1_st", 100, 1,  0,  "St",     0.1652, "Kang et al. 1999 0.1650-0.1656; Stojkovic et al. 2002 0.1658", 0.005},
   {"re100_a1_amp", 100, 1, 0,  "C_L amplitude", 0.357, "Kang et al. 1999 0.358-0.363; Stojkovic et al. 2002 0.362", 0.025},
   {"re100_a15_cd", 100, 1.5, 0, "C_D",   0.816, "Stojkovic et al. 2002 0.818 (table); Kang et al. 1999 0.815 (digitised ±0.01)", 0.025},
   {"re100_a2_cl", 100, 2,  0,  "|C_L|",  5.48, "Stojkovic et al. 2002 (table)", 0.01},
   {"re100_a2_cd", 100, 2,  0,  "C_D",    0.465, "Stojkovic et al. 2002 0.46 (two digits); Kang et al. 1999 0.471 (digitised)", 0.03},
+  // α 4–6: digitised ±0.15 (0.9% at α 4, 0.44% at α 6) plus ~0.5% for the source's own grid; α 5: the
+  // two studies' spread (C_D 0.32 against 0.329) and St's two digits (±0.0005).
   {"re100_a4_cl", 100, 4,  0,  "|C_L|",  17.00, "Stojkovic et al. 2002 Fig. 13, digitised ±0.15", 0.015},
   {"re100_a6_cl", 100, 6,  0,  "|C_L|",  34.38, "Stojkovic et al. 2002 Fig. 13, digitised ±0.15", 0.01},
   {"re100_a5_cl", 100, 5,  0,  "|C_L|",  26.5, "Munir et al. 2021 26.5; Bourguet 2020 26.6; Stojkovic Fig. 13 26.53", 0.015},
