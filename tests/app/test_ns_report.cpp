@@ -98,14 +98,14 @@ TEST_CASE("navier-stokes summary: below one wall cell the boundary layer is not 
   CHECK(
       test::line_of(c.out, "               boundary layer") ==
       "               boundary layer: 3.6 wall cells across D/√(Re(1 + α²)) — coarse: below 5 cells C_D can "
-      "be off by more than 10% (+14% with 4.5 cells at Re 100, α 2; raise grid.n_theta)");
+      "be off by more than 10% (+14% with 4.5 cells at Re 100, α 2; raise grid.refine, or leave grid.n_theta "
+      "and grid.n_r to magnus)");
   // Between five and six: a few % (measured: +4.6% with 5.6 cells at α 1.5).
   const auto d = run(dir, {"grid.n_theta=144"}, "d.h5");
   REQUIRE(d.status == 0);
   CHECK(test::line_of(d.out, "               boundary layer")
             .find("— coarse: below 6 cells expect C_D errors of a few % (+4.6% with 5.6 cells at Re 100, α "
-                  "1.5; raise "
-                  "grid.n_theta)") != std::string::npos);
+                  "1.5; raise grid.refine, or leave grid.n_theta and grid.n_r to magnus)") != std::string::npos);
 }
 
 TEST_CASE("navier-stokes case: Re below 0.01 is refused, a viscous length beyond R is noted",
