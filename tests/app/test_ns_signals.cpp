@@ -177,9 +177,15 @@ TEST_CASE("a navier-stokes run whose result and checkpoint need more than the fr
   }
   const auto o = test::magnus_cmd({"run", c, "-o", dir + "/r.h5", "--set", sets[0]}, dir);
   CHECK(o.status == 1);
-  CHECK(o.err.rfind(
-            "magnus: error: " + dir + "/r.h5: the result and its checkpoint need about " + format_bytes(need),
-            0) == 0);
+  // The grid's memory is checked first (the snapshots are held in memory too): on a machine with more disk
+  // than memory that refusal comes first, naming the grid; else the disk's, naming the file.
+  const bool memory = o.err.find("with its companion run, more than the memory available") != std::string::npos;
+  if (memory)
+    CHECK(o.err.rfind("magnus: error: grid.n_theta: the grid needs n_θ 2048", 0) == 0);
+  else
+    CHECK(o.err.rfind(
+              "magnus: error: " + dir + "/r.h5: the result and its checkpoint need about " + format_bytes(need),
+              0) == 0);
   CHECK(test::lines(o.err) == 1);
   CHECK_FALSE(fs::exists(dir + "/r.h5"));
   CHECK_FALSE(fs::exists(checkpoint_path(dir + "/r.h5")));
