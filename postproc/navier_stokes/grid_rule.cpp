@@ -55,11 +55,10 @@ void apply_scene_grid(const Case& c, NsParams& p) {
 void check_grid_memory(const Case& c, const NsParams& p, size_t limit) {
   const PolarGrid g = ns_grid(p);
   // The run and its companion on the grid twice as coarse (a quarter of the nodes) march side by side.
-  const double nodes = double(g.nodes()),
-               bytes = nodes * (1.25 * kMarchBytesPerNode + 16.0 * std::max(0, c.output.snapshots));
+  const double nodes = double(g.nodes()), bytes = march_bytes(nodes, c.output.snapshots);
   const bool given = limit > 0;
-  if (!given) limit = bytes >= double(kUncheckedBytes) ? available_bytes() : 0;
-  if (limit == 0 || bytes <= double(limit)) return;
+  limit = passed_limit(bytes, limit);
+  if (limit == 0) return;
   const std::string need = fmt::format(
       "n_θ {} × {} rings ({:.3g} nodes), about {} with its companion run, more than {} {}", g.n_theta, g.n_r,
       nodes, format_bytes(size_t(std::min(1e18, bytes))), given ? "the limit" : "the memory available,",

@@ -11,6 +11,15 @@
 
 namespace magnus {
 
+double march_bytes(double nodes, int snapshots) {
+  return nodes * ((1.0 + kCompanionBytesShare) * kMarchBytesPerNode + 16.0 * std::max(0, snapshots));
+}
+
+size_t passed_limit(double bytes, size_t limit) {
+  if (limit == 0) limit = bytes >= double(kUncheckedBytes) ? available_bytes() : 0;
+  return limit > 0 && bytes > double(limit) ? limit : 0;
+}
+
 ResolvingGrid resolving_grid(const Case& c, double cells) {
   const Scene& s = c.scene;
   const double alpha = s.spin_ratio(), thickness = 2.0 / std::sqrt(s.reynolds() * (1.0 + alpha * alpha));
@@ -20,7 +29,7 @@ ResolvingGrid resolving_grid(const Case& c, double cells) {
   g.n_theta = 2.0 * std::ceil(M_PI / (defaults.radial_refinement * h));
   g.n_r = std::ceil(std::log(c.grid.outer_radius) / h - 1e-9) + 1.0;
   g.nodes = g.n_theta * g.n_r;
-  g.bytes = g.nodes * ((1.0 + kCompanionBytesShare) * kMarchBytesPerNode + 16.0 * std::max(0, c.output.snapshots));
+  g.bytes = march_bytes(g.nodes, c.output.snapshots);
   return g;
 }
 
@@ -29,8 +38,8 @@ void check_resolvable(const Case& c, size_t limit) {
   if (!(s.speed > 0.0) || !(s.viscosity > 0.0)) return;
   const ResolvingGrid g = resolving_grid(c, kWallCellsNeeded);
   const bool given = limit > 0;
-  if (!given) limit = g.bytes >= double(kUncheckedBytes) ? available_bytes() : 0;
-  if (limit == 0 || g.bytes <= double(limit)) return;
+  limit = passed_limit(g.bytes, limit);
+  if (limit == 0) return;
   const std::string key = s.reynolds_given ? "flow.reynolds" : "flow.viscosity";
   const std::string snaps =
       c.output.snapshots > 0 ? fmt::format(", {} of it for output.snapshots = {}", format_bytes(size_t(

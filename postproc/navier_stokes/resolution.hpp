@@ -20,6 +20,13 @@ constexpr double kMarchBytesPerNode = 200.0;
 /// its bytes as a share of the run's march.
 constexpr double kCompanionBytesShare = 0.25;
 
+/// Bytes of a march on `nodes` nodes with its companion, keeping `snapshots` snapshots (16 B per node each).
+double march_bytes(double nodes, int snapshots);
+
+/// The limit an estimate of `bytes` passes, or 0 when it fits: `limit` when given (> 0), else the memory
+/// available (read only for estimates of kUncheckedBytes or more).
+size_t passed_limit(double bytes, size_t limit);
+
 /// The coarsest navier-stokes grid of the case's cell shape (Δξ = Δθ/(5/3), R/a as given) that puts
 /// `cells` cells of its first ring across D/√(Re(1 + α²)): Δξ = ln(1 + 2/(cells·√(Re(1 + α²)))).
 struct ResolvingGrid {
