@@ -123,7 +123,7 @@ struct TimeRequest {
   double end = 300.0;                 ///< t_end, D/U_ref, > 0
   double dt = 0.0;                    ///< Δt, D/U_ref; 0: from the CFL number
   double cfl = 0.7;                   ///< target CFL number, (0, 0.8]
-  double mean_tolerance = 1e-3;       ///< stop when the last periods' means of C_L, C_D agree to this
+  double mean_tolerance = 1e-3;       ///< stop when the last periods' means of C_L, C_D agree to this (relative above 1)
   double checkpoint_interval = 10.0;  ///< checkpoint every this many D/U_ref; 0: none
 };
 

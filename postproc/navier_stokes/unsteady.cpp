@@ -102,6 +102,10 @@ double choose_time_step(const NsParams& p, const PolarGrid& g, const NsState& s,
   return dt_cfl;
 }
 
+bool means_agree(double f0, double f1, double tol) {
+  return std::fabs(f1 - f0) < tol * std::max(1.0, std::fabs(f1));
+}
+
 namespace {
 
 /// The reference speed U (or a|ω| when U = 0), m/s; throws std::invalid_argument when nothing moves or the
@@ -170,9 +174,9 @@ bool forces_flat(const std::vector<ForceSample>& h, size_t first_fine, double t_
   return hi[0] - lo[0] < tol && hi[1] - lo[1] < tol && (freestream || hi[2] - lo[2] < tol);
 }
 
-/// Periodic: the last converged_periods + 1 full-grid periods agree (means of C_L, C_D and lengths to
-/// mean_tol) and the spectrum of the last periods peaks at the same frequency (a false period never
-/// stops it).
+/// Periodic: the last converged_periods + 1 full-grid periods agree (means of C_L, C_D by means_agree and
+/// lengths to mean_tol, relatively) and the spectrum of the last periods peaks at the same frequency (a
+/// false period never stops it).
 bool periods_agree(const std::vector<ForceSample>& h, size_t first_fine, const UnsteadyOptions& o) {
   // The last periods, enough for both tests (the means' agreement and the spectrum's).
   const size_t n_same = size_t(o.converged_periods) + 1;
@@ -182,8 +186,8 @@ bool periods_agree(const std::vector<ForceSample>& h, size_t first_fine, const U
   bool same = true;
   for (size_t q = 1; q < w.size(); ++q) {
     const double T0 = w[q - 1].t1 - w[q - 1].t0, T1 = w[q].t1 - w[q].t0;
-    same = same && std::fabs(w[q].C_L - w[q - 1].C_L) < o.mean_tol &&
-           std::fabs(w[q].C_D - w[q - 1].C_D) < o.mean_tol && std::fabs(T1 - T0) < o.mean_tol * T1;
+    same = same && means_agree(w[q - 1].C_L, w[q].C_L, o.mean_tol) &&
+           means_agree(w[q - 1].C_D, w[q].C_D, o.mean_tol) && std::fabs(T1 - T0) < o.mean_tol * T1;
   }
   return same && period_disagreement(h, all).empty();  // it reads the last 8 periods
 }

@@ -15,7 +15,7 @@ namespace magnus {
 struct UnsteadyOptions {
   double t_end = 200.0;         ///< end time, s
   double rho = 1.0;             ///< density for the forces, kg/m³
-  double mean_tol = 1e-3;       ///< periodic: stop when the last periods' means of C_L, C_D differ < this
+  double mean_tol = 1e-3;       ///< periodic: stop when the last periods' means of C_L, C_D differ < this·max(1, |C|)
   int converged_periods = 3;    ///< …over this many consecutive periods (and their lengths by < mean_tol)
   double steady_tol = 1e-5;     ///< steady: stop when C_L, C_D vary < this over steady_window
   double steady_window = 10.0;  ///< in convective times D/U
@@ -47,6 +47,11 @@ struct ForceSample {
 /// The sample of a state at time t (s) with its forces: the coefficients when defined (else 0 and
 /// has_coefficients = false).
 ForceSample force_sample(double t, const ViscousForces& f);
+
+/// Whether two periods' means f0, f1 of a force coefficient agree to tol: |f₁ − f₀| < tol·max(1, |f₁|),
+/// relative for a coefficient above 1 (a lift of 26 at high spin agrees to 1e-3 of itself, not to 4e-5 of
+/// itself), absolute below (a lift near 0 without spin).
+bool means_agree(double f0, double f1, double tol);
 
 /// What a run reached.
 struct UnsteadyResult {

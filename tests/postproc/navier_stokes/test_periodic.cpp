@@ -99,3 +99,15 @@ TEST_CASE("[ns] period: crossings that disagree with the spectrum leave St undef
   const auto w = lift_periods(h, 8);
   CHECK(period_disagreement(h, w) == r.period_note);
 }
+
+TEST_CASE("[ns] period: means agree relatively above 1, absolutely below", "[ns]") {
+  // A lift of 26.5 (α = 5) whose periods' means differ by 0.02: 7.5e-4 of itself, inside 1e-3.
+  CHECK(means_agree(26.50, 26.52, 1e-3));
+  CHECK_FALSE(means_agree(26.50, 26.55, 1e-3));  // 1.9e-3 of itself
+  // A drag of 0.3: absolute, 1e-3 of the dynamic pressure's scale.
+  CHECK(means_agree(0.3000, 0.3009, 1e-3));
+  CHECK_FALSE(means_agree(0.3000, 0.3011, 1e-3));
+  // A lift near 0 without spin: absolute.
+  CHECK(means_agree(-0.0004, 0.0004, 1e-3));
+  CHECK_FALSE(means_agree(-0.0006, 0.0006, 1e-3));
+}
