@@ -13,6 +13,7 @@
 #include "io/case_keys.hpp"
 #include "io/case_reader.hpp"
 #include "io/toml_safe.hpp"
+#include "postproc/navier_stokes/grid_rule.hpp"
 
 namespace magnus {
 
@@ -259,13 +260,18 @@ void read_navier_stokes(const Reader& r, Case& c) {
       "> 0 and <= ln(R/a), R/a = domain.outer_radius (the ξ-length of the spacing's transition)");
   c.grid.wall_refinement_given = r.has("grid", "wall_refinement");
   c.grid.wall_layer_given = r.has("grid", "wall_layer");
+  // The scene's scheme goes with the scene's grid (grid_rule.hpp): Jensen's wall closure, and fourth order
+  // in θ where the wake sheds.
+  const bool rule = rule_grid(c);
   c.solver.advection_order = int(r.integer(
-      "solver", "advection_order", c.solver.advection_order, [](long v) { return v == 2 || v == 4; },
+      "solver", "advection_order", rule ? rule_advection_order(scene_sheds(c)) : c.solver.advection_order,
+      [](long v) { return v == 2 || v == 4; },
       "2 (Arakawa's Jacobian) or 4 (fourth order in θ)"));
   c.solver.advection_order_xi = int(r.integer(
       "solver", "advection_order_xi", c.solver.advection_order_xi, [](long v) { return v == 2 || v == 4; },
       "2 (Arakawa's Jacobian) or 4 (fourth order in ξ)"));
-  c.solver.wall_closure = r.word("solver", "wall_closure", c.solver.wall_closure, {"thom", "jensen"});
+  c.solver.wall_closure =
+      r.word("solver", "wall_closure", rule ? kRuleWallClosure : c.solver.wall_closure, {"thom", "jensen"});
   const std::string mode = r.word("time", "mode", "auto", {"auto", "steady", "unsteady"});
   c.time.mode = mode == "auto"     ? TimeMode::automatic
                 : mode == "steady" ? TimeMode::steady

@@ -11,18 +11,19 @@
 
 namespace magnus {
 
-SceneGrid scene_grid(double Re, double alpha, double refine) {
+SceneGrid scene_grid(double Re, double alpha, double refine, bool sheds) {
   const double f = refine > 0.0 ? refine : 1.0;
   auto n_theta_of = [Re](double factor) {
-    return std::max(16, 32 * int(std::ceil(6.0 * factor * std::sqrt(std::max(Re, 20.0) / 100.0) - 1e-9)));
+    return std::max(16, 32 * int(std::ceil(factor * std::sqrt(std::max(Re, 20.0) / 100.0) - 1e-9)));
   };
-  auto d_xi_far_of = [](int n_theta) { return 2.0 * M_PI / n_theta / NsParams{}.radial_refinement; };
+  const double shape = 5.0 / 3.0;  // Δθ/Δξ of the validation studies' cells, at n_θ of kRuleThetaFactor
   SceneGrid g;
-  g.n_theta = n_theta_of(f);
+  g.n_theta = n_theta_of((sheds ? kRuleThetaFactorShedding : kRuleThetaFactor) * f);
   g.delta_xi = std::log1p(2.0 / std::sqrt(std::max(Re, 1e-12) * (1.0 + alpha * alpha)));
   // q and the layer's ξ-length are those of the unrefined grid: refining keeps the map, halving each spacing.
-  const double d_xi_far = d_xi_far_of(n_theta_of(1.0));
-  g.wall_refinement = std::max(1.0, d_xi_far / (g.delta_xi / kRuleWallCells));
+  const double d_xi_far = 2.0 * M_PI / n_theta_of(kRuleThetaFactor) / shape;
+  g.radial_refinement = (2.0 * M_PI / g.n_theta) / (d_xi_far / f);
+  g.wall_refinement = std::max(1.0, d_xi_far / (g.delta_xi / rule_wall_cells(alpha)));
   g.wall_layer = g.wall_refinement > 1.0 ? (g.wall_refinement - 1.0) * d_xi_far / kRuleGrowth : 0.1;
   return g;
 }
@@ -43,10 +44,17 @@ double rule_reynolds(const Scene& s) { return s.reference_speed() * 2.0 * s.radi
 
 }  // namespace
 
+bool rule_grid(const Case& c) { return !c.grid.n_theta_given && c.grid.n_r == 0; }
+
+bool scene_sheds(const Case& c) {
+  return wake_sheds(c.scene.speed, c.scene.reynolds(), c.scene.spin_ratio());
+}
+
 void apply_scene_grid(const Case& c, NsParams& p) {
-  if (c.grid.n_theta_given || c.grid.n_r > 0) return;  // the grid as given (uniform rings unless stated)
-  const SceneGrid g = scene_grid(rule_reynolds(c.scene), c.scene.spin_ratio(), case_refine(c));
+  if (!rule_grid(c)) return;  // the grid as given (uniform rings unless stated)
+  const SceneGrid g = scene_grid(rule_reynolds(c.scene), c.scene.spin_ratio(), case_refine(c), scene_sheds(c));
   p.n_theta = g.n_theta;
+  p.radial_refinement = g.radial_refinement;
   p.n_r = 0;
   if (!c.grid.wall_refinement_given) p.wall_refinement = g.wall_refinement;
   if (!c.grid.wall_layer_given) p.wall_layer = g.wall_layer;
@@ -68,7 +76,7 @@ void check_grid_memory(const Case& c, const NsParams& p, size_t limit) {
         "grid.tolerance: {:g} needs the scene's grid refined {:.3g}× (the default grid is built for {:g} and "
         "the error falls as the spacing squared): {}; give a larger grid.tolerance",
         c.grid.tolerance, case_refine(c), kRuleTolerance, need));
-  const bool rule = !c.grid.n_theta_given && c.grid.n_r == 0;
+  const bool rule = rule_grid(c);
   throw std::invalid_argument(fmt::format(
       "{}: the grid needs {}; {}", rule ? "grid.refine" : "grid.n_theta", need,
       rule ? fmt::format("the scene's grid at Re = {:.4g}, α = {:.4g} is that fine: give grid.refine < {:g} for "
@@ -78,7 +86,7 @@ void check_grid_memory(const Case& c, const NsParams& p, size_t limit) {
 }
 
 std::string scene_grid_text(const Case& c) {
-  if (c.grid.n_theta_given || c.grid.n_r > 0)
+  if (!rule_grid(c))
     return "the grid as given (grid.n_theta, grid.n_r); without them magnus fits the grid to the scene";
   const double f = case_refine(c), alpha = c.scene.spin_ratio();
   const std::string why =
@@ -86,7 +94,7 @@ std::string scene_grid_text(const Case& c) {
       : f != 1.0             ? fmt::format(", refined {:.3g}× (grid.refine)", f)
                              : std::string();
   return fmt::format("the scene's grid: n_θ from √Re, {:.3g} first-ring cells across δ = D/√(Re(1 + α²)) = {:.3g}a{}",
-                     kRuleWallCells * f, 2.0 / std::sqrt(rule_reynolds(c.scene) * (1.0 + alpha * alpha)), why);
+                     rule_wall_cells(alpha) * f, 2.0 / std::sqrt(rule_reynolds(c.scene) * (1.0 + alpha * alpha)), why);
 }
 
 }  // namespace magnus

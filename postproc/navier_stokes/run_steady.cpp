@@ -10,6 +10,7 @@
 
 #include "postproc/navier_stokes/error_estimate.hpp"
 #include "postproc/navier_stokes/forces.hpp"
+#include "postproc/navier_stokes/grid_rule.hpp"
 #include "postproc/navier_stokes/run_paths.hpp"
 #include "postproc/navier_stokes/steady_study.hpp"
 #include "postproc/navier_stokes/unsteady.hpp"
@@ -20,7 +21,7 @@ namespace magnus {
 
 AutoPlan auto_plan(const NsParams& p) {
   const double Re = p.reynolds(), alpha = p.U > 0.0 ? std::fabs(p.a * p.omega / p.U) : 0.0;
-  if (Re >= 60.0 && alpha <= 1.0)
+  if (wake_sheds(p.U, Re, alpha))
     return {AutoStart::march, fmt::format("Re {:.4g} ≥ 60, α {:.3g} ≤ 1: the wake sheds", Re, alpha)};
   if (p.U > 0.0 && Re <= 35.0 && alpha <= 3.0)
     return {AutoStart::newton_only,

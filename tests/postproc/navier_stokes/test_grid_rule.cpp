@@ -27,14 +27,30 @@ double wall_slope(const PolarGrid& g) { return (-3.0 * g.xi[0] + 4.0 * g.xi[1] -
 
 }  // namespace
 
-TEST_CASE("the scene's grid: n_theta from sqrt(Re), ten first-ring cells across the boundary layer",
+TEST_CASE("the scene's grid: n_theta from sqrt(Re), 10·min(max(1, alpha), 4) first-ring cells across the boundary layer",
           "[ns][grid_rule]") {
+  // n_θ = 32·⌈6√(Re/100)⌉, and 32·⌈4√(Re/100)⌉ where the wake sheds (fourth order in θ); the far rings
+  // keep Δξ = (2π/(32·⌈6√(Re/100)⌉))/(5/3) either way.
   CHECK(scene_grid(20, 0).n_theta == 96);
   CHECK(scene_grid(40, 0).n_theta == 128);
-  CHECK(scene_grid(100, 1).n_theta == 192);
-  CHECK(scene_grid(150, 0).n_theta == 256);
+  CHECK(scene_grid(100, 2).n_theta == 192);
   CHECK(scene_grid(200, 6).n_theta == 288);
-  CHECK(scene_grid(100, 0, 2.0).n_theta == 384);
+  CHECK(scene_grid(100, 1, 1.0, true).n_theta == 128);
+  CHECK(scene_grid(150, 0, 1.0, true).n_theta == 160);
+  CHECK(scene_grid(200, 0, 1.0, true).n_theta == 192);
+  CHECK(scene_grid(100, 0, 2.0, true).n_theta == 256);
+  CHECK(ns_params(ns_case(100, 1)).n_theta == 128);  // U > 0, Re ≥ 60, α ≤ 1: the wake sheds
+  CHECK(ns_params(ns_case(100, 1.5)).n_theta == 192);
+  CHECK(ns_params(ns_case(40, 0)).n_theta == 128);
+  for (double Re : {20.0, 40.0, 100.0, 150.0, 200.0}) {
+    const int n_ring = 32 * int(std::ceil(6.0 * std::sqrt(std::max(Re, 20.0) / 100.0) - 1e-9));
+    for (double f : {1.0, 2.0}) {
+      for (bool sheds : {false, true}) {
+        const SceneGrid g = scene_grid(Re, 1.0, f, sheds);
+        CHECK((2.0 * M_PI / g.n_theta) / g.radial_refinement == Approx(2.0 * M_PI / n_ring / (5.0 / 3.0) / f));
+      }
+    }
+  }
   // Re 100, α 0: the far spacing nearly puts ten cells across δ: nearly uniform rings.
   CHECK(scene_grid(100, 0).wall_refinement == Approx(1.077).epsilon(0.01));
   CHECK(scene_grid(100, 0, 2.0).wall_layer == scene_grid(100, 0).wall_layer);
@@ -46,8 +62,8 @@ TEST_CASE("the scene's grid: n_theta from sqrt(Re), ten first-ring cells across 
       const double delta_xi = std::log1p(2.0 / std::sqrt(Re * (1.0 + alpha * alpha)));
       INFO("Re " << Re << " alpha " << alpha << " q " << p.wall_refinement);
       REQUIRE(p.wall_refinement > 1.0);
-      // The first ring: Δξ at the wall is δ_ξ/10 (the slope of the map there, to the scaling onto R).
-      CHECK(wall_slope(g) == Approx(delta_xi / kRuleWallCells).epsilon(0.03));
+      // The first ring: Δξ at the wall is δ_ξ/(10·min(max(1, α), 4)) (the map's slope there, to the scaling onto R).
+      CHECK(wall_slope(g) == Approx(delta_xi / rule_wall_cells(alpha)).epsilon(0.03));
       // Smooth: no spacing grows by more than kRuleGrowth over its neighbour (plus the map's curvature).
       for (int i = 1; i + 1 < g.n_r; ++i) CHECK(g.d_xi(i) / g.d_xi(i - 1) <= 1.0 + 1.1 * kRuleGrowth);
       CHECK(g.outer_radius() == Approx(100.0 * 0.5));
@@ -69,7 +85,7 @@ TEST_CASE("the scene's grid: refine scales every spacing, a given grid is kept, 
   // grid.tolerance τ asks for refine √(2·1e-2/τ): 1e-2 → √2.
   CHECK(tolerance_refine(1e-2) == Approx(std::sqrt(2.0)));
   CHECK(tolerance_refine(0.1) == 0.5);
-  CHECK(ns_params(ns_case(100, 1, "[grid]\ntolerance = 5e-3\n")).n_theta == 384);
+  CHECK(ns_params(ns_case(100, 1, "[grid]\ntolerance = 5e-3\n")).n_theta == 256);
   CHECK_THAT(scene_grid_text(ns_case(100, 1, "[grid]\ntolerance = 5e-3\n")),
              Contains("refined 2× for grid.tolerance = 0.005"));
   CHECK_THAT(scene_grid_text(ns_case(100, 1, "[grid]\nn_theta = 64\n")), Contains("the grid as given"));
@@ -102,7 +118,7 @@ TEST_CASE("grid.tolerance: a grid that does not fit in memory is refused before 
         }
         return std::string();
       }(),
-      Contains("grid.refine: the grid needs n_θ 192 × 238 rings") && Contains("give grid.refine < 1"));
+      Contains("grid.refine: the grid needs n_θ 128 × 238 rings") && Contains("give grid.refine < 1"));
 }
 
 TEST_CASE("grid.tolerance: the run's own estimate judges the grid it chose", "[ns][grid_rule]") {
@@ -121,4 +137,27 @@ TEST_CASE("grid.tolerance: the run's own estimate judges the grid it chose", "[n
   CHECK(*r.viscous->tolerance_met);
   CHECK(r.viscous->tolerance_note.empty());
   CHECK(r.grid.n_theta == 192);
+}
+
+TEST_CASE("the scene's grid comes with its scheme: Jensen's wall closure, fourth order in theta where it sheds",
+          "[ns][grid_rule]") {
+  const Case rule = ns_case(100, 1);
+  CHECK(rule.solver.advection_order == 4);
+  CHECK(ns_case(100, 2).solver.advection_order == 2);  // steady by the rule: second order, Newton's cheaper LU
+  CHECK(ns_case(40, 1).solver.advection_order == 2);
+  CHECK(ns_case(40, 1).solver.wall_closure == "jensen");
+  CHECK(rule.solver.wall_closure == "jensen");
+  CHECK(ns_params(rule).advection_order == 4);
+  CHECK(ns_params(rule).wall_closure == NsWallClosure::jensen);
+  // The resolved case states them, so it runs the same scheme again.
+  const Case again = parse_case(rule.source_text, "resolved.toml");
+  CHECK(again.solver.advection_order == 4);
+  CHECK(again.solver.wall_closure == "jensen");
+  // A stated grid keeps the model's defaults; stated solver keys win over the scene's.
+  const Case given = ns_case(100, 1, "[grid]\nn_theta = 64\n");
+  CHECK(given.solver.advection_order == 2);
+  CHECK(given.solver.wall_closure == "thom");
+  const Case stated = ns_case(100, 1, "[solver]\nadvection_order = 2\nwall_closure = \"thom\"\n");
+  CHECK(stated.solver.advection_order == 2);
+  CHECK(stated.solver.wall_closure == "thom");
 }
