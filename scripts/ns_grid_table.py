@@ -7,6 +7,11 @@ f_ref = f_2 + (f_2 − f_1)/3. The actual error of the default grid is |f_1 − 
 is what the default run states itself (from its companion run on the grid twice as coarse), so the two
 come from different grid pairs. Prints a markdown table; --csv FILE keeps the numbers.
 
+--reference-dir DIR takes the reference pair from another family's kept runs instead (DIR holds their
+re…_a…_f1.json and _f2.json, e.g. the workdir of this script at an earlier commit, when the default
+scheme was another): the converged value is the same solution, so any family's Richardson value judges
+the default grid. Scenes without that pair are run as above.
+
   /usr/bin/python3 scripts/ns_grid_table.py --magnus build/magnus --reynolds 20,40,100,150,200 \
       --spin-ratio 0,1,2,4,6 --jobs 2 --csv study.csv
 """
@@ -76,28 +81,41 @@ def value(d, key):
     return v
 
 
-def row(magnus, re, alpha, end, extra, workdir):
+def kept_pair(reference_dir, re, alpha):
+    """The reference family's (f1, f2) runs of a scene from reference_dir, or None."""
+    pair = []
+    for refine in (1, 2):
+        path = os.path.join(reference_dir, f"re{re:g}_a{alpha:g}_f{refine}.json")
+        if not os.path.exists(path):
+            return None
+        with open(path) as f:
+            pair.append(json.load(f))
+    return pair
+
+
+def row(magnus, re, alpha, end, extra, workdir, reference_dir=None):
     coarse = run(magnus, re, alpha, 1, end, extra, workdir)
+    pair = kept_pair(reference_dir, re, alpha) if reference_dir else None
     # The finer grid solves what the default run found: Newton's steady state on its own (time.mode
     # steady: no eigenvalue search on the large grid), or the march.
     steady = "error" not in coarse and bool(unwrap(coarse.get("timing", {}).get("newton_s")))
     mode = ["time.mode=steady"] if steady and not unwrap(coarse.get("timing", {}).get("march_s")) \
         else ["time.mode=unsteady"]
-    fine = run(magnus, re, alpha, 2, end, extra + mode, workdir)
+    ref1, fine = pair if pair else (coarse, run(magnus, re, alpha, 2, end, extra + mode, workdir))
     out = {"re": re, "alpha": alpha, "wall": coarse.get("wall"), "wall_fine": fine.get("wall")}
-    if "error" in coarse or "error" in fine:
-        out["note"] = coarse.get("error") or fine.get("error")
+    if "error" in coarse or "error" in fine or "error" in ref1:
+        out["note"] = coarse.get("error") or fine.get("error") or ref1.get("error")
         return out
     p = coarse["parameters"]
     out["grid"] = f'{unwrap(p["n_theta"])} × {unwrap(p["n_r"])}'
     out["status"] = str(unwrap(coarse.get("status", "")))
     errors = coarse.get("errors", {})
     for key, est in QUANTITIES:
-        f1, f2 = value(coarse, key), value(fine, key)
+        f1, r1, f2 = value(coarse, key), value(ref1, key), value(fine, key)
         # A coefficient that is 0 by symmetry (C_L at α = 0) has no relative error, as in the run's estimate.
-        if f1 is None or f2 is None or abs(f2) < 1e-3:
+        if f1 is None or r1 is None or f2 is None or abs(f2) < 1e-3:
             continue
-        ref = f2 + (f2 - f1) / 3.0
+        ref = f2 + (f2 - r1) / 3.0
         out[key] = f1
         out[key + "_ref"] = ref
         out[key + "_actual"] = abs(f1 - ref) / abs(ref) if ref != 0.0 else None
@@ -119,12 +137,14 @@ def main():
     ap.add_argument("--jobs", type=int, default=1)
     ap.add_argument("--csv")
     ap.add_argument("--workdir", help="keep each run's JSON here; a rerun reuses them")
+    ap.add_argument("--reference-dir", help="take each scene's reference pair (f1, f2) from these kept runs")
     a = ap.parse_args()
     scenes = [(float(r), float(s)) for r in a.reynolds.split(",") for s in a.spin_ratio.split(",")]
     workdir = a.workdir or tempfile.mkdtemp(prefix="magnus-grid-table-")
     os.makedirs(workdir, exist_ok=True)
     with cf.ThreadPoolExecutor(max_workers=a.jobs) as ex:
-        rows = list(ex.map(lambda sc: row(a.magnus, sc[0], sc[1], a.end, a.set, workdir), scenes))
+        rows = list(ex.map(lambda sc: row(a.magnus, sc[0], sc[1], a.end, a.set, workdir, a.reference_dir),
+                           scenes))
     print("| Re | α | default grid | C_L: actual (estimate) | C_D: actual (estimate) | St: actual (estimate) "
           "| bracketed | wall (default, 2× finer) |")
     print("|---|---|---|---|---|---|---|---|")
