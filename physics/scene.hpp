@@ -91,6 +91,9 @@ struct GridRequest {
   double wall_layer = kNsDefaultWallLayer;  ///< ξ-length of the spacing's transition (navier-stokes only)
   bool n_theta_given = false;  ///< grid.n_theta was stated: navier-stokes then takes it instead of its rule
   double refine = 1.0;         ///< navier-stokes: the scene's grid refined by this factor (n_θ·f, Δξ/f)
+  /// navier-stokes with grid.tolerance: the refine factor the tolerance search solved on (not a key); 0:
+  /// the design grid, refine·√(2·0.01/τ)
+  double refine_solved = 0.0;
   bool wall_refinement_given = false;  ///< grid.wall_refinement was stated (navier-stokes)
   bool wall_layer_given = false;       ///< grid.wall_layer was stated (navier-stokes)
 };

@@ -36,6 +36,7 @@ namespace {
 
 /// The refine factor of a case: grid.refine, times what grid.tolerance asks for.
 double case_refine(const Case& c) {
+  if (c.grid.refine_solved > 0.0) return c.grid.refine_solved;
   return c.grid.refine * (c.grid.tolerance > 0.0 ? tolerance_refine(c.grid.tolerance) : 1.0);
 }
 

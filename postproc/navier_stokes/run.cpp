@@ -78,22 +78,26 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
   if (!(sc.reference_speed() > 0.0))
     throw std::invalid_argument("flow.speed and cylinder.spin are both 0: nothing moves, there is no flow");
   check_resolvable(c, hooks.max_bytes);  // before anything is solved or allocated
-  FlowResult r = run_on_grid(c, hooks, resume, threads);
   const double tol = c.grid.tolerance;
-  if (!(tol > 0.0) || !r.viscous || r.viscous->partial) return r;
-  // grid.tolerance: the first grid comes from the rule's design error; the run's own estimate judges it.
-  // Not met: once more on the grid the estimate asks for (error ∝ spacing², 10% to spare), if it fits.
+  if (!(tol > 0.0)) return run_on_grid(c, hooks, resume, threads);
+  // grid.tolerance: the grid the rule's design error asks for must fit (refused before solving). The
+  // search starts on the scene's grid, or coarser when τ is above the design error: that cheap run's own
+  // estimate sizes the grid (error ∝ spacing², 10% to spare) and judges the second run on it, if it fits.
+  check_grid_memory(c, ns_params(c), hooks.max_bytes);
+  Case first = c;
+  first.grid.refine_solved = c.grid.refine * std::min(1.0, tolerance_refine(tol));
+  FlowResult r = run_on_grid(first, hooks, resume, threads);
+  if (!r.viscous || r.viscous->partial) return r;
   std::optional<double> worst = worst_estimate(*r.viscous);
   if (worst && *worst > tol && !resume) {
-    Case finer = c;
-    finer.grid.refine *= 1.1 * std::sqrt(*worst / tol);
+    Case finer = first;
+    finer.grid.refine_solved *= 1.1 * std::sqrt(*worst / tol);
     try {
       check_grid_memory(finer, ns_params(finer), hooks.max_bytes);
-      const std::string first = fmt::format("{} × {}", r.grid.n_theta, r.grid.n_r);
+      const std::string first_grid = fmt::format("{} × {}", r.grid.n_theta, r.grid.n_r);
       r = run_on_grid(finer, hooks, nullptr, threads);
-      r.c.grid.refine = c.grid.refine;  // the case as given; the grid shows what was solved
       r.viscous->tolerance_note = fmt::format("the first grid, {}, estimated {:.2g}; refined {:.3g}× more",
-                                              first, *worst, 1.1 * std::sqrt(*worst / tol));
+                                              first_grid, *worst, 1.1 * std::sqrt(*worst / tol));
     } catch (const std::invalid_argument& e) {
       r.viscous->tolerance_note = fmt::format("the grid it would need does not fit: {}", e.what());
     }
