@@ -76,6 +76,22 @@ std::future<NewtonResult> start_companion_newton(NsParams pc, const NewtonOption
   });
 }
 
+/// The companion's solve once more, when the one from the potential flow failed (at high spin the coarse
+/// grid's Newton can stall far from its solution): from the run's own steady state `fine` (on g), sampled
+/// onto the companion's grid pc (Fourier in θ, cubic in ξ).
+NewtonResult companion_from_run(const NsParams& pc, const PolarGrid& g, const NsState& fine,
+                                const NewtonOptions& o) {
+  try {
+    NsParams q = pc;
+    q.threads = 1;
+    return solve_steady(q, interpolate_state(g, fine, ns_grid(q)), o);
+  } catch (const std::exception& e) {
+    NewtonResult failed;
+    failed.message = e.what();
+    return failed;
+  }
+}
+
 /// The steady values of a converged solve as a run's result (C_L, C_D; ok = Newton converged).
 UnsteadyResult steady_values(const NsParams& p, double rho, const NewtonResult& nr) {
   UnsteadyResult u;
@@ -158,8 +174,17 @@ AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g, boo
   if (error_estimate && refusal.empty()) companion = start_companion_newton(pc, o);
   // The estimate of a steady result: from the companion's solve (it waits for it), or why there is none.
   auto estimate = [&](FlowResult& r, const NewtonResult& fine) {
-    if (companion.valid()) steady_estimate(r, p, pc, fine, companion.get());
-    else if (error_estimate) r.viscous->error_note = refusal;
+    if (companion.valid()) {
+      NewtonResult coarse = companion.get();
+      if (!coarse.converged) {
+        const double first_seconds = coarse.wall_seconds;
+        coarse = companion_from_run(pc, g, fine.state, o);
+        coarse.wall_seconds += first_seconds;
+      }
+      steady_estimate(r, p, pc, fine, coarse);
+    } else if (error_estimate) {
+      r.viscous->error_note = refusal;
+    }
   };
   const NewtonResult nr = solve_steady(p, potential_guess(p, g), o);
   a.newton_seconds = nr.wall_seconds;
