@@ -94,7 +94,8 @@ std::string scene_grid_text(const Case& c) {
       c.grid.tolerance > 0.0 ? fmt::format(", refined {:.3g}× for grid.tolerance = {:g}", f, c.grid.tolerance)
       : f != 1.0             ? fmt::format(", refined {:.3g}× (grid.refine)", f)
                              : std::string();
-  return fmt::format("the scene's grid: n_θ from √Re, {:.3g} first-ring cells across δ = D/√(Re(1 + α²)) = {:.3g}a{}",
+  const std::string theta = scene_sheds(c) ? "n_θ from √Re for fourth order in θ (the wake sheds)" : "n_θ from √Re";
+  return fmt::format("the scene's grid: {}, {:.3g} first-ring cells across δ = D/√(Re(1 + α²)) = {:.3g}a{}", theta,
                      rule_wall_cells(alpha) * f, 2.0 / std::sqrt(rule_reynolds(c.scene) * (1.0 + alpha * alpha)), why);
 }
 
