@@ -111,8 +111,8 @@ void steady_estimate(FlowResult& r, const NsParams& p, const NsParams& pc, const
   const double rho = r.c.scene.density;
   v.companion_n_theta = pc.n_theta, v.companion_n_r = pc.n_r;
   v.companion_seconds = coarse.wall_seconds;
-  v.error_method = fmt::format(
-      "from a companion Newton solve on {} × {}: |f − f_coarse|, 3× the Richardson estimate", pc.n_theta, pc.n_r);
+  v.error_method = fmt::format("from a companion Newton solve on {} × {}{}: |f − f_coarse|, 3× the Richardson estimate",
+                               pc.n_theta, pc.n_r, pc.n_theta == p.n_theta ? " (coarser in the rings only)" : "");
   estimate_from_companion(v, steady_values(p, rho, fine), steady_values(pc, rho, coarse), MeansSpread{});
 }
 
@@ -176,12 +176,16 @@ AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g, boo
   auto estimate = [&](FlowResult& r, const NewtonResult& fine) {
     if (companion.valid()) {
       NewtonResult coarse = companion.get();
-      if (!coarse.converged) {
-        const double first_seconds = coarse.wall_seconds;
-        coarse = companion_from_run(pc, g, fine.state, o);
-        coarse.wall_seconds += first_seconds;
+      NsParams used = pc;
+      // Stalled from the potential flow: again from the run's state; stalled again (the coarse θ spacing at
+      // high spin): coarser in the rings alone, where the drag's error lives there (the ratio is still 2).
+      for (int attempt = 0; attempt < 2 && !coarse.converged; ++attempt) {
+        const double seconds = coarse.wall_seconds;
+        if (attempt == 1) used.n_theta = p.n_theta;
+        coarse = companion_from_run(used, g, fine.state, o);
+        coarse.wall_seconds += seconds;
       }
-      steady_estimate(r, p, pc, fine, coarse);
+      steady_estimate(r, p, used, fine, coarse);
     } else if (error_estimate) {
       r.viscous->error_note = refusal;
     }
