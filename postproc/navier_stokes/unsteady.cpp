@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "postproc/navier_stokes/periodic.hpp"
+#include "solver/navier_stokes/rotation.hpp"
 
 namespace magnus {
 
@@ -28,10 +29,11 @@ bool analyse_periodic_from(const std::vector<ForceSample>& h, size_t first, doub
 }
 
 /// The rate (1/s) whose product with Δt advance() compares with kNsCflLimit, or a bound above it:
-/// cfl_number's (every ring) and the wall ring's |ω|/Δθ.
+/// cfl_number's (every ring; of ψ − ψ_ref when the rotation is implicit) and the wall ring's |ω|/Δθ (not
+/// when the rotation is implicit).
 double step_rate(const NsParams& p, const PolarGrid& g, const NsState& s) {
-  const double r = cfl_number(g, s.psi, 1.0, p.advection_order, p.advection_order_xi);
-  return p.stokes ? r : std::max(r, std::fabs(p.omega) / g.d_theta);
+  const double r = cfl_number(g, s.psi, 1.0, p.advection_order, p.advection_order_xi, reference_psi_xi(p));
+  return p.stokes || rotation_implicit(p) ? r : std::max(r, std::fabs(p.omega) / g.d_theta);
 }
 
 /// The Δt (s) for the next step from the state s, the current dt (returned unchanged unless it must move).

@@ -85,6 +85,28 @@ void wall_influence(NsOperator::Impl& im, const PolarGrid& g, const NsParams& p)
     }
 }
 
+/// The step's wall-closure data with the rotation implicit: complex φ_k (rotation_influence), χ_k (the Poisson
+/// mode solve of −J φ_k, all modes at once, already ring-major) and c_1χ_k(ξ_1) − c_2χ_k(ξ_2) + c_w.
+void rotation_wall_influence(NsOperator::Impl& im, const PolarGrid& g) {
+  const int nr = g.n_r, m = g.n_theta / 2 + 1;
+  WallInfluence& w = im.wall;
+  w.phi_c.assign(size_t(nr) * m, 0.0);
+  w.chi_c.assign(size_t(nr) * m, 0.0);
+  const std::vector<cplx> zero_hat(size_t(m), 0.0);
+  for (int k = 0; k < m; ++k) {
+    const std::vector<cplx> phi = rotation_influence(*im.rotation, k);
+    for (int i = 0; i < nr; ++i) w.phi_c[size_t(i) * m + k] = phi[i];
+    for (int i = 1; i < nr; ++i) w.chi_c[size_t(i) * m + k] = -g.r[i] * g.r[i] * phi[i];
+  }
+  im.poisson->solve_mode_range(w.chi_c.data(), zero_hat.data(), zero_hat.data(), 0, m);
+  w.denom_c.resize(m);
+  for (int k = 0; k < m; ++k) {
+    w.denom_c[k] = w.row.c1 * w.chi_c[size_t(m) + k] - w.row.c2 * w.chi_c[size_t(2 * m) + k] + w.row.cw;
+    if (!(std::abs(w.denom_c[k]) > 0.0))
+      throw std::runtime_error("NsOperator: the wall closure of mode " + std::to_string(k) + " is singular");
+  }
+}
+
 /// The step's pool, its ring ranges and their FFT plans on the step's own (aligned) buffers. FFTW_ESTIMATE:
 /// the same plan every run, so a run is reproducible to the last bit (FFTW_MEASURE picks by timing).
 void plan_step(NsOperator::Impl& im, int nr, int n, int threads) {
@@ -142,6 +164,14 @@ NsOperator::NsOperator(const NsParams& p, double dt) : p_(p), dt_(dt) {
   plan_fields(*impl_, nr, n, p.threads);
   wall_influence(*impl_, grid_, p);
   plan_step(*impl_, nr, n, p.threads);
+  if (rotation_implicit(p)) {
+    impl_->psi_ref = reference_psi(grid_, p);
+    impl_->rotation_stencil = rotation_stencil(grid_, p);
+    impl_->rotation =
+        std::make_unique<RotationFactors>(factor_rotation(grid_, sigma, impl_->rotation_stencil, p.nu));
+    rotation_wall_influence(*impl_, grid_);
+    impl_->buffers->psi_prime.resize(size_t(nr) * n);
+  }
 }
 
 NsOperator::~NsOperator() = default;

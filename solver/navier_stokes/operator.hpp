@@ -73,6 +73,9 @@ struct NsParams {
   int advection_order_xi = 2;
   NsOuterVorticity outer_vorticity = NsOuterVorticity::inflow_outflow;
   NsWallClosure wall_closure = NsWallClosure::thom;  ///< the wall's ζ_w row: Thom's or Jensen's (stages.hpp)
+  /// The wall's spin in the time step: its potential vortex ψ_ref = −a²ω ξ advected by Crank–Nicolson with
+  /// the diffusion, the rest by AB2 (rotation.hpp), so the spin does not shrink Δt; false: all by AB2.
+  bool implicit_rotation = true;
 
   /// Re = U·2a/ν (0 when U = 0).
   double reynolds() const { return nu > 0.0 ? U * 2.0 * a / nu : 0.0; }
@@ -178,14 +181,15 @@ inline void advance(const NsOperator& op, const NsState& old, NsState& next) {
   advance(op, old, next, nullptr);
 }
 
-/// CFL number Δt·max_ij(κ_ξ|ψ_θ|/(J Δξ) + κ_θ|ψ_ξ|/(J Δθ)) of a state (central differences),
+/// CFL number Δt·max_ij(κ_ξ|ψ_θ|/(J Δξ) + κ_θ|ψ_ξ − psi_xi_ref|/(J Δθ)) of a state (central differences),
 /// dimensionless; κ_θ = advection_factor(order_theta), κ_ξ = advection_factor(order_xi): 1 for order 2,
-/// 1.3722 for order 4.
+/// 1.3722 for order 4. psi_xi_ref (m²/s): the ψ_ξ taken implicitly (reference_psi_xi, rotation.hpp), 0: none.
 double cfl_number(const PolarGrid& g, const std::vector<double>& psi, double dt, int order_theta = 2,
-                  int order_xi = 2);
+                  int order_xi = 2, double psi_xi_ref = 0.0);
 
-/// Δt (s) that gives the CFL number `cfl` (of p's advection orders) for the state, using at least the speed
-/// |U| + |aω| + U (the impulsive start's 2U at the shoulders plus the wall speed) across θ.
+/// Δt (s) that gives the CFL number `cfl` (of p's advection orders, of the explicit part) for the state,
+/// using at least the speed |U| + |aω| + U (the impulsive start's 2U at the shoulders plus the wall speed;
+/// without |aω| when the rotation is implicit) across θ.
 double cfl_time_step(const NsParams& p, const PolarGrid& g, const std::vector<double>& psi, double cfl);
 
 /// Impulsive start ("from rest" in the body frame): the irrotational flow without circulation,

@@ -12,6 +12,7 @@
 #include "solver/fft_modes.hpp"
 #include "solver/mode_solver.hpp"
 #include "solver/navier_stokes/operator.hpp"
+#include "solver/navier_stokes/rotation.hpp"
 #include "solver/navier_stokes/stages.hpp"
 #include "solver/pool.hpp"
 
@@ -25,6 +26,7 @@ struct StepBuffers {
   FftwBuffer<std::complex<double>> ring_hat;           ///< m
   std::vector<std::complex<double>> zero_hat, delta;   ///< m
   std::vector<double> g_outer;                         ///< n_θ
+  std::vector<double> psi_prime;                       ///< ψ' = ψ − ψ_ref (n_r, n_θ): the implicit rotation only
   StepBuffers(size_t nr, size_t n, size_t m)
       : f(nr * n),
         zeta(nr * n),
@@ -44,6 +46,10 @@ struct NsOperator::Impl {
   std::unique_ptr<ModeSolver> poisson;  ///< ψ: u_ξξ + u_θθ = f, Neumann at R
   std::vector<double> phi, chi;         ///< [k][i]: φ_k(ξ_i), χ_k(ξ_i)
   WallInfluence wall;                   ///< the same ring-major (the step's layout), and the denominators
+  /// The implicit rotation (rotation_implicit(p); else empty): ψ_ref, A's stencil, the complex Helmholtz.
+  std::vector<double> psi_ref;
+  RotationStencil rotation_stencil;
+  std::unique_ptr<RotationFactors> rotation;
   fftw_plan ring_r2c = nullptr, field_c2r = nullptr, field_r2c = nullptr;
   // advance(): the pool, ring ranges per thread and their FFT plans (on `buffers`), the buffers.
   std::unique_ptr<ThreadPool> pool;

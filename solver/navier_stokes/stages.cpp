@@ -123,20 +123,35 @@ WallClosureRow wall_closure_row(const PolarGrid& g, const NsParams& p) {
   return {rho * rho * rho, 1.0, 0.5 * a2 * h0 * h0 * rho * rho * (rho - 1.0), rho * (rho * rho - 1.0)};
 }
 
-void wall_closure_modes(const WallInfluence& w, int n_r, int m, double target0, cplx* zeta_hat, cplx* psi_hat,
-                        cplx* delta, int kb, int ke) {
-  const WallClosureRow& c = w.row;
+namespace {
+
+/// wall_closure_modes on real (T = double) or complex influence data.
+template <class T>
+void closure_modes(const WallClosureRow& c, const T* phi_t, const T* chi_t, const T* denom, int n_r, int m,
+                   double target0, cplx* zeta_hat, cplx* psi_hat, cplx* delta, int kb, int ke) {
   for (int k = kb; k < ke; ++k) {
     const cplx psi_star = c.c1 * psi_hat[size_t(m) + k] - c.c2 * psi_hat[size_t(2 * m) + k];
-    delta[k] = ((k == 0 ? target0 : 0.0) - psi_star) / w.denom[k];
+    delta[k] = ((k == 0 ? target0 : 0.0) - psi_star) / denom[k];
   }
   for (int i = 0; i < n_r; ++i) {
     cplx* z = zeta_hat + size_t(i) * m;
     cplx* q = psi_hat + size_t(i) * m;
-    const double* ph = &w.phi_t[size_t(i) * m];
-    const double* ch = &w.chi_t[size_t(i) * m];
+    const T* ph = &phi_t[size_t(i) * m];
+    const T* ch = &chi_t[size_t(i) * m];
     for (int k = kb; k < ke; ++k) z[k] += delta[k] * ph[k], q[k] += delta[k] * ch[k];
   }
+}
+
+}  // namespace
+
+void wall_closure_modes(const WallInfluence& w, int n_r, int m, double target0, cplx* zeta_hat, cplx* psi_hat,
+                        cplx* delta, int kb, int ke) {
+  if (w.denom_c.empty())
+    closure_modes(w.row, w.phi_t.data(), w.chi_t.data(), w.denom.data(), n_r, m, target0, zeta_hat, psi_hat,
+                  delta, kb, ke);
+  else
+    closure_modes(w.row, w.phi_c.data(), w.chi_c.data(), w.denom_c.data(), n_r, m, target0, zeta_hat,
+                  psi_hat, delta, kb, ke);
 }
 
 }  // namespace magnus

@@ -7,6 +7,7 @@
 #include "mesh/fd_weights.hpp"
 #include "solver/navier_stokes/arakawa.hpp"
 #include "solver/navier_stokes/operator.hpp"
+#include "solver/navier_stokes/rotation.hpp"
 
 namespace magnus {
 
@@ -46,7 +47,7 @@ PolarGrid ns_grid(const NsParams& p) {
 }
 
 double cfl_number(const PolarGrid& g, const std::vector<double>& psi, double dt, int order_theta,
-                  int order_xi) {
+                  int order_xi, double psi_xi_ref) {
   const int nr = g.n_r, n = g.n_theta;
   const double kappa = advection_factor(order_theta), kappa_xi = advection_factor(order_xi);
   const RadialDerivative d = radial_derivative(g.xi, 2, false);
@@ -55,7 +56,7 @@ double cfl_number(const PolarGrid& g, const std::vector<double>& psi, double dt,
     const double J = g.r[i] * g.r[i], h = g.ring_width(i);
     for (int j = 0; j < n; ++j) {
       const double p_theta = psi_theta_at(psi, i, j, n, g.d_theta);
-      const double p_xi = psi_xi_at(psi, i, j, n, d);
+      const double p_xi = psi_xi_at(psi, i, j, n, d) - psi_xi_ref;
       rate =
           std::max(rate, kappa_xi * std::fabs(p_theta) / (J * h) + kappa * std::fabs(p_xi) / (J * g.d_theta));
     }
@@ -64,9 +65,12 @@ double cfl_number(const PolarGrid& g, const std::vector<double>& psi, double dt,
 }
 
 double cfl_time_step(const NsParams& p, const PolarGrid& g, const std::vector<double>& psi, double cfl) {
-  const double floor_rate =
-      advection_factor(p.advection_order) * (2.0 * p.U + std::fabs(p.a * p.omega)) / (p.a * g.d_theta);
-  const double rate = std::max(cfl_number(g, psi, 1.0, p.advection_order, p.advection_order_xi), floor_rate);
+  const double wall_speed = rotation_implicit(p) ? 0.0 : std::fabs(p.a * p.omega);
+  const double floor_rate = advection_factor(p.advection_order) * (2.0 * p.U + wall_speed) / (p.a * g.d_theta);
+  const double r = cfl_number(g, psi, 1.0, p.advection_order, p.advection_order_xi, reference_psi_xi(p));
+  // ψ' of a state that is ψ_ref to round-off (the potential vortex alone): nothing moves explicitly.
+  const double round_off = 1e-10 * std::fabs(p.omega) / g.d_theta;
+  const double rate = std::max(r > round_off ? r : 0.0, floor_rate);
   if (!(rate > 0.0)) return 0.1 * p.a * p.a / p.nu;  // nothing moves: the diffusion time of a cell
   return cfl / rate;
 }

@@ -14,6 +14,7 @@
 
 #include "solver/fft_modes.hpp"
 #include "solver/navier_stokes/operator_impl.hpp"
+#include "solver/navier_stokes/rotation.hpp"
 #include "solver/navier_stokes/stages.hpp"
 #include "solver/pool.hpp"
 
@@ -85,7 +86,7 @@ void add_times(const StepClock& c, NsStepTimes& t) {
 struct Step {
   Step(const NsOperator& op, NsOperator::Impl& parts, bool timed_step)
       : im(parts), g(op.grid()), p(op.params()), b(*parts.buffers), pool(*parts.pool), nr(g.n_r),
-        n(g.n_theta), m(n / 2 + 1), dt(op.dt()), h(op.d_xi()), timed(timed_step) {}
+        n(g.n_theta), m(n / 2 + 1), dt(op.dt()), h(op.d_xi()), timed(timed_step), rot(parts.rotation != nullptr) {}
   const NsOperator::Impl& im;
   const PolarGrid& g;
   const NsParams& p;
@@ -94,17 +95,22 @@ struct Step {
   int nr, n, m;
   double dt, h;
   bool timed;
+  bool rot;  ///< the rotation implicit (rotation.hpp): N' = J(ψ', ζ) explicit, A with the diffusion
   StepClock clock;
   /// Where thread t adds the seconds of a stage: x on thread 0 of a timed step, else nowhere.
   double* at(double& x, int t = 0) { return timed && t == 0 ? &x : nullptr; }
 };
 
 /// Advection N^n (Arakawa) into N and the Crank–Nicolson right-hand side f into b.f on rings 1…n_r−2 (0 on
-/// the wall and outer rings), then f̂ (r2c) into b.zeta_hat, each thread its rings. rate: the CFL rate of
-/// old (1/s, with the wall ring's |ω|/Δθ); acc: Σ f.
+/// the wall and outer rings), then f̂ (r2c) into b.zeta_hat, each thread its rings. With the rotation
+/// implicit N is N' = J(ψ', ζ) (ψ' in b.psi_prime) and f gains Aζ^n/ν. rate: the CFL rate of old's
+/// explicit part (1/s; with the wall ring's |ω|/Δθ unless the rotation is implicit); acc: Σ f.
 void right_hand_side(Step& s, const NsState& old, const Ab2& ab, std::vector<double>& N, double& rate,
                      double& acc) {
   const int parts = s.pool.size(), n = s.n, m = s.m;
+  if (s.rot)  // ψ' = ψ − ψ_ref, the explicit part's streamfunction
+    for (size_t q = 0; q < old.psi.size(); ++q) s.b.psi_prime[q] = old.psi[q] - s.im.psi_ref[q];
+  const double* psi = s.rot ? s.b.psi_prime.data() : old.psi.data();
   std::vector<double> rate_part(size_t(parts), 0.0), sum_part(size_t(parts), 0.0);
   s.pool.run([&](int t) {
     const int rb = s.im.ring_begin[t], re = s.im.ring_end[t];
@@ -119,9 +125,10 @@ void right_hand_side(Step& s, const NsState& old, const Ab2& ab, std::vector<dou
           std::fill(f, f + n, 0.0);
           continue;
         }
-        const double ring = advection_ring(s.g, s.p, old.psi.data(), old.zeta.data(), i, Ni);
+        const double ring = advection_ring(s.g, s.p, psi, old.zeta.data(), i, Ni);
         const double* N_prev = ab.first ? nullptr : &old.N_prev[size_t(i) * n];
         diffusion_rhs_ring(s.g, s.p, s.dt, old.zeta.data(), i, Ni, N_prev, ab.w1, ab.w0, f, sum);
+        if (s.rot) sum += add_rotation_ring(s.im.rotation_stencil, old.zeta.data(), i, 1.0 / s.p.nu, f);
         rmax = std::max(rmax, ring_cfl_rate(s.g, i, ring));
       }
     }
@@ -130,7 +137,7 @@ void right_hand_side(Step& s, const NsState& old, const Ab2& ab, std::vector<dou
     fftw_execute_dft_r2c(s.im.part_r2c[t], s.b.f.p + size_t(rb) * n,
                          reinterpret_cast<fftw_complex*>(s.b.zeta_hat.p + size_t(rb) * m));
   });
-  rate = std::fabs(s.p.omega) / s.g.d_theta;  // the wall ring: ψ_θ = 0, ψ_ξ = −a²ω
+  rate = s.rot ? 0.0 : std::fabs(s.p.omega) / s.g.d_theta;  // the wall ring: ψ_θ = 0, ψ_ξ = −a²ω
   acc = 0.0;
   for (int t = 0; t < parts; ++t) rate = std::max(rate, rate_part[t]), acc += sum_part[t];
 }
@@ -163,7 +170,10 @@ void solve_modes(Step& s, double Gamma_R) {
     s.pool.split(s.m, t, kb, ke);
     {
       ScopedTimer timer(s.at(s.clock.helmholtz, t));
-      helmholtz_modes(*s.im.helmholtz, b.zeta_hat.p, b.zero_hat.data(), b.ring_hat.p, kb, ke);
+      if (s.rot)
+        solve_rotation_modes(*s.im.rotation, b.zeta_hat.p, b.zero_hat.data(), b.ring_hat.p, kb, ke);
+      else
+        helmholtz_modes(*s.im.helmholtz, b.zeta_hat.p, b.zero_hat.data(), b.ring_hat.p, kb, ke);
     }
     {
       ScopedTimer timer(s.at(s.clock.poisson, t));
