@@ -81,7 +81,7 @@ void check_model_keys(const Reader& r, bool ns, const std::string& circulation_m
     std::vector<std::string> ns_only;
     for (const auto& k : case_key_table().at("time")) ns_only.push_back("time." + k);
     ns_only.insert(ns_only.end(), {"output.snapshots", "output.snapshot_interval", "solver.advection_order",
-                                   "solver.advection_order_xi", "solver.wall_closure", "grid.wall_refinement", "grid.wall_layer",
+                                   "solver.advection_order_xi", "solver.wall_closure", "solver.implicit_rotation", "grid.wall_refinement", "grid.wall_layer",
                                    "grid.refine"});
     for (const auto& k : ns_only)
       if (has_key(r, k)) r.fail(k, "is only used with model.flow = \"navier-stokes\"");
@@ -272,6 +272,7 @@ void read_navier_stokes(const Reader& r, Case& c) {
       "2 (Arakawa's Jacobian) or 4 (fourth order in ξ)"));
   c.solver.wall_closure =
       r.word("solver", "wall_closure", rule ? kRuleWallClosure : c.solver.wall_closure, {"thom", "jensen"});
+  c.solver.implicit_rotation = r.boolean("solver", "implicit_rotation", c.solver.implicit_rotation);
   const std::string mode = r.word("time", "mode", "auto", {"auto", "steady", "unsteady"});
   c.time.mode = mode == "auto"     ? TimeMode::automatic
                 : mode == "steady" ? TimeMode::steady

@@ -17,7 +17,7 @@ const std::map<std::string, std::vector<std::string>>& case_key_table() {
       {"circulation", {"model", "value"}},
       {"domain", {"outer_radius", "far_field"}},
       {"grid", {"n_theta", "n_r", "spacing", "tolerance", "wall_refinement", "wall_layer", "refine"}},
-      {"solver", {"method", "stencil", "advection_order", "advection_order_xi", "wall_closure"}},
+      {"solver", {"method", "stencil", "advection_order", "advection_order_xi", "wall_closure", "implicit_rotation"}},
       {"time", {"mode", "end", "dt", "cfl", "mean_tolerance", "checkpoint_interval"}},
       {"output", {"file", "fields", "compression", "snapshots", "snapshot_interval"}},
   };

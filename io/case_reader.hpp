@@ -89,6 +89,14 @@ class Reader {
     return v;
   }
 
+  bool boolean(const std::string& section, const std::string& key, bool fallback) const {
+    const toml::node* n = find(section, key);
+    if (!n) return fallback;
+    const auto b = n->as_boolean();
+    if (!b) fail(key_name(section, key), fmt::format("expected true or false, got {}", type_name(*n)));
+    return b->get();
+  }
+
   std::vector<std::string> words(const std::string& section, const std::string& key) const {
     const toml::node* n = find(section, key);
     if (!n) return {};

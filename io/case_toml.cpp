@@ -59,6 +59,11 @@ std::string wall_closure_line(const Case& c) {
   return c.solver.wall_closure == "thom" ? "" : fmt::format("wall_closure = \"{}\"\n", c.solver.wall_closure);
 }
 
+/// solver.implicit_rotation's line: none for true, the default (left out as in texts before the key).
+std::string implicit_rotation_line(const Case& c) {
+  return c.solver.implicit_rotation ? "" : "implicit_rotation = false\n";
+}
+
 }  // namespace
 
 std::string to_toml(const Case& c) {
@@ -93,8 +98,8 @@ std::string to_toml(const Case& c) {
     t += fmt::format("\n[solver]\nmethod = {}\n", str(to_string(c.solver.method)));
     if (c.grid.tolerance == 0.0) t += fmt::format("stencil = {}\n", str(to_string(c.solver.stencil)));
   } else {
-    t += fmt::format("\n[solver]\nadvection_order = {}\nadvection_order_xi = {}\n{}", c.solver.advection_order,
-                     c.solver.advection_order_xi, wall_closure_line(c));
+    t += fmt::format("\n[solver]\nadvection_order = {}\nadvection_order_xi = {}\n{}{}", c.solver.advection_order,
+                     c.solver.advection_order_xi, wall_closure_line(c), implicit_rotation_line(c));
     t += fmt::format(
         "\n[time]\nmode = {}\nend = {}\ndt = {}\ncfl = {}\nmean_tolerance = {}\ncheckpoint_interval = {}\n",
         str(to_string(c.time.mode)), num(c.time.end), num(c.time.dt), num(c.time.cfl),

@@ -10,6 +10,7 @@
 #include "io/hdf5_io.hpp"
 #include "io/schema_files.hpp"
 #include "io/schema_io.hpp"
+#include "solver/navier_stokes/rotation.hpp"
 
 namespace magnus {
 
@@ -101,6 +102,9 @@ std::vector<IdentityEntry> checkpoint_identity(const Case& c) {
   id.push_back({"solver.advection_order_xi", std::to_string(p.advection_order_xi)});
   if (p.wall_closure != NsWallClosure::thom)  // Thom's: no entry, as checkpoints stored before the option
     id.push_back({"solver.wall_closure", "jensen"});
+  // Its N_prev is the explicit part J(ψ − ψ_ref, ζ): a checkpoint of the other scheme is refused (before the
+  // key every checkpoint was explicit: no entry, as for ω = 0 and the cases that stay explicit).
+  if (rotation_implicit(p)) id.push_back({"solver.implicit_rotation", "true"});
   return id;
 }
 

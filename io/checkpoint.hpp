@@ -19,7 +19,8 @@ struct IdentityEntry {
 };
 
 /// What must agree for a checkpoint to continue a case: the scene (a m, U m/s, ω rad/s, α = aω/U, ν m²/s,
-/// Re = U·2a/ν, ρ kg/m³), the grid as built (R/a, n_θ, n_r) and the advection orders in θ and ξ;
+/// Re = U·2a/ν, ρ kg/m³), the grid as built (R/a, n_θ, n_r), the advection orders in θ and ξ and whether
+/// the spin is implicit (solver.implicit_rotation, stored only when it is in effect);
 /// time.end, the output and the tolerances may change between runs. α and Re only when U > 0.
 std::vector<IdentityEntry> checkpoint_identity(const Case& c);
 

@@ -37,6 +37,11 @@ std::vector<AttrSpec> viscous_parameter_rows() {
                P, "wall_closure", "the no-slip row for the wall vorticity: thom (first order) or jensen (second)",
                [](const FlowResult& r) { return r.c.solver.wall_closure; },
                [](FlowResult& r, const std::string& v) { r.c.solver.wall_closure = v; })),
+      only(Models::viscous,
+           integer(
+               P, "implicit_rotation", "1: the wall's spin advected by Crank–Nicolson (solver.implicit_rotation), 0: by AB2",
+               [](const FlowResult& r) { return opt(r.c.solver.implicit_rotation ? 1.0 : 0.0); },
+               [](FlowResult& r, double v) { r.c.solver.implicit_rotation = v != 0.0; })),
       only(Models::viscous, num(
                                 P, "wall_refinement", "1", "grid.wall_refinement: Δξ_far/Δξ_wall (1: uniform ξ)",
                                 [](const FlowResult& r) { return opt(r.c.grid.wall_refinement); },

@@ -105,6 +105,7 @@ struct SolverChoice {
   int advection_order = 2;     ///< 2 (Arakawa's Jacobian) or 4 (fourth order in θ), navier-stokes only
   int advection_order_xi = 2;  ///< 2 or 4 (fourth order in ξ, the wake's streamwise direction), likewise
   std::string wall_closure = "thom";  ///< the no-slip row for ζ_w: "thom" (first order) or "jensen" (second)
+  bool implicit_rotation = true;  ///< the wall's spin by Crank–Nicolson (false: all advection by AB2), likewise
 };
 
 /// The navier-stokes model's defaults where they differ from potential flow's: the wake needs a far

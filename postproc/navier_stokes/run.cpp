@@ -33,6 +33,7 @@ NsParams ns_params(const Case& c) {
   p.advection_order = c.solver.advection_order;
   p.advection_order_xi = c.solver.advection_order_xi;
   p.wall_closure = c.solver.wall_closure == "jensen" ? NsWallClosure::jensen : NsWallClosure::thom;
+  p.implicit_rotation = c.solver.implicit_rotation;
   p.dt = c.time.dt > 0.0 && s.reference_speed() > 0.0 ? c.time.dt * s.time_unit() : 0.0;
   apply_scene_grid(c, p);
   return p;

@@ -123,22 +123,22 @@ void solve_rotation_modes(const RotationFactors& f, cplx* u_hat, const cplx* wal
     const double s = -f.h[i];
     for (int k = kb; k < ke; ++k) y[size_t(i - 1) * m + k] *= s;
   }
-  for (int k = kb; k < ke; ++k) y[k] += f.wall[k] * wall_hat[k];
-  for (int k = kb; k < ke; ++k) y[size_t(L - 1) * m + k] += f.outer[k] * outer_hat[k];
+  for (int k = kb; k < ke; ++k) y[k] += cmul(f.wall[k], wall_hat[k]);
+  for (int k = kb; k < ke; ++k) y[size_t(L - 1) * m + k] += cmul(f.outer[k], outer_hat[k]);
   for (int i = 2; i <= L; ++i) {
     const cplx* l = &f.lower[size_t(i - 1) * m];
     cplx* yi = y + size_t(i - 1) * m;
     const cplx* yp = yi - m;
-    for (int k = kb; k < ke; ++k) yi[k] -= l[k] * yp[k];
+    for (int k = kb; k < ke; ++k) yi[k] -= cmul(l[k], yp[k]);
   }
   for (int i = L; i >= 1; --i) {
     const cplx* p = &f.inv_pivot[size_t(i - 1) * m];
     const cplx* u = &f.upper[size_t(i - 1) * m];
     cplx* yi = y + size_t(i - 1) * m;
     if (i == L)
-      for (int k = kb; k < ke; ++k) yi[k] *= p[k];
+      for (int k = kb; k < ke; ++k) yi[k] = cmul(yi[k], p[k]);
     else
-      for (int k = kb; k < ke; ++k) yi[k] = yi[k] * p[k] - u[k] * yi[k + m];
+      for (int k = kb; k < ke; ++k) yi[k] = cmul(yi[k], p[k]) - cmul(u[k], yi[k + m]);
   }
   for (int k = kb; k < ke; ++k) u_hat[k] = wall_hat[k];
   for (int k = kb; k < ke; ++k) u_hat[size_t(f.n_r - 1) * m + k] = outer_hat[k];

@@ -6,6 +6,7 @@
 
 #include "mesh/fd_weights.hpp"
 #include "solver/navier_stokes/arakawa.hpp"
+#include "solver/navier_stokes/rotation.hpp"
 
 namespace magnus {
 
@@ -138,7 +139,7 @@ void closure_modes(const WallClosureRow& c, const T* phi_t, const T* chi_t, cons
     cplx* q = psi_hat + size_t(i) * m;
     const T* ph = &phi_t[size_t(i) * m];
     const T* ch = &chi_t[size_t(i) * m];
-    for (int k = kb; k < ke; ++k) z[k] += delta[k] * ph[k], q[k] += delta[k] * ch[k];
+    for (int k = kb; k < ke; ++k) z[k] += cmul(delta[k], ph[k]), q[k] += cmul(delta[k], ch[k]);
   }
 }
 

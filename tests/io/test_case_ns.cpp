@@ -123,6 +123,11 @@ TEST_CASE("time keys and the snapshots: every value, and every range named", "[i
   CHECK(ns_params(parse(ns_scene)).wall_closure == NsWallClosure::jensen);
   CHECK(ns_params(parse(ns_scene, {"solver.wall_closure=thom"})).wall_closure == NsWallClosure::thom);
   CHECK(ns_params(parse(ns_scene, {"solver.wall_closure=jensen"})).wall_closure == NsWallClosure::jensen);
+  CHECK(parse(ns_scene).solver.implicit_rotation);
+  CHECK(!parse(ns_scene + "[solver]\nimplicit_rotation = false\n").solver.implicit_rotation);
+  CHECK(!parse(ns_scene, {"solver.implicit_rotation=false"}).solver.implicit_rotation);
+  CHECK(ns_params(parse(ns_scene)).implicit_rotation);
+  CHECK(!ns_params(parse(ns_scene, {"solver.implicit_rotation=false"})).implicit_rotation);
 
   const std::vector<std::pair<std::string, std::string>> bad = {
       {"[time]\nmode = \"fast\"\n",
@@ -158,6 +163,10 @@ TEST_CASE("time keys and the snapshots: every value, and every range named", "[i
        "order in ξ)"},
       {"[solver]\nwall_closure = \"briley\"\n",
        "test.toml: solver.wall_closure: \"briley\" is not one of \"thom\", \"jensen\""},
+      {"[solver]\nimplicit_rotation = 0\n",
+       "test.toml: solver.implicit_rotation: expected true or false, got an integer"},
+      {"[solver]\nimplicit_rotation = \"no\"\n",
+       "test.toml: solver.implicit_rotation: expected true or false, got a string"},
   };
   for (const auto& [text, message] : bad) {
     CAPTURE(text);
@@ -180,6 +189,8 @@ TEST_CASE("potential flow: the keys of [time] and the snapshots are refused by n
         "test.toml: solver.advection_order_xi: is only used with model.flow = \"navier-stokes\"");
   CHECK(error_of(scene + "[solver]\nwall_closure = \"jensen\"\n") ==
         "test.toml: solver.wall_closure: is only used with model.flow = \"navier-stokes\"");
+  CHECK(error_of(scene + "[solver]\nimplicit_rotation = false\n") ==
+        "test.toml: solver.implicit_rotation: is only used with model.flow = \"navier-stokes\"");
   CHECK(error_of(scene + "[output]\nsnapshots = 10\n") ==
         "test.toml: output.snapshots: is only used with model.flow = \"navier-stokes\"");
   CHECK(error_of(scene + "[output]\nsnapshot_interval = 1.0\n") ==
@@ -369,6 +380,10 @@ TEST_CASE("the resolved case: potential text unchanged, navier-stokes text reads
   const Case j = parse(ns_scene, {"solver.wall_closure=jensen"});
   CHECK_THAT(j.source_text, Contains("advection_order_xi = 2\nwall_closure = \"jensen\"\n\n[time]"));
   check_round_trip(j);
+  // The explicit rotation reads back; the implicit one (the default) is left out, as in texts before the key.
+  const Case e = parse(ns_scene, {"solver.implicit_rotation=false"});
+  CHECK_THAT(e.source_text, Contains("advection_order_xi = 2\nimplicit_rotation = false\n\n[time]"));
+  check_round_trip(e);
   CHECK(g.grid.n_theta_given);
   CHECK(g.grid.wall_refinement_given);
   CHECK(!g.grid.wall_layer_given);

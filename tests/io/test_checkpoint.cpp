@@ -83,11 +83,12 @@ TEST_CASE("checkpoint: a case's own checkpoint reads back exactly", "[io][checkp
   CHECK(back.history[2].M == 0.05);
   REQUIRE(back.snapshots.size() == 2);
   CHECK(back.snapshots[1].psi == cp.state.zeta);
-  // The identity names the case keys, the advection orders among them.
+  // The identity names the case keys, the advection orders among them, and (spin: ω ≠ 0) the implicit
+  // rotation, whose N_prev is the explicit part only.
   CHECK(checkpoint_key(c) ==
         "cylinder.radius=0.5 flow.speed=1 cylinder.spin=2 cylinder.spin_ratio=1 flow.viscosity=0.01 "
         "flow.reynolds=100 flow.density=1 domain.outer_radius=20 grid.n_theta=16 grid.n_r=14 "
-        "solver.advection_order=2 solver.advection_order_xi=2");
+        "solver.advection_order=2 solver.advection_order_xi=2 solver.implicit_rotation=true");
 }
 
 TEST_CASE("checkpoint: another advection order is another run, refused", "[io][checkpoint]") {
@@ -98,17 +99,37 @@ TEST_CASE("checkpoint: another advection order is another run, refused", "[io][c
         "checkpoint '" + path +
             "' is from another scene: solver.advection_order 2 there, 4 here; remove it or run without "
             "--resume");
+  // Order 4 in ξ keeps the rotation explicit (rotation.hpp): the implicit rotation's entry goes too.
   CHECK(refusal(path, test::parse(kCase, {"solver.advection_order_xi=4"})) ==
         "checkpoint '" + path +
-            "' is from another scene: solver.advection_order_xi 2 there, 4 here; remove it or run without "
-            "--resume");
+            "' is from another scene: solver.advection_order_xi 2 there, 4 here; solver.implicit_rotation true "
+            "there, undefined here; remove it or run without --resume");
   // Jensen's wall closure is another run too; Thom's adds no entry, so older checkpoints still resume.
   CHECK_THAT(checkpoint_key(test::parse(kCase, {"solver.wall_closure=jensen"})),
-             Catch::Matchers::EndsWith("solver.advection_order_xi=2 solver.wall_closure=jensen"));
+             Catch::Matchers::EndsWith("solver.advection_order_xi=2 solver.wall_closure=jensen "
+                                                       "solver.implicit_rotation=true"));
   CHECK(refusal(path, test::parse(kCase, {"solver.wall_closure=jensen"})) ==
         "checkpoint '" + path +
             "' is from another scene: solver.wall_closure undefined there, jensen here; remove it or run "
             "without --resume");
+}
+
+TEST_CASE("checkpoint: the other setting of solver.implicit_rotation is refused, either way", "[io][checkpoint]") {
+  const std::string dir = test::temp_dir("ckpt-rotation"), path = dir + "/r.checkpoint.h5";
+  const std::string why = "; remove it or run without --resume";
+  const Case c = test::parse(kCase), off = test::parse(kCase, {"solver.implicit_rotation=false"});
+  write_checkpoint(path, c, made_up(c));
+  CHECK(refusal(path, off) == "checkpoint '" + path +
+                                  "' is from another scene: solver.implicit_rotation true there, undefined here" +
+                                  why);
+  write_checkpoint(path, off, made_up(off));  // explicit: no entry, as every checkpoint before the key
+  CHECK(refusal(path, c) == "checkpoint '" + path +
+                                "' is from another scene: solver.implicit_rotation undefined there, true here" +
+                                why);
+  CHECK(refusal(path, off) == "");
+  // Without spin both settings are the one explicit scheme: no entry, either resumes.
+  CHECK(checkpoint_key(test::parse(kCase, {"cylinder.spin=0"})) ==
+        checkpoint_key(test::parse(kCase, {"cylinder.spin=0", "solver.implicit_rotation=false"})));
 }
 
 TEST_CASE("checkpoint: another scene is refused naming each value that differs, there and here",
