@@ -99,6 +99,20 @@ void rotation_wall_influence(NsOperator::Impl& im, const PolarGrid& g) {
     for (int i = 1; i < nr; ++i) w.chi_c[size_t(i) * m + k] = -g.r[i] * g.r[i] * phi[i];
   }
   im.poisson->solve_mode_range(w.chi_c.data(), zero_hat.data(), zero_hat.data(), 0, m);
+  // Rings with φ_k or χ_k above round-off, made non-increasing in k: mode k reaches ring i iff k < modes_c[i].
+  std::vector<int> reach(size_t(m), 1);
+  for (int k = m - 1; k >= 0; --k) {
+    double big = 0.0;
+    for (int i = 0; i < nr; ++i)
+      big = std::max({big, std::abs(w.phi_c[size_t(i) * m + k]), std::abs(w.chi_c[size_t(i) * m + k])});
+    for (int i = nr - 1; i >= reach[k]; --i)
+      if (std::abs(w.phi_c[size_t(i) * m + k]) > 1e-17 * big || std::abs(w.chi_c[size_t(i) * m + k]) > 1e-17 * big)
+        reach[k] = i + 1;
+    if (k + 1 < m) reach[k] = std::max(reach[k], reach[k + 1]);
+  }
+  w.modes_c.assign(size_t(nr), 0);
+  for (int i = 0; i < nr; ++i)
+    while (w.modes_c[i] < m && reach[w.modes_c[i]] > i) ++w.modes_c[i];
   w.denom_c.resize(m);
   for (int k = 0; k < m; ++k) {
     w.denom_c[k] = w.row.c1 * w.chi_c[size_t(m) + k] - w.row.c2 * w.chi_c[size_t(2 * m) + k] + w.row.cw;

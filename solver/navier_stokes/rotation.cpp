@@ -48,23 +48,38 @@ RotationStencil rotation_stencil(const PolarGrid& g, const NsParams& p) {
   return s;
 }
 
-double add_rotation_ring(const RotationStencil& s, const double* zeta, int i, double scale, double* out) {
-  const int n = s.n_theta;
-  double sum = 0.0;
-  for (int d = -1; d <= 1; ++d) {
-    const double* z = zeta + size_t(i + d) * n;
-    for (int t = -s.reach; t <= s.reach; ++t) {
-      const double c = scale * s.at(i, d, t);
-      if (c == 0.0) continue;
-      // out_j += c·ζ_{j−t}: the columns j − t inside [0, n), then the two wrapped ends.
-      const int jb = std::max(0, t), je = std::min(n, n + t);
-      for (int j = jb; j < je; ++j) out[j] += c * z[j - t];
-      for (int j = 0; j < jb; ++j) out[j] += c * z[j - t + n];
-      for (int j = je; j < n; ++j) out[j] += c * z[j - t - n];
-    }
-  }
-  for (int j = 0; j < n; ++j) sum += out[j];
-  return sum;
+namespace {
+
+/// add_rotation_ring for θ-reach R (1 or 2): the 3·(2R + 1) weights c (scale included) in one pass over j.
+template <int R>
+void rotation_ring_reach(const double* c, const double* zm, const double* z0, const double* zp, int n,
+                         double* out) {
+  const double* z[3] = {zm, z0, zp};
+  auto node = [&](int j, auto column) {
+    double s = 0.0;
+    for (int d = 0; d < 3; ++d)
+      for (int t = -R; t <= R; ++t) s += c[d * (2 * R + 1) + t + R] * z[d][column(j - t)];
+    out[j] += s;
+  };
+  auto wrap = [n](int q) { return q < 0 ? q + n : q >= n ? q - n : q; };
+  auto inside = [](int q) { return q; };
+  for (int j = 0; j < R; ++j) node(j, wrap);
+  for (int j = R; j < n - R; ++j) node(j, inside);
+  for (int j = n - R; j < n; ++j) node(j, wrap);
+}
+
+}  // namespace
+
+void add_rotation_ring(const RotationStencil& s, const double* zeta, int i, double scale, double* out) {
+  const int n = s.n_theta, width = 2 * s.reach + 1;
+  double c[15];
+  for (int d = -1; d <= 1; ++d)
+    for (int t = -s.reach; t <= s.reach; ++t) c[(d + 1) * width + t + s.reach] = scale * s.at(i, d, t);
+  const double *zm = zeta + size_t(i - 1) * n, *z0 = zm + n, *zp = z0 + n;
+  if (s.reach == 1)
+    rotation_ring_reach<1>(c, zm, z0, zp, n, out);
+  else
+    rotation_ring_reach<2>(c, zm, z0, zp, n, out);
 }
 
 cplx rotation_symbol(const RotationStencil& s, int i, int d, int k) {
@@ -83,7 +98,6 @@ RotationFactors factor_rotation(const PolarGrid& g, const std::vector<double>& s
   f.n_r = nr, f.m = m, f.L = L;
   f.h.assign(size_t(L) + 1, 0.0);
   for (int i = 1; i <= L; ++i) f.h[i] = 0.5 * (g.d_xi(i - 1) + g.d_xi(i));
-  f.lower.assign(size_t(L) * m, 0.0);
   f.inv_pivot.assign(size_t(L) * m, 0.0);
   f.upper.assign(size_t(L) * m, 0.0);
   f.wall.resize(m);
@@ -101,11 +115,10 @@ RotationFactors factor_rotation(const PolarGrid& g, const std::vector<double>& s
       const size_t q = size_t(i - 1) * m + k;
       if (i == 1) f.wall[k] = -T_m;
       if (i == L) f.outer[k] = -T_p;
-      const cplx l = i > 1 ? T_m / pivot_prev : 0.0;
-      const cplx d = T_0 - l * upper_prev;
+      // Symmetric rows (T(i,i−1) = T(i−1,i), rotation.hpp): the lower factor is the upper of the ring before.
+      const cplx d = i > 1 ? T_0 - upper_prev * (upper_prev / pivot_prev) : T_0;
       if (!(std::abs(d) > 0.0) || !std::isfinite(std::abs(d)))
         throw std::runtime_error("factor_rotation: mode " + std::to_string(k) + " is singular");
-      f.lower[q] = l;
       f.inv_pivot[q] = 1.0 / d;
       f.upper[q] = i < L ? T_p / d : 0.0;
       upper_prev = i < L ? T_p : 0.0, pivot_prev = d;
@@ -126,7 +139,7 @@ void solve_rotation_modes(const RotationFactors& f, cplx* u_hat, const cplx* wal
   for (int k = kb; k < ke; ++k) y[k] += cmul(f.wall[k], wall_hat[k]);
   for (int k = kb; k < ke; ++k) y[size_t(L - 1) * m + k] += cmul(f.outer[k], outer_hat[k]);
   for (int i = 2; i <= L; ++i) {
-    const cplx* l = &f.lower[size_t(i - 1) * m];
+    const cplx* l = &f.upper[size_t(i - 2) * m];  // T(i,i−1)/d'_{i−1} = T(i−1,i)/d'_{i−1}
     cplx* yi = y + size_t(i - 1) * m;
     const cplx* yp = yi - m;
     for (int k = kb; k < ke; ++k) yi[k] -= cmul(l[k], yp[k]);

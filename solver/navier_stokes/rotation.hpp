@@ -53,20 +53,22 @@ struct RotationStencil {
 /// orders in θ, the same ring widths and metric, so A is advection_ring's to round-off by construction.
 RotationStencil rotation_stencil(const PolarGrid& g, const NsParams& p);
 
-/// Adds scale·(Aζ) on ring i (1 ≤ i ≤ n_r − 2) to out (n_θ values); returns Σ_j out_j after it (a check).
-double add_rotation_ring(const RotationStencil& s, const double* zeta, int i, double scale, double* out);
+/// Adds scale·(Aζ) on ring i (1 ≤ i ≤ n_r − 2) to out (n_θ values), one pass over the columns.
+void add_rotation_ring(const RotationStencil& s, const double* zeta, int i, double scale, double* out);
 
 /// â_{i,d}(k) = Σ_t w_{i,d,t} e^{−iktΔθ}: A per Fourier mode k (FFTW's r2c sign), (Âζ̂)_i = Σ_d â_{i,d} ζ̂_{i+d}.
 std::complex<double> rotation_symbol(const RotationStencil& s, int i, int d, int k);
 
 /// The Helmholtz operator with A, per mode k, factored (complex Thomas, no pivoting: the rows times −h_i are
 /// the real symmetric positive-definite diffusion rows plus (h_i/ν)Â, whose Hermitian part is zero), rings
-/// 1…L = n_r−2 unknown, ζ given on the wall and on R:
+/// 1…L = n_r−2 unknown, ζ given on the wall and on R. A is skew-adjoint in the weights h_i and its symbols
+/// are imaginary, so h_i â_{i,−1} = h_{i−1} â_{i−1,+1} (to round-off; the test asserts it): the rows are
+/// complex symmetric, taken as T(i,i−1) = T(i−1,i), and the lower factor is the upper one of the ring
+/// before (as in ModeSolver).
 ///     [(ζ̂_{i+1} − ζ̂_i)/Δξ_{i+1/2} − (ζ̂_i − ζ̂_{i−1})/Δξ_{i−1/2}]/h_i − (λ_k + σ_i)ζ̂_i − (Âζ̂)_i/ν = f̂_i.
 struct RotationFactors {
   int n_r = 0, m = 0, L = 0;
   std::vector<double> h;                            ///< h_i (the mode solver's), rings 0…L
-  std::vector<std::complex<double>> lower;          ///< [i−1][k]: T(i,i−1)/d'_{i−1} (i ≥ 2)
   std::vector<std::complex<double>> inv_pivot;      ///< [i−1][k]: 1/d'_i
   std::vector<std::complex<double>> upper;          ///< [i−1][k]: T(i,i+1)/d'_i
   std::vector<std::complex<double>> wall, outer;    ///< [k]: −T(1,0), −T(L,L+1) (boundary values' weights)

@@ -128,8 +128,8 @@ namespace {
 
 /// wall_closure_modes on real (T = double) or complex influence data.
 template <class T>
-void closure_modes(const WallClosureRow& c, const T* phi_t, const T* chi_t, const T* denom, int n_r, int m,
-                   double target0, cplx* zeta_hat, cplx* psi_hat, cplx* delta, int kb, int ke) {
+void closure_modes(const WallClosureRow& c, const T* phi_t, const T* chi_t, const T* denom, const int* modes,
+                   int n_r, int m, double target0, cplx* zeta_hat, cplx* psi_hat, cplx* delta, int kb, int ke) {
   for (int k = kb; k < ke; ++k) {
     const cplx psi_star = c.c1 * psi_hat[size_t(m) + k] - c.c2 * psi_hat[size_t(2 * m) + k];
     delta[k] = ((k == 0 ? target0 : 0.0) - psi_star) / denom[k];
@@ -139,7 +139,8 @@ void closure_modes(const WallClosureRow& c, const T* phi_t, const T* chi_t, cons
     cplx* q = psi_hat + size_t(i) * m;
     const T* ph = &phi_t[size_t(i) * m];
     const T* ch = &chi_t[size_t(i) * m];
-    for (int k = kb; k < ke; ++k) z[k] += cmul(delta[k], ph[k]), q[k] += cmul(delta[k], ch[k]);
+    const int end = modes ? std::min(ke, modes[i]) : ke;
+    for (int k = kb; k < end; ++k) z[k] += cmul(delta[k], ph[k]), q[k] += cmul(delta[k], ch[k]);
   }
 }
 
@@ -148,11 +149,11 @@ void closure_modes(const WallClosureRow& c, const T* phi_t, const T* chi_t, cons
 void wall_closure_modes(const WallInfluence& w, int n_r, int m, double target0, cplx* zeta_hat, cplx* psi_hat,
                         cplx* delta, int kb, int ke) {
   if (w.denom_c.empty())
-    closure_modes(w.row, w.phi_t.data(), w.chi_t.data(), w.denom.data(), n_r, m, target0, zeta_hat, psi_hat,
-                  delta, kb, ke);
-  else
-    closure_modes(w.row, w.phi_c.data(), w.chi_c.data(), w.denom_c.data(), n_r, m, target0, zeta_hat,
+    closure_modes(w.row, w.phi_t.data(), w.chi_t.data(), w.denom.data(), nullptr, n_r, m, target0, zeta_hat,
                   psi_hat, delta, kb, ke);
+  else
+    closure_modes(w.row, w.phi_c.data(), w.chi_c.data(), w.denom_c.data(), w.modes_c.data(), n_r, m, target0,
+                  zeta_hat, psi_hat, delta, kb, ke);
 }
 
 }  // namespace magnus

@@ -117,10 +117,13 @@ WallClosureRow wall_closure_row(const PolarGrid& g, const NsParams& p);
 
 /// The wall closure's influence data, ring-major [i][k]: φ_k(ξ_i), χ_k(ξ_i) (operator.hpp), per mode
 /// c_1χ_k(ξ_1) − c_2χ_k(ξ_2) + c_w, and the row. With the rotation implicit (rotation.hpp) the step's φ_k,
-/// χ_k and denominators are complex (phi_c, chi_c, denom_c; else empty): wall_closure_modes takes those.
+/// χ_k and denominators are complex (phi_c, chi_c, denom_c; else empty): wall_closure_modes takes those,
+/// on ring i only the modes [0, modes_c[i]) whose φ_k or χ_k there is above 1e-17 of its largest (high
+/// modes decay within a few rings: r^−k and faster).
 struct WallInfluence {
   std::vector<double> phi_t, chi_t, denom;
   std::vector<std::complex<double>> phi_c, chi_c, denom_c;
+  std::vector<int> modes_c;
   WallClosureRow row;
 };
 

@@ -103,8 +103,9 @@ struct Step {
 
 /// Advection N^n (Arakawa) into N and the Crank–Nicolson right-hand side f into b.f on rings 1…n_r−2 (0 on
 /// the wall and outer rings), then f̂ (r2c) into b.zeta_hat, each thread its rings. With the rotation
-/// implicit N is N' = J(ψ', ζ) (ψ' in b.psi_prime) and f gains Aζ^n/ν. rate: the CFL rate of old's
-/// explicit part (1/s; with the wall ring's |ω|/Δθ unless the rotation is implicit); acc: Σ f.
+/// implicit N is N' = J(ψ', ζ) (ψ' in b.psi_prime) and f gains Aζ^n/ν (after acc: a non-finite ζ^n shows in
+/// the new fields). rate: the CFL rate of old's explicit part (1/s; with the wall ring's |ω|/Δθ unless the
+/// rotation is implicit); acc: Σ f.
 void right_hand_side(Step& s, const NsState& old, const Ab2& ab, std::vector<double>& N, double& rate,
                      double& acc) {
   const int parts = s.pool.size(), n = s.n, m = s.m;
@@ -128,7 +129,7 @@ void right_hand_side(Step& s, const NsState& old, const Ab2& ab, std::vector<dou
         const double ring = advection_ring(s.g, s.p, psi, old.zeta.data(), i, Ni);
         const double* N_prev = ab.first ? nullptr : &old.N_prev[size_t(i) * n];
         diffusion_rhs_ring(s.g, s.p, s.dt, old.zeta.data(), i, Ni, N_prev, ab.w1, ab.w0, f, sum);
-        if (s.rot) sum += add_rotation_ring(s.im.rotation_stencil, old.zeta.data(), i, 1.0 / s.p.nu, f);
+        if (s.rot) add_rotation_ring(s.im.rotation_stencil, old.zeta.data(), i, 1.0 / s.p.nu, f);
         rmax = std::max(rmax, ring_cfl_rate(s.g, i, ring));
       }
     }
