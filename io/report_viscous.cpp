@@ -17,6 +17,7 @@
 #include "postproc/derived.hpp"
 #include "postproc/navier_stokes/resolution.hpp"
 #include "postproc/navier_stokes/run.hpp"
+#include "solver/navier_stokes/rotation.hpp"
 
 namespace magnus {
 
@@ -281,9 +282,10 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
   s += labelled(
       "model",
       fmt::format("navier-stokes: 2D incompressible laminar, vorticity–streamfunction, no slip held "
-                  "exactly{}; advection order {} in θ, {} in ξ (solver.advection_order, advection_order_xi)",
+                  "exactly{}; advection order {} in θ, {} in ξ (solver.advection_order, advection_order_xi){}",
                   c.solver.wall_closure == "jensen" ? " (Jensen's second-order wall closure)" : "",
-                  c.solver.advection_order, c.solver.advection_order_xi));
+                  c.solver.advection_order, c.solver.advection_order_xi,
+                  rotation_implicit(ns_params(c)) ? "; the spin's vortex implicit (solver.implicit_rotation)" : ""));
   const std::string rings =
       c.grid.wall_refinement > 1.0
           ? fmt::format("rings clustered at the wall (Δξ {:.3g}× finer there, over ξ ≈ {:.2g})",
