@@ -382,7 +382,7 @@ TEST_CASE("the resolved case: potential text unchanged, navier-stokes text reads
   check_round_trip(j);
   // The explicit rotation reads back; the implicit one (the default) is left out, as in texts before the key.
   const Case e = parse(ns_scene, {"solver.implicit_rotation=false"});
-  CHECK_THAT(e.source_text, Contains("advection_order_xi = 2\nimplicit_rotation = false\n\n[time]"));
+  CHECK_THAT(e.source_text, Contains("advection_order_xi = 2\nwall_closure = \"jensen\"\nimplicit_rotation = false\n\n[time]"));
   check_round_trip(e);
   CHECK(g.grid.n_theta_given);
   CHECK(g.grid.wall_refinement_given);
