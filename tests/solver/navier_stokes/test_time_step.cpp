@@ -48,11 +48,7 @@ TEST_CASE("[ns] time step: AB2/CN is second order in time with a step that chang
   s.N_prev.clear(), s.dt_prev = 0.0;  // each run starts afresh (one Euler step)
   const auto z1 = alternate(p, s, 0.01, 20), z2 = alternate(p, s, 0.005, 40),
              z3 = alternate(p, s, 0.0025, 80);
-  double d12 = 0.0, d23 = 0.0;
-  for (size_t q = 0; q < z1.size(); ++q) {
-    d12 = std::max(d12, std::fabs(z1[q] - z2[q]));
-    d23 = std::max(d23, std::fabs(z2[q] - z3[q]));
-  }
+  const double d12 = test::max_abs_diff(z1, z2), d23 = test::max_abs_diff(z2, z3);
   INFO("successive differences " << d12 << " " << d23);
   REQUIRE(d23 > 0.0);
   CHECK(observed_order(d12, d23) == Approx(2.0).margin(0.15));  // constant AB2 weights give order 1
