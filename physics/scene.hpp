@@ -3,6 +3,7 @@
 // the case file is: the physical scene ([cylinder], [flow], [circulation]), the grid it is solved on
 // ([domain], [grid]), the solver ([solver]) and what is written ([output]). Plain data: parsing lives
 // in io/, and each layer takes only the part it needs.
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -191,5 +192,11 @@ const std::vector<std::string>& field_names();
 bool field_of_model(const std::string& name, FlowModel m);
 /// Units of a field of that name ("m^2/s", "m/s", "Pa", "1", "1/s").
 const char* field_units(const std::string& name);
+
+/// The boundary layer's thickness over the radius, δ/a = 2/√(Re(1 + α²)) (δ = D/√(Re(1 + α²)): spin thins it
+/// where the wall moves against the stream), dimensionless; Re = U·2a/ν (or a|ω|·2a/ν in still fluid, α = 0).
+inline double boundary_layer_over_a(double reynolds, double alpha) {
+  return 2.0 / std::sqrt(reynolds * (1.0 + alpha * alpha));
+}
 
 }  // namespace magnus

@@ -26,7 +26,7 @@ DerivedRatios derived_ratios(const FlowResult& r) {
 }
 
 double wall_cells(const PolarGrid& g, double reynolds, double alpha) {
-  return (2.0 * g.a / std::sqrt(reynolds * (1.0 + alpha * alpha))) / (g.r[1] - g.r[0]);
+  return g.a * boundary_layer_over_a(reynolds, alpha) / (g.r[1] - g.r[0]);
 }
 
 ViscousRatios viscous_ratios(const FlowResult& r) {

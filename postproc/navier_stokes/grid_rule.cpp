@@ -19,7 +19,7 @@ SceneGrid scene_grid(double Re, double alpha, double refine, bool sheds) {
   const double shape = 5.0 / 3.0;  // Δθ/Δξ of the validation studies' cells, at n_θ of kRuleThetaFactor
   SceneGrid g;
   g.n_theta = n_theta_of((sheds ? kRuleThetaFactorShedding : kRuleThetaFactor) * f);
-  g.delta_xi = std::log1p(2.0 / std::sqrt(std::max(Re, 1e-12) * (1.0 + alpha * alpha)));
+  g.delta_xi = std::log1p(boundary_layer_over_a(std::max(Re, 1e-12), alpha));
   // q and the layer's ξ-length are those of the unrefined grid: refining keeps the map, halving each spacing.
   const double d_xi_far = 2.0 * M_PI / n_theta_of(kRuleThetaFactor) / shape;
   g.radial_refinement = (2.0 * M_PI / g.n_theta) / (d_xi_far / f);
@@ -96,7 +96,7 @@ std::string scene_grid_text(const Case& c) {
                              : std::string();
   const std::string theta = scene_sheds(c) ? "n_θ from √Re for fourth order in θ (the wake sheds)" : "n_θ from √Re";
   return fmt::format("the scene's grid: {}, {:.3g} first-ring cells across δ = D/√(Re(1 + α²)) = {:.3g}a{}", theta,
-                     rule_wall_cells(alpha) * f, 2.0 / std::sqrt(rule_reynolds(c.scene) * (1.0 + alpha * alpha)), why);
+                     rule_wall_cells(alpha) * f, boundary_layer_over_a(rule_reynolds(c.scene), alpha), why);
 }
 
 }  // namespace magnus

@@ -22,7 +22,7 @@ size_t passed_limit(double bytes, size_t limit) {
 
 ResolvingGrid resolving_grid(const Case& c, double cells) {
   const Scene& s = c.scene;
-  const double alpha = s.spin_ratio(), thickness = 2.0 / std::sqrt(s.reynolds() * (1.0 + alpha * alpha));
+  const double thickness = boundary_layer_over_a(s.reynolds(), s.spin_ratio());
   const double h = std::log1p(thickness / cells);  // Δξ with a(e^Δξ − 1) = thickness·a/cells
   const NsParams defaults;
   ResolvingGrid g;
