@@ -62,6 +62,13 @@ std::optional<double> relative_estimate(double f_h, double f_2h, double spread) 
   return std::fabs(f_h - f_2h) / std::fabs(f_h) + spread;
 }
 
+void record_companion(ViscousPart& v, const char* what, const NsParams& pc, bool rings_only, double seconds) {
+  v.companion_n_theta = pc.n_theta, v.companion_n_r = pc.n_r;
+  v.companion_seconds = seconds;
+  v.error_method = fmt::format("from a companion {} on {} × {}{}: |f − f_coarse|, 3× the Richardson estimate", what,
+                               pc.n_theta, pc.n_r, rings_only ? " (coarser in the rings only)" : "");
+}
+
 void estimate_from_companion(ViscousPart& v, const UnsteadyResult& fine, const UnsteadyResult& coarse,
                              const MeansSpread& spread) {
   v.means_converged = fine.converged;

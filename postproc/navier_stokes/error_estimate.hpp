@@ -41,6 +41,10 @@ MeansSpread means_spread(const UnsteadyResult& run, int periods, double window);
 /// or either value is not finite.
 std::optional<double> relative_estimate(double f_h, double f_2h, double spread);
 
+/// Records the companion in v: its grid (pc's n_θ × n_r), its wall seconds, and the method line "from a
+/// companion {what} on n_θ × n_r[ (coarser in the rings only)]: |f − f_coarse|, 3× the Richardson estimate".
+void record_companion(ViscousPart& v, const char* what, const NsParams& pc, bool rings_only, double seconds);
+
 /// The estimates of v (cl_mean_rel_estimate, …, means_converged, means_spread_rel, error_note) from the
 /// run `fine` and its companion `coarse` (U > 0); undefined, with the reason in error_note, when the
 /// companion failed or was stopped before the run's time, or the run was interrupted.

@@ -91,14 +91,15 @@ FlowResult run_viscous(const Case& c, const ViscousHooks& hooks, const Checkpoin
   if (!r.viscous || r.viscous->partial) return r;
   std::optional<double> worst = worst_estimate(*r.viscous);
   if (worst && *worst > tol && !resume) {
+    const double more = 1.1 * std::sqrt(*worst / tol);  // error ∝ spacing², 10% to spare
     Case finer = first;
-    finer.grid.refine_solved *= 1.1 * std::sqrt(*worst / tol);
+    finer.grid.refine_solved *= more;
     try {
       check_grid_memory(finer, ns_params(finer), hooks.max_bytes);
       const std::string first_grid = fmt::format("{} × {}", r.grid.n_theta, r.grid.n_r);
       r = run_on_grid(finer, hooks, nullptr, threads);
       r.viscous->tolerance_note = fmt::format("the first grid, {}, estimated {:.2g}; refined {:.3g}× more",
-                                              first_grid, *worst, 1.1 * std::sqrt(*worst / tol));
+                                              first_grid, *worst, more);
     } catch (const std::invalid_argument& e) {
       r.viscous->tolerance_note = fmt::format("the grid it would need does not fit: {}", e.what());
     }

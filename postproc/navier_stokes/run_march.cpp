@@ -176,10 +176,7 @@ FlowResult march(const Case& c, const NsParams& p, const PolarGrid& g, double un
     return r;
   }
   const UnsteadyResult coarse = finish_companion(*companion, run.interrupted ? -HUGE_VAL : run.state.t);
-  v.companion_n_theta = pc.n_theta, v.companion_n_r = pc.n_r;
-  v.companion_seconds = coarse.wall_seconds;
-  v.error_method = fmt::format("from a companion run on {} × {}: |f − f_coarse|, 3× the Richardson estimate",
-                               pc.n_theta, pc.n_r);
+  record_companion(v, "run", pc, false, coarse.wall_seconds);
   estimate_from_companion(v, run, coarse,
                           means_spread(run, o.converged_periods + 1, o.steady_window * 2.0 * p.a / p.U));
   return r;

@@ -61,35 +61,33 @@ FlowResult steady_result(const Case& c, const NsParams& p, const PolarGrid& g, N
   return r;
 }
 
-/// The companion of a steady solve: Newton from the potential flow on the grid twice as coarse (pc), on a
-/// thread of its own (one thread), beside the case's solve.
-std::future<NewtonResult> start_companion_newton(NsParams pc, const NewtonOptions& o) {
-  pc.threads = 1;
-  return std::async(std::launch::async, [pc, o] {
-    try {
-      return solve_steady(pc, potential_guess(pc, ns_grid(pc)), o);
-    } catch (const std::exception& e) {  // the companion's failure leaves the estimate undefined, not the run
-      NewtonResult failed;
-      failed.message = e.what();
-      return failed;
-    }
-  });
-}
-
-/// The companion's solve once more, when the one from the potential flow failed (at high spin the coarse
-/// grid's Newton can stall far from its solution): from the run's own steady state `fine` (on g), sampled
-/// onto the companion's grid pc (Fourier in θ, cubic in ξ).
-NewtonResult companion_from_run(const NsParams& pc, const PolarGrid& g, const NsState& fine,
-                                const NewtonOptions& o) {
+/// Newton's solve of p from `guess` on one thread; a throw becomes a failed result (the companion's failure
+/// leaves the estimate undefined, not the run).
+NewtonResult companion_solve(NsParams p, const NsState& guess, const NewtonOptions& o) {
+  p.threads = 1;
   try {
-    NsParams q = pc;
-    q.threads = 1;
-    return solve_steady(q, interpolate_state(g, fine, ns_grid(q)), o);
+    return solve_steady(p, guess, o);
   } catch (const std::exception& e) {
     NewtonResult failed;
     failed.message = e.what();
     return failed;
   }
+}
+
+/// The companion of a steady solve: Newton from the potential flow on the grid twice as coarse (pc), on a
+/// thread of its own, beside the case's solve.
+std::future<NewtonResult> start_companion_newton(const NsParams& pc, const NewtonOptions& o) {
+  return std::async(std::launch::async, [pc, o] { return companion_solve(pc, potential_guess(pc, ns_grid(pc)), o); });
+}
+
+/// The companion's solve once more, when the one from the potential flow failed (at high spin the coarse
+/// grid's Newton can stall far from its solution): from the run's own steady state `fine` (on g), sampled
+/// onto the companion's grid pc (Fourier in θ, cubic in ξ). The seconds of the failed attempt are added.
+NewtonResult companion_from_run(const NsParams& pc, const PolarGrid& g, const NsState& fine, const NewtonOptions& o,
+                                double seconds_before) {
+  NewtonResult r = companion_solve(pc, interpolate_state(g, fine, ns_grid(pc)), o);
+  r.wall_seconds += seconds_before;
+  return r;
 }
 
 /// The steady values of a converged solve as a run's result (C_L, C_D; ok = Newton converged).
@@ -109,10 +107,7 @@ void steady_estimate(FlowResult& r, const NsParams& p, const NsParams& pc, const
                      const NewtonResult& coarse) {
   ViscousPart& v = *r.viscous;
   const double rho = r.c.scene.density;
-  v.companion_n_theta = pc.n_theta, v.companion_n_r = pc.n_r;
-  v.companion_seconds = coarse.wall_seconds;
-  v.error_method = fmt::format("from a companion Newton solve on {} × {}{}: |f − f_coarse|, 3× the Richardson estimate",
-                               pc.n_theta, pc.n_r, pc.n_theta == p.n_theta ? " (coarser in the rings only)" : "");
+  record_companion(v, "Newton solve", pc, pc.n_theta == p.n_theta, coarse.wall_seconds);
   estimate_from_companion(v, steady_values(p, rho, fine), steady_values(pc, rho, coarse), MeansSpread{});
 }
 
@@ -177,13 +172,13 @@ AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g, boo
     if (companion.valid()) {
       NewtonResult coarse = companion.get();
       NsParams used = pc;
-      // Stalled from the potential flow: again from the run's state; stalled again (the coarse θ spacing at
-      // high spin): coarser in the rings alone, where the drag's error lives there (the ratio is still 2).
-      for (int attempt = 0; attempt < 2 && !coarse.converged; ++attempt) {
-        const double seconds = coarse.wall_seconds;
-        if (attempt == 1) used.n_theta = p.n_theta;
-        coarse = companion_from_run(used, g, fine.state, o);
-        coarse.wall_seconds += seconds;
+      // Stalled from the potential flow: again from the run's own state. Stalled again (the coarse θ spacing
+      // cannot carry the wall's rotation at high spin): coarser in the rings alone, ratio 2 still, where the
+      // drag's error lies at high spin.
+      if (!coarse.converged) coarse = companion_from_run(used, g, fine.state, o, coarse.wall_seconds);
+      if (!coarse.converged) {
+        used.n_theta = p.n_theta;
+        coarse = companion_from_run(used, g, fine.state, o, coarse.wall_seconds);
       }
       steady_estimate(r, p, used, fine, coarse);
     } else if (error_estimate) {
