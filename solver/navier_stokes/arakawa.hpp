@@ -8,19 +8,26 @@
 
 namespace magnus {
 
-/// 12·Δθ·Δξ·J at column j of ring i, from the rings i−1, i, i+1 of ψ (pm, p0, pp) and ζ (zm, z0, zp), each n
-/// values (periodic in j), with θ-neighbours j ± s (s = 1: the scheme; s = 2: the same on the sub-lattice of
-/// every other column, whose θ-differences span 4Δθ); divide by 12·Δθ·Δξ for J (m²/s² with ψ in m²/s and ζ
-/// in 1/s, per unit ξ and θ).
-inline double arakawa_12(const double* pm, const double* p0, const double* pp, const double* zm,
-                         const double* z0, const double* zp, int j, int n, int s = 1) {
-  const int e = j + s >= n ? j + s - n : j + s, w = j < s ? j - s + n : j - s;
+/// 12·Δθ·Δξ·J at column j of ring i from the rings i−1, i, i+1 of ψ (pm, p0, pp) and ζ (zm, z0, zp), with
+/// θ-neighbours e and w (columns j ± s: s = 1 the scheme; s = 2 the same on the sub-lattice of every other
+/// column, whose θ-differences span 4Δθ); divide by 12·Δθ·Δξ for J (m²/s² with ψ in m²/s and ζ in 1/s, per
+/// unit ξ and θ). e and w index the same arrays: wrapped (arakawa_12) or into padded copies (no wrap).
+inline double arakawa_12_ew(const double* pm, const double* p0, const double* pp, const double* zm,
+                            const double* z0, const double* zp, std::ptrdiff_t j, std::ptrdiff_t e,
+                            std::ptrdiff_t w) {
   const double j1 = (p0[e] - p0[w]) * (zp[j] - zm[j]) - (pp[j] - pm[j]) * (z0[e] - z0[w]);
   const double j2 =
       p0[e] * (zp[e] - zm[e]) - p0[w] * (zp[w] - zm[w]) - pp[j] * (zp[e] - zp[w]) + pm[j] * (zm[e] - zm[w]);
   const double j3 =
       zp[j] * (pp[e] - pp[w]) - zm[j] * (pm[e] - pm[w]) - z0[e] * (pp[e] - pm[e]) + z0[w] * (pp[w] - pm[w]);
   return j1 + j2 + j3;
+}
+
+/// 12·Δθ·Δξ·J at column j of ring i (arakawa_12_ew with its periodic θ-neighbours j ± s of n columns).
+inline double arakawa_12(const double* pm, const double* p0, const double* pp, const double* zm,
+                         const double* z0, const double* zp, int j, int n, int s = 1) {
+  const int e = j + s >= n ? j + s - n : j + s, w = j < s ? j - s + n : j - s;
+  return arakawa_12_ew(pm, p0, pp, zm, z0, zp, j, e, w);
 }
 
 /// One Arakawa Jacobian of an advection scheme: θ-stride s_theta, ξ-stride s_xi (1 or 2; stride 2 is the
