@@ -1,7 +1,10 @@
-// magnus stability CASE [--set k=v]… [--critical-spin A:B] [--tolerance T] [--json]
-// The steady state's leading eigenvalues (growth rate, St; stable or not), or the critical spin ratio.
+// magnus stability CASE [--set k=v]… [--critical-spin A:B | --critical-reynolds A:B] [--tolerance T] [--json]
+// The steady state's leading eigenvalues (growth rate, St; stable or not), or the onset of shedding: the
+// critical spin ratio or Reynolds number where the wake's pair crosses the axis.
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -13,8 +16,10 @@
 #include "io/case_file.hpp"
 #include "io/case_keys.hpp"
 #include "io/json_output.hpp"
+#include "io/sweep_file.hpp"
 #include "io/text_format.hpp"
 #include "postproc/navier_stokes/critical.hpp"
+#include "postproc/navier_stokes/onset_curve.hpp"
 #include "postproc/navier_stokes/resolution.hpp"
 #include "postproc/navier_stokes/run.hpp"
 
@@ -23,7 +28,7 @@ namespace magnus {
 namespace {
 
 struct StabilityCliOptions {
-  std::string case_path, critical, tolerance;
+  std::string case_path, critical, critical_re, tolerance, curve_re, curve_alpha;
   std::vector<std::string> sets;
   bool json = false;
 };
@@ -42,24 +47,44 @@ double parse_number(const std::string& text, const std::string& option, const ch
   return v;
 }
 
-/// --critical-spin A:B (finite, A < B) and --tolerance T (> 0, below B − A), checked before any solve.
+/// --critical-spin A:B or --critical-reynolds A:B (finite, A < B; Re > 0) and --tolerance T (> 0, below
+/// B − A), checked before any solve.
 struct CriticalRange {
+  HopfParameter which = HopfParameter::spin_ratio;
   double A = 0.0, B = 0.0, tolerance = 0.01;
+  std::vector<double> others;  ///< --reynolds (with --critical-spin) or --spin-ratio (with --critical-reynolds)
 };
 CriticalRange parse_critical(const StabilityCliOptions& o) {
   CriticalRange r;
-  const size_t colon = o.critical.find(':');
+  const bool re = !o.critical_re.empty();
+  if (re && !o.critical.empty())
+    throw std::invalid_argument("--critical-spin and --critical-reynolds: give one of them (the parameter to move)");
+  r.which = re ? HopfParameter::reynolds : HopfParameter::spin_ratio;
+  const std::string& text = re ? o.critical_re : o.critical;
+  const std::string option = re ? "--critical-reynolds" : "--critical-spin";
+  const char* expected = re ? "A:B with two finite Reynolds numbers > 0" : "A:B with two finite spin ratios";
+  const size_t colon = text.find(':');
   if (colon == std::string::npos)
-    throw std::invalid_argument("--critical-spin: expected A:B (two spin ratios), got \"" + o.critical + "\"");
-  r.A = parse_number(o.critical.substr(0, colon), "--critical-spin", "A:B with two finite spin ratios");
-  r.B = parse_number(o.critical.substr(colon + 1), "--critical-spin", "A:B with two finite spin ratios");
-  if (!(r.A < r.B))
-    throw std::invalid_argument(fmt::format("--critical-spin {}: needs A < B", o.critical));
+    throw std::invalid_argument(fmt::format("{}: expected {}, got \"{}\"", option, expected, cut_input(text)));
+  r.A = parse_number(text.substr(0, colon), option, expected);
+  r.B = parse_number(text.substr(colon + 1), option, expected);
+  if (re && !(r.A > 0.0)) throw std::invalid_argument(fmt::format("{} {}: expected {}", option, text, expected));
+  if (!(r.A < r.B)) throw std::invalid_argument(fmt::format("{} {}: needs A < B", option, text));
+  const std::string& curve = re ? o.curve_alpha : o.curve_re;
+  const std::string& wrong = re ? o.curve_re : o.curve_alpha;
+  if (!wrong.empty())
+    throw std::invalid_argument(re ? "--reynolds: an onset curve in Re steps along α: use --spin-ratio with --critical-reynolds"
+                                   : "--spin-ratio: an onset curve in α steps along Re: use --reynolds with --critical-spin");
+  if (!curve.empty()) {
+    r.others = parse_sweep_range(curve, re ? "--spin-ratio" : "--reynolds").values;
+    if (!re && !(r.others.front() > 0.0))
+      throw std::invalid_argument("--reynolds " + curve + ": Reynolds numbers must be > 0");
+  }
   if (!o.tolerance.empty()) {
-    r.tolerance = parse_number(o.tolerance, "--tolerance", "a bracket width T > 0");
+    r.tolerance = parse_number(o.tolerance, "--tolerance", "a width T > 0");
     if (!(r.tolerance > 0.0) || !(r.tolerance < r.B - r.A))
       throw std::invalid_argument(fmt::format(
-          "--tolerance {}: the bracket width must be > 0 and below B − A = {:g}", o.tolerance, r.B - r.A));
+          "--tolerance {}: the width must be > 0 and below B − A = {:g}", o.tolerance, r.B - r.A));
   }
   return r;
 }
@@ -107,10 +132,83 @@ std::string search_text(const StabilityResult& s) {
   return t;
 }
 
+/// The onset of shedding over the range: the crossing, its bracket and the pair at each end asked for.
+void critical_report(const NsParams& p, const CriticalRange& range, bool json, std::string& text, Json& j) {
+  const bool spin = range.which == HopfParameter::spin_ratio;
+  const char* x = spin ? "α" : "Re";
+  HopfOptions ho;
+  ho.tol = range.tolerance;
+  const HopfPoint h = hopf_point(p, range.which, range.A, range.B, ho, [&](const HopfEvaluation& e) {
+    if (!json)
+      std::fprintf(stderr, "  %s = %-9.6g growth rate %+.6f U/D  (%s%s)\n", x, e.x, e.growth(),
+                   e.growth() < 0.0 ? "stable" : "unstable", e.tracked ? ", the pair tracked" : "");
+  });
+  const double alpha = p.a * p.omega / p.U;
+  text += fmt::format("critical {:<5} {:.4f} ± {:.1g}  ({}; bracket [{:.4f}, {:.4f}], {} steady states, {:.1f} s)\n",
+                      x, h.x_c, std::max(h.change, 1e-12),
+                      spin ? fmt::format("Re {:.4g}", p.reynolds()) : fmt::format("α {:g}", alpha), h.lo, h.hi,
+                      h.evaluations.size(), h.seconds);
+  text += fmt::format("onset          the wake's pair {}: St {:.4f} at the crossing\n", eig_text(h.lambda),
+                      h.strouhal());
+  text += "leading pair   λ·D/U at the ends of the range asked for\n";
+  for (const HopfEvaluation* e : {&h.at_a, &h.at_b})
+    text += fmt::format("at {} = {:<7g} {}  ({})\n", x, e->x, eig_text(e->mode), e->growth() < 0.0 ? "decays" : "grows");
+  j = {{"reynolds", p.reynolds()},
+       {"spin_ratio", alpha},
+       {"parameter", spin ? "spin_ratio" : "reynolds"},
+       {spin ? "critical_spin_ratio" : "critical_reynolds", h.x_c},
+       {"change", h.change},
+       {"bracket", {h.lo, h.hi}},
+       {"onset_growth_rate", h.lambda.real()},
+       {"onset_frequency", h.lambda.imag()},
+       {"onset_strouhal", h.strouhal()},
+       {"evaluations", h.evaluations.size()},
+       {"at_a", {{"value", range.A}, {"stable", h.at_a.growth() < 0.0}, {"eigenvalues", eig_json(h.at_a.stability)}}},
+       {"at_b", {{"value", range.B}, {"stable", h.at_b.growth() < 0.0}, {"eigenvalues", eig_json(h.at_b.stability)}}},
+       {"seconds", h.seconds}};
+}
+
+/// The onset curve: one line per value of the other parameter, the crossing or why none was found.
+void curve_report(const NsParams& p, const CriticalRange& range, bool json, std::string& text, Json& j) {
+  const bool spin = range.which == HopfParameter::spin_ratio;
+  const char *x = spin ? "α_L" : "Re_c", *other = spin ? "Re" : "α";
+  HopfOptions ho;
+  ho.tol = range.tolerance;
+  text += fmt::format("onset curve    {}({}): where the wake's pair crosses the axis (shedding {} above it)\n", x, other,
+                      spin ? "stops" : "starts");
+  text += fmt::format("{:>8}  {:>9}  {:>8}  {:>8}  {:>7}  {:>8}\n", other, x, "±", "St", "points", "time s");
+  Json rows = Json::array();
+  const auto t0 = std::chrono::steady_clock::now();
+  onset_curve(p, range.which, range.A, range.B, range.others, ho, [&](const OnsetPoint& pt) {
+    const HopfPoint& h = pt.point;
+    const std::string line =
+        pt.found ? fmt::format("{:>8.4g}  {:>9.4f}  {:>8.1g}  {:>8.4f}  {:>7}  {:>8.1f}", pt.other, h.x_c,
+                               std::max(h.change, 1e-12), h.strouhal(), h.evaluations.size(), h.seconds)
+                 : fmt::format("{:>8.4g}  not found: {}", pt.other, pt.message);
+    if (!json) std::fprintf(stderr, "%s\n", line.c_str());
+    text += line + "\n";
+    rows.push_back(pt.found ? Json{{spin ? "reynolds" : "spin_ratio", pt.other},
+                                   {spin ? "critical_spin_ratio" : "critical_reynolds", h.x_c},
+                                   {"change", h.change},
+                                   {"onset_strouhal", h.strouhal()},
+                                   {"evaluations", h.evaluations.size()},
+                                   {"seconds", h.seconds}}
+                            : Json{{spin ? "reynolds" : "spin_ratio", pt.other}, {"undefined", pt.message}});
+  });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  text += fmt::format("total          {:.1f} s\n", seconds);
+  j = {{"parameter", spin ? "spin_ratio" : "reynolds"}, {"curve", rows}, {"seconds", seconds}};
+}
+
 void command_stability(const StabilityCliOptions& o) {
-  if (o.critical.empty() && !o.tolerance.empty())
-    throw std::invalid_argument("--tolerance: only used with --critical-spin A:B (the bisection's bracket width)");
-  const CriticalRange range = o.critical.empty() ? CriticalRange{} : parse_critical(o);
+  const bool critical = !o.critical.empty() || !o.critical_re.empty();
+  if (!critical && !o.tolerance.empty())
+    throw std::invalid_argument("--tolerance: only used with --critical-spin A:B or --critical-reynolds A:B");
+  if (!critical && (!o.curve_re.empty() || !o.curve_alpha.empty()))
+    throw std::invalid_argument(std::string(o.curve_re.empty() ? "--spin-ratio" : "--reynolds") +
+                                ": an onset curve needs --critical-spin A:B (with --reynolds) or --critical-reynolds A:B "
+                                "(with --spin-ratio)");
+  const CriticalRange range = critical ? parse_critical(o) : CriticalRange{};
   Case c = load_case(o.case_path, o.sets);
   retitle_for_overrides(c, o.case_path, o.sets);
   if (c.model != FlowModel::navier_stokes)
@@ -121,8 +219,8 @@ void command_stability(const StabilityCliOptions& o) {
   const double alpha = p.a * p.omega / p.U;
   std::string text;
   Json j;
-  if (o.critical.empty()) {
-    const SpinStability s = spin_stability(p, alpha, nullptr, 6);
+  if (!critical) {
+    const HopfEvaluation s = hopf_evaluation(p, HopfParameter::spin_ratio, alpha, nullptr, std::nullopt);
     if (!s.converged)
       throw std::runtime_error(fmt::format("{}: Newton's method found no steady state (Re {:.4g}, α {:g})",
                                            o.case_path, p.reynolds(), alpha));
@@ -143,27 +241,10 @@ void command_stability(const StabilityCliOptions& o) {
                         st.covered ? "" : "; not verified: see the coverage line");
     j = {{"reynolds", p.reynolds()}, {"spin_ratio", alpha}, {"stable", st.stable}, {"eigenvalues", eig_json(st)},
          {"seconds", s.newton_seconds + st.seconds}, {"solves", st.solves}, {"search", search_json(st)}};
+  } else if (range.others.empty()) {
+    critical_report(p, range, o.json, text, j);
   } else {
-    const double A = range.A, B = range.B;
-    const CriticalSpin cs = critical_spin(p, A, B, range.tolerance, [&](const SpinStability& s) {
-      if (!o.json)
-        std::fprintf(stderr, "  α = %-9.5g growth rate %+.5f U/D  (%s)\n", s.alpha, s.growth(),
-                     s.growth() < 0.0 ? "stable" : "unstable");
-    });
-    text += fmt::format("critical α     {:.4f}  (Re {:.4g}; bracket [{:.4f}, {:.4f}], {} steady states, {:.1f} s)\n",
-                        cs.alpha_c, p.reynolds(), cs.lo, cs.hi, cs.evaluations.size(), cs.seconds);
-    const auto pair = [](const SpinStability& s) { return s.stability.leading_pair().value_or(s.stability.eigenvalues.front()); };
-    text += "leading pair   λ·D/U at the ends of the bracket asked for\n";
-    text += fmt::format("at α = {:<7g} {}  ({})\n", A, eig_text(pair(cs.at_a)),
-                        cs.at_a.growth() < 0.0 ? "decays" : "grows");
-    text += fmt::format("at α = {:<7g} {}  ({})\n", B, eig_text(pair(cs.at_b)),
-                        cs.at_b.growth() < 0.0 ? "decays" : "grows");
-    j = {{"reynolds", p.reynolds()},
-         {"critical_spin_ratio", cs.alpha_c},
-         {"bracket", {cs.lo, cs.hi}},
-         {"at_a", {{"spin_ratio", A}, {"stable", cs.at_a.stability.stable}, {"eigenvalues", eig_json(cs.at_a.stability)}}},
-         {"at_b", {{"spin_ratio", B}, {"stable", cs.at_b.stability.stable}, {"eigenvalues", eig_json(cs.at_b.stability)}}},
-         {"seconds", cs.seconds}};
+    curve_report(p, range, o.json, text, j);
   }
   if (o.json)
     std::fputs((json_text(j) + "\n").c_str(), stdout);
@@ -176,11 +257,19 @@ void command_stability(const StabilityCliOptions& o) {
 void add_stability_command(CLI::App& app) {
   auto o = std::make_shared<StabilityCliOptions>();
   auto* cmd = app.add_subcommand(
-      "stability", "linear stability of the steady viscous state: leading eigenvalues, or the critical spin ratio");
+      "stability", "linear stability of the steady viscous state: leading eigenvalues, or the onset of shedding in α or Re");
   cmd->add_option("case", o->case_path, "case file (TOML, model.flow = \"navier-stokes\")")->required();
   cmd->add_option("--set", o->sets, "override a case key: section.key=value (repeatable)");
-  cmd->add_option("--critical-spin", o->critical, "bisect on the growth rate over spin ratios A:B");
-  cmd->add_option("--tolerance", o->tolerance, "bracket width of the critical spin ratio (default 0.01)");
+  cmd->add_option("--critical-spin", o->critical,
+                  "the spin ratio in A:B where shedding stops (the wake's pair crosses the axis; secant search)");
+  cmd->add_option("--critical-reynolds", o->critical_re,
+                  "the Reynolds number in A:B where shedding starts, at the case's spin ratio");
+  cmd->add_option("--reynolds", o->curve_re,
+                  "with --critical-spin: the curve α_L(Re) over Reynolds numbers A:B:STEP, each point continued from the last");
+  cmd->add_option("--spin-ratio", o->curve_alpha,
+                  "with --critical-reynolds: the curve Re_c(α) over spin ratios A:B:STEP");
+  cmd->add_option("--tolerance", o->tolerance,
+                  "how closely the crossing is found: the secant root's last move, or the bracket (default 0.01)");
   cmd->add_flag("--json", o->json, "print one JSON object instead of the table");
   cmd->callback([o] { command_stability(*o); });
 }

@@ -8,67 +8,215 @@
 
 namespace magnus {
 
-SpinStability spin_stability(const NsParams& base, double alpha, const NsState* guess, int count) {
-  if (!(base.U > 0.0)) throw std::invalid_argument("critical spin ratio: flow.speed must be > 0 (α = aω/U)");
-  NsParams p = base;
-  p.omega = alpha * p.U / p.a;
-  SpinStability s;
-  s.alpha = alpha;
-  const auto t0 = std::chrono::steady_clock::now();
-  SteadyJacobian jac(p);
-  NewtonResult nr;
-  if (guess) {
-    NsState g = *guess;  // the neighbour's vorticity, this α's wall condition follows from Newton
-    nr = solve_steady(jac, g);
-  }
-  if (!guess || !nr.converged) nr = solve_steady(jac, potential_guess(p, jac.grid()));
-  s.newton_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  s.converged = nr.converged;
-  s.state = std::move(nr.state);
-  if (s.converged) s.stability = leading_eigenvalues(p, s.state, count);
-  return s;
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-CriticalSpin critical_spin(const NsParams& p, double A, double B, double tol,
-                           const std::function<void(const SpinStability&)>& progress) {
-  if (!std::isfinite(A) || !std::isfinite(B))
-    throw std::invalid_argument(fmt::format("--critical-spin A:B needs finite spin ratios (got {}:{})", A, B));
-  if (!(A < B)) throw std::invalid_argument(fmt::format("--critical-spin A:B needs A < B (got {}:{})", A, B));
-  if (!(tol > 0.0)) throw std::invalid_argument(fmt::format("--tolerance must be > 0 (got {})", tol));
-  const auto t0 = std::chrono::steady_clock::now();
-  CriticalSpin c;
-  auto solve = [&](double alpha, const NsState* guess) {
-    SpinStability s = spin_stability(p, alpha, guess);
-    if (!s.converged)
-      throw std::runtime_error(fmt::format("critical spin ratio: Newton's method found no steady state at α = {:g}", alpha));
-    if (s.stability.eigenvalues.empty())
-      throw std::runtime_error(
-          fmt::format("critical spin ratio: no eigenvalue converged at α = {:g} ({})", alpha, s.stability.message));
-    if (progress) progress(s);
-    SpinStability copy = s;
-    copy.state = {};
-    c.evaluations.push_back(std::move(copy));
-    return s;
-  };
-  SpinStability lo = solve(A, nullptr);
-  SpinStability hi = solve(B, &lo.state);
-  c.at_a = lo, c.at_b = hi;
-  c.at_a.state = {}, c.at_b.state = {};
-  if ((lo.growth() < 0.0) == (hi.growth() < 0.0))
-    throw std::invalid_argument(fmt::format(
-        "--critical-spin {:g}:{:g}: the leading growth rate does not change sign (Re λ·D/U = {:.4g} at α = {:g}, "
-        "{:.4g} at α = {:g}): widen or move the bracket",
-        A, B, lo.growth(), A, hi.growth(), B));
-  while (hi.alpha - lo.alpha > tol) {
-    const double mid = 0.5 * (lo.alpha + hi.alpha);
-    SpinStability m = solve(mid, &lo.state);
-    ((m.growth() < 0.0) == (lo.growth() < 0.0) ? lo : hi) = std::move(m);
+/// Newton at x from `guess` (potential_guess when null); the result's state either way.
+NewtonResult newton_at(const NsParams& p, HopfParameter which, double x, const NsState* guess) {
+  const NsParams q = with_parameter(p, which, x);
+  SteadyJacobian jac(q);
+  return solve_steady(jac, guess ? *guess : potential_guess(q, jac.grid()));
+}
+
+/// Natural continuation from the converged (x0, s0) to x: Newton at each step from the last state, the step
+/// halved where Newton fails, down to 1/64 of the way. Returns the state at x, or nullopt.
+std::optional<NsState> continue_to(const NsParams& p, HopfParameter which, double x0, NsState s0, double x) {
+  const double min_step = std::fabs(x - x0) / 64.0;
+  double step = x - x0;
+  while (x0 != x) {
+    const double x1 = std::fabs(step) >= std::fabs(x - x0) ? x : x0 + step;
+    NewtonResult r = newton_at(p, which, x1, &s0);
+    if (r.converged) {
+      x0 = x1, s0 = std::move(r.state);
+      continue;
+    }
+    step *= 0.5;
+    if (std::fabs(step) < min_step) return std::nullopt;
   }
-  c.lo = lo.alpha, c.hi = hi.alpha;
-  const double gl = lo.growth(), gh = hi.growth();
-  c.alpha_c = gl == gh ? 0.5 * (c.lo + c.hi) : c.lo + (c.hi - c.lo) * gl / (gl - gh);
-  c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return s0;
+}
+
+/// The steady state at x: from `from` by continuation, else from `guess` (a state of other parameters on
+/// the same grid), else from the potential flow, else by continuation from the safe end (α = 0: the wake
+/// without spin; Re = 20: a steady wake).
+std::optional<NsState> steady_at(const NsParams& p, HopfParameter which, double x, const HopfEvaluation* from,
+                                 const NsState* guess) {
+  if (from && from->converged) return continue_to(p, which, from->x, from->state, x);
+  if (guess) {
+    NewtonResult g = newton_at(p, which, x, guess);
+    if (g.converged) return std::move(g.state);
+  }
+  NewtonResult r = newton_at(p, which, x, nullptr);
+  if (r.converged) return std::move(r.state);
+  const double safe = which == HopfParameter::spin_ratio ? 0.0 : std::min(20.0, x);
+  if (safe == x) return std::nullopt;
+  NewtonResult s = newton_at(p, which, safe, nullptr);
+  if (!s.converged) return std::nullopt;
+  return continue_to(p, which, safe, std::move(s.state), x);
+}
+
+/// The pair's member with Im λ > 0 nearest `near` among r's eigenvalues (0 when there is none).
+std::complex<double> nearest_pair(const StabilityResult& r, std::complex<double> near) {
+  std::complex<double> best = 0.0;
+  for (const auto& l : r.eigenvalues)
+    if (l.imag() > 0.0 && (best == 0.0 || std::abs(l - near) < std::abs(best - near))) best = l;
+  return best;
+}
+
+/// e's eigenvalues by one shift-invert search at `near` (U/D), and the pair nearest it as e's mode.
+void track(const NsParams& p, HopfParameter which, HopfEvaluation& e, std::complex<double> near,
+           const HopfOptions& o) {
+  StabilityOptions so;
+  so.shifts = {near};
+  so.extra_shifts = 0;
+  so.want = 2;
+  so.krylov = o.track_krylov;
+  e.stability = leading_eigenvalues(with_parameter(p, which, e.x), e.state, o.count, so);
+  e.mode = nearest_pair(e.stability, near);
+  e.tracked = true;
+}
+
+/// The secant root of the line through (a, b)'s growth rates, with b's weighted by w (Illinois).
+double secant_root(const HopfEvaluation& a, const HopfEvaluation& b, double wa, double wb) {
+  const double ga = wa * a.growth(), gb = wb * b.growth();
+  return ga == gb ? 0.5 * (a.x + b.x) : a.x + (b.x - a.x) * ga / (ga - gb);
+}
+
+}  // namespace
+
+const char* hopf_parameter_name(HopfParameter which) {
+  return which == HopfParameter::spin_ratio ? "spin ratio α" : "Reynolds number Re";
+}
+
+NsParams with_parameter(const NsParams& p, HopfParameter which, double x) {
+  NsParams q = p;
+  if (which == HopfParameter::spin_ratio)
+    q.omega = x * q.U / q.a;
+  else
+    q.nu = 2.0 * q.a * q.U / x;
+  return q;
+}
+
+double HopfPoint::strouhal() const { return std::fabs(lambda.imag()) / (2.0 * M_PI); }
+
+HopfEvaluation hopf_evaluation(const NsParams& p, HopfParameter which, double x, const HopfEvaluation* from,
+                               const std::optional<std::complex<double>>& near, const HopfOptions& o,
+                               const NsState* guess) {
+  if (!(p.U > 0.0)) throw std::invalid_argument("onset of shedding: flow.speed must be > 0 (α = aω/U, Re = 2aU/ν)");
+  HopfEvaluation e;
+  e.x = x;
+  const auto t0 = std::chrono::steady_clock::now();
+  std::optional<NsState> s = steady_at(p, which, x, from, guess);
+  e.newton_seconds = seconds_since(t0);
+  e.converged = s.has_value();
+  if (!e.converged) return e;
+  e.state = std::move(*s);
+  if (near) {
+    track(p, which, e, *near, o);
+  } else {
+    e.stability = leading_eigenvalues(with_parameter(p, which, x), e.state, o.count);
+    e.mode = e.stability.leading_pair().value_or(0.0);
+  }
+  return e;
+}
+
+namespace {
+
+/// The bracket of a Hopf search and its Illinois weights; lo is the end at the smaller x.
+struct HopfBracket {
+  HopfEvaluation lo, hi;
+  double w_lo = 1.0, w_hi = 1.0;
+  int kept = 0;  ///< −1: lo kept by the last step, +1: hi kept, 0: neither yet
+  double root() const { return secant_root(lo, hi, w_lo, w_hi); }
+  /// The pair at x by linear interpolation between the ends, U/D.
+  std::complex<double> pair_at(double x) const { return lo.mode + (hi.mode - lo.mode) * ((x - lo.x) / (hi.x - lo.x)); }
+  /// m replaces the end of its sign; the end kept twice in a row has its growth rate halved (Illinois).
+  void replace(HopfEvaluation m) {
+    if ((m.growth() < 0.0) == (lo.growth() < 0.0)) {
+      lo = std::move(m), w_lo = 1.0;
+      if (kept == 1) w_hi *= 0.5;
+      kept = 1;
+    } else {
+      hi = std::move(m), w_hi = 1.0;
+      if (kept == -1) w_lo *= 0.5;
+      kept = -1;
+    }
+  }
+};
+
+HopfEvaluation without_state(const HopfEvaluation& e) {
+  HopfEvaluation c = e;
+  c.state = {};
   return c;
+}
+
+/// The ends A and B with the same pair at both: the leading pair of the unstable end (full search there),
+/// tracked at the other. `keep` checks and records each.
+HopfBracket hopf_ends(const NsParams& p, HopfParameter which, double A, double B, const HopfOptions& o,
+                      const std::function<void(const HopfEvaluation&)>& keep, const NsState* guess) {
+  HopfBracket k;
+  k.lo = hopf_evaluation(p, which, A, nullptr, std::nullopt, o, guess);
+  const bool a_unstable = k.lo.converged && k.lo.mode != 0.0 && k.lo.growth() >= 0.0;
+  if (a_unstable) keep(k.lo);
+  k.hi = hopf_evaluation(p, which, B, &k.lo, a_unstable ? std::optional(k.lo.mode) : std::nullopt, o);
+  if (!a_unstable && k.lo.converged && k.hi.converged && k.hi.mode != 0.0 && k.hi.growth() >= 0.0)
+    track(p, which, k.lo, k.hi.mode, o);  // the stable end's eigenvalues at the mode that turns unstable
+  if (!a_unstable) keep(k.lo);
+  keep(k.hi);
+  if ((k.lo.growth() < 0.0) == (k.hi.growth() < 0.0))
+    throw std::invalid_argument(fmt::format(
+        "onset of shedding over {} {:g}:{:g}: the leading growth rate does not change sign (Re λ·D/U = {:.4g} "
+        "at {:g}, {:.4g} at {:g}): widen or move the bracket",
+        hopf_parameter_name(which), A, B, k.lo.growth(), A, k.hi.growth(), B));
+  return k;
+}
+
+}  // namespace
+
+HopfPoint hopf_point(const NsParams& p, HopfParameter which, double A, double B, const HopfOptions& o,
+                     const std::function<void(const HopfEvaluation&)>& progress, const NsState* guess) {
+  const char* name = hopf_parameter_name(which);
+  if (!std::isfinite(A) || !std::isfinite(B) || (which == HopfParameter::reynolds && !(A > 0.0)))
+    throw std::invalid_argument(fmt::format("onset of shedding: the {} bracket needs finite values{} (got {}:{})",
+                                            name, which == HopfParameter::reynolds ? " > 0" : "", A, B));
+  if (!(A < B)) throw std::invalid_argument(fmt::format("onset of shedding: the {} bracket needs A < B (got {}:{})", name, A, B));
+  if (!(o.tol > 0.0)) throw std::invalid_argument(fmt::format("--tolerance must be > 0 (got {})", o.tol));
+  const auto t0 = std::chrono::steady_clock::now();
+  HopfPoint h;
+  h.parameter = which;
+  auto keep = [&](const HopfEvaluation& e) {
+    if (!e.converged)
+      throw std::runtime_error(fmt::format("onset of shedding: Newton's method found no steady state at {} = {:g}, "
+                                           "continuing from the nearest state solved", name, e.x));
+    if (e.mode == 0.0)
+      throw std::runtime_error(fmt::format("onset of shedding: no complex pair (the wake's mode) was found at {} = "
+                                           "{:g} ({})", name, e.x, e.stability.message));
+    if (progress) progress(e);
+    h.evaluations.push_back(without_state(e));
+  };
+  HopfBracket k = hopf_ends(p, which, A, B, o, keep, guess);
+  h.at_a = without_state(k.lo), h.at_b = without_state(k.hi);
+  double root = k.root();
+  h.change = k.hi.x - k.lo.x;
+  while (k.hi.x - k.lo.x > o.tol && h.change > 0.5 * o.tol && int(h.evaluations.size()) < o.max_evaluations) {
+    const HopfEvaluation& from = std::fabs(root - k.lo.x) <= std::fabs(root - k.hi.x) ? k.lo : k.hi;
+    HopfEvaluation m = hopf_evaluation(p, which, root, &from, k.pair_at(root), o);
+    keep(m);
+    k.replace(std::move(m));
+    const double next = k.root();
+    h.change = std::fabs(next - root);
+    root = next;
+  }
+  h.x_c = root, h.lo = k.lo.x, h.hi = k.hi.x;
+  if (h.lo > h.hi) std::swap(h.lo, h.hi);
+  h.lambda = k.pair_at(root);
+  const HopfEvaluation& nearest = std::fabs(root - k.lo.x) <= std::fabs(root - k.hi.x) ? k.lo : k.hi;
+  h.state = nearest.state;
+  h.seconds = seconds_since(t0);
+  return h;
 }
 
 }  // namespace magnus

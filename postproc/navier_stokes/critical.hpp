@@ -1,8 +1,16 @@
 #pragma once
-// The critical spin ratio of the viscous model: where the steady state's leading eigenvalue crosses the
-// imaginary axis (Re λ = 0), by bisection on Re λ(α) of the leading complex pair over a bracket [A, B]; each α's steady state by
-// Newton's method from the nearest state already solved (continuation), then leading_eigenvalues.
+// The onset of shedding as a computed point: where the steady state's leading complex pair (the wake's
+// Hopf mode) crosses the imaginary axis, Re λ(x) = 0, along the spin ratio x = α (the critical spin α_L
+// above which shedding stops) or the Reynolds number x = Re (Re_c, where it starts). The search is a
+// secant iteration on Re λ(x), kept inside its sign-change bracket (regula falsi with the Illinois
+// weight), not bisection: it converges superlinearly. Every steady state comes by Newton's method from the
+// nearest state already solved (natural continuation, the step halved where Newton fails), and only the
+// ends of the bracket get the full eigenvalue search: between them the pair is tracked by one shift-invert
+// search at its predicted position.
+#include <complex>
 #include <functional>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "solver/navier_stokes/newton.hpp"
@@ -10,38 +18,69 @@
 
 namespace magnus {
 
-/// One spin ratio of the search: its steady state and that state's leading eigenvalues.
-struct SpinStability {
-  double alpha = 0.0;       ///< spin ratio aω/U
-  bool converged = false;   ///< Newton reached a steady state (else stability is empty)
-  NsState state;            ///< the steady state (the last iterate when not converged)
+/// The parameter a Hopf search moves.
+enum class HopfParameter {
+  spin_ratio,  ///< α = aω/U (ω = αU/a changes; Re fixed)
+  reynolds     ///< Re = 2aU/ν (ν = 2aU/Re changes; α fixed)
+};
+
+/// "spin ratio α" or "Reynolds number Re", for messages.
+const char* hopf_parameter_name(HopfParameter which);
+
+/// p with the parameter set to x: ω = x·U/a (spin ratio) or ν = 2aU/x (Reynolds number).
+NsParams with_parameter(const NsParams& p, HopfParameter which, double x);
+
+/// One point of the search: its steady state and that state's eigenvalues.
+struct HopfEvaluation {
+  double x = 0.0;          ///< the parameter's value (α or Re)
+  bool converged = false;  ///< Newton reached a steady state (else stability is empty)
+  NsState state;           ///< the steady state (the last iterate when not converged)
   StabilityResult stability;
-  double newton_seconds = 0.0;  ///< wall time of the Newton solve, s
-  /// Re λ of the leading complex pair (the wake's Hopf mode; the leading eigenvalue when no pair was
-  /// found), U/D: the slow real far-field modes near −0.002 would otherwise bias the crossing.
-  double growth() const {
-    const auto l = stability.leading_pair();
-    return l ? l->real() : stability.growth_rate();
-  }
+  double newton_seconds = 0.0;  ///< wall time of the Newton solves (continuation steps included), s
+  std::complex<double> mode;    ///< the tracked pair's member with Im λ > 0, U/D (0 when none was found)
+  bool tracked = false;         ///< the eigenvalues from one shift at the predicted pair, not the full search
+  /// Re λ of the tracked pair, U/D: the slow real far-field modes near −0.002 would otherwise bias the crossing.
+  double growth() const { return mode.real(); }
 };
 
-/// The crossing and its bracket.
-struct CriticalSpin {
-  double alpha_c = 0.0;       ///< Re λ = 0 by linear interpolation inside the final bracket
-  double lo = 0.0, hi = 0.0;  ///< final bracket: Re λ changes sign between them
-  SpinStability at_a, at_b;   ///< the two ends asked for
-  std::vector<SpinStability> evaluations;  ///< every α solved, in order (states dropped)
-  double seconds = 0.0;       ///< wall time, s
+/// The crossing Re λ(x_c) = 0 and how it was found.
+struct HopfPoint {
+  HopfParameter parameter = HopfParameter::spin_ratio;
+  double x_c = 0.0;              ///< the crossing: the secant root inside the final bracket
+  double lo = 0.0, hi = 0.0;     ///< final bracket: Re λ changes sign between them
+  double change = 0.0;           ///< |x_c − the previous secant root|: the search's own error estimate
+  std::complex<double> lambda;   ///< the pair at x_c (interpolated), U/D: Im λ = 2π·St of the onset
+  HopfEvaluation at_a, at_b;     ///< the two ends asked for (states dropped)
+  std::vector<HopfEvaluation> evaluations;  ///< every point solved, in order (states dropped)
+  double seconds = 0.0;          ///< wall time, s
+  NsState state;                 ///< the steady state of the evaluation nearest x_c (a guess for the next search)
+  /// Strouhal number of the onset, |Im λ|/(2π) (λ in U/D).
+  double strouhal() const;
 };
 
-/// Newton from `guess` (potential_guess when null or when it fails from guess) and the leading eigenvalues
-/// at spin ratio α (p.omega = α U/a). Throws std::invalid_argument when U = 0.
-SpinStability spin_stability(const NsParams& p, double alpha, const NsState* guess, int count = 6);
+/// How the search stops and tracks.
+struct HopfOptions {
+  double tol = 0.01;   ///< stop when the secant root moves by at most tol/2, or the bracket is ≤ tol
+  int max_evaluations = 24;
+  int count = 6;       ///< eigenvalues kept per full search
+  int track_krylov = 24;  ///< Arnoldi vectors of a tracking search (one shift at the predicted pair)
+};
 
-/// Bisection for Re λ(α) = 0 on [A, B] until hi − lo ≤ tol. Throws std::invalid_argument (one line, with
-/// both growth rates) when Re λ has the same sign at A and B, and std::runtime_error when Newton fails at
-/// some α. progress (optional) is called after each α.
-CriticalSpin critical_spin(const NsParams& p, double A, double B, double tol,
-                           const std::function<void(const SpinStability&)>& progress = {});
+/// The steady state at parameter value x and its eigenvalues. The state: by continuation from `from` (a
+/// converged point of the same search) in steps halved where Newton fails; without it, Newton from `guess`
+/// (a state of other parameters on the same grid), then from potential_guess, then by continuation from
+/// the safe end (α = 0, or Re = 20). The eigenvalues: the full search when `track` is empty, else one
+/// shift-invert search at *track (U/D), whose pair nearest it is the mode. Throws std::invalid_argument
+/// when U = 0.
+HopfEvaluation hopf_evaluation(const NsParams& p, HopfParameter which, double x, const HopfEvaluation* from,
+                               const std::optional<std::complex<double>>& track, const HopfOptions& o = {},
+                               const NsState* guess = nullptr);
+
+/// The crossing on [A, B] (A < B). Throws std::invalid_argument (one line, with both growth rates) when Re λ
+/// has the same sign at A and B, and std::runtime_error when no steady state or no pair is found at some x.
+/// progress (optional) is called after each point; guess (optional) starts Newton at A (see hopf_evaluation).
+HopfPoint hopf_point(const NsParams& p, HopfParameter which, double A, double B, const HopfOptions& o = {},
+                     const std::function<void(const HopfEvaluation&)>& progress = {},
+                     const NsState* guess = nullptr);
 
 }  // namespace magnus

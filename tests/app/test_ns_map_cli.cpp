@@ -202,18 +202,46 @@ TEST_CASE("magnus stability: the eigenvalues, the critical spin ratio, and refus
   REQUIRE(o.status == 0);
   j = nlohmann::json::parse(o.out);
   const double lo = j["bracket"][0], hi = j["bracket"][1], ac = j["critical_spin_ratio"];
-  CHECK(hi - lo <= 0.05);
+  // The secant search stops when its root moves by at most half the tolerance (or the bracket is that narrow).
+  CHECK((j["change"].get<double>() <= 0.025 || hi - lo <= 0.05));
   CHECK((lo <= ac && ac <= hi));
-  CHECK((1.4 < lo && hi < 1.9));
+  CHECK((1.4 <= lo && hi <= 1.9));
   CHECK(j["at_a"]["stable"] == false);  // sheds below the threshold
   CHECK(j["at_b"]["stable"] == true);   // steady above it
+  CHECK(j["evaluations"].get<int>() < 8);  // bisection to 0.05 from a width of 0.5 took 6 points and 2 more ends
+
+  // The onset in Re at α = 0 on the same coarse grid, and the curve α_L(Re) over three Reynolds numbers.
+  o = magnus_cmd({"stability", s_map, "--critical-reynolds", "40:60", "--tolerance", "0.1", "--json"}, dir);
+  REQUIRE(o.status == 0);
+  j = nlohmann::json::parse(o.out);
+  const double re_c = j["critical_reynolds"];
+  CHECK((j["bracket"][0].get<double>() <= re_c && re_c <= j["bracket"][1].get<double>()));
+  CHECK(j["at_a"]["stable"] == true);   // steady below the onset
+  CHECK(j["at_b"]["stable"] == false);  // sheds above it
+  CHECK(j["onset_strouhal"].get<double>() > 0.08);
+  CHECK(j["onset_strouhal"].get<double>() < 0.16);
+  o = magnus_cmd({"stability", s_map, "--critical-spin", "1.0:2.2", "--reynolds", "60:80:10", "--tolerance", "0.02",
+                  "--json"},
+                 dir);
+  REQUIRE(o.status == 0);
+  j = nlohmann::json::parse(o.out);
+  REQUIRE(j["curve"].size() == 3);
+  for (size_t k = 0; k < 3; ++k) REQUIRE(j["curve"][k].contains("critical_spin_ratio"));
+  // Shedding persists to higher spin as Re rises (Kang, Choi & Lee 1999: α_L 1.4, 1.75, 1.9 at Re 60, 100, 160).
+  CHECK(j["curve"][1]["critical_spin_ratio"].get<double>() > j["curve"][0]["critical_spin_ratio"].get<double>());
+  CHECK(j["curve"][2]["critical_spin_ratio"].get<double>() > j["curve"][1]["critical_spin_ratio"].get<double>());
 
   for (auto [args, expect] :
        {std::pair{std::vector<std::string>{"--critical-spin", "0:inf"}, "two finite spin ratios"},
         {std::vector<std::string>{"--critical-spin", "2:1"}, "needs A < B"},
         {std::vector<std::string>{"--critical-spin", "1:2", "--tolerance", "0"}, "must be > 0"},
         {std::vector<std::string>{"--critical-spin", "1:2", "--tolerance", "5"}, "below B − A"},
-        {std::vector<std::string>{"--tolerance", "0.1"}, "only used with --critical-spin"}}) {
+        {std::vector<std::string>{"--tolerance", "0.1"}, "only used with --critical-spin"},
+        {std::vector<std::string>{"--critical-spin", "1:2", "--critical-reynolds", "40:60"}, "give one of them"},
+        {std::vector<std::string>{"--critical-reynolds", "0:60"}, "Reynolds numbers > 0"},
+        {std::vector<std::string>{"--reynolds", "60:80:10"}, "an onset curve needs --critical-spin"},
+        {std::vector<std::string>{"--critical-spin", "1:2", "--spin-ratio", "0:1:0.5"}, "use --reynolds"},
+        {std::vector<std::string>{"--critical-spin", "1:2", "--reynolds", "-10:80:10"}, "must be > 0"}}) {
     std::vector<std::string> a = {"stability", s_map};
     a.insert(a.end(), args.begin(), args.end());
     const Outcome b = magnus_cmd(a, dir);
