@@ -38,7 +38,10 @@ in_background() {
   wait $!
 }
 
-seconds_since() { /usr/bin/python3 -c "import sys; print(f'{float(sys.argv[2]) - float(sys.argv[1]):.1f}')" "$1" "$EPOCHREALTIME"; }
+# Seconds from the $EPOCHREALTIME given to now, to 0.1 s.
+seconds_since() {
+  /usr/bin/python3 -c "import sys; print(f'{float(sys.argv[2]) - float(sys.argv[1]):.1f}')" "$1" "$EPOCHREALTIME"
+}
 
 # Processes with the marker in their environment: the daemons, slurmstepd and the jobs' tasks.
 marked_pids() {
@@ -137,7 +140,7 @@ AccountingStorageType=accounting_storage/none
 JobCompType=jobcomp/none
 ReturnToService=2
 MinJobAge=6
-NodeName=$node NodeAddr=127.0.0.1 CPUs=$(nproc) State=UNKNOWN
+NodeName=$node NodeAddr=127.0.0.1 CPUs=$(nproc) RealMemory=1000 State=UNKNOWN
 PartitionName=magnus Nodes=$node Default=YES MaxTime=INFINITE State=UP
 EOF
 export SLURM_CONF="$tmp/slurm.conf"
@@ -159,8 +162,10 @@ map=(sweep "$case_file" --reynolds "$reynolds" --spin-ratio "$alpha" -q)
 cat >"$tmp/s_map.sbatch" <<EOF
 #!/bin/bash
 #SBATCH --job-name=s_map
+#SBATCH --partition=magnus        # the README's job script, with this cluster's partition
 #SBATCH --cpus-per-task=1
-#SBATCH --time=00:15:00
+#SBATCH --mem=500M
+#SBATCH --time=00:30:00
 exec $(printf '%q ' "$magnus" "${map[@]}") \\
   --shard \${SLURM_ARRAY_TASK_ID}/\${SLURM_ARRAY_TASK_COUNT} -o "$tmp/s_map.\${SLURM_ARRAY_TASK_ID}.h5"
 EOF
@@ -183,12 +188,14 @@ done
 
 # ------------------------------------------------------------------ the same map in one process
 t0="$EPOCHREALTIME"
-in_background "$magnus" "${map[@]}" -o "$tmp/whole.h5" >"$tmp/whole.out" 2>&1 || fail "unsharded sweep: $(tail -n 1 "$tmp/whole.out")"
+in_background "$magnus" "${map[@]}" -o "$tmp/whole.h5" >"$tmp/whole.out" 2>&1 ||
+  fail "unsharded sweep: $(tail -n 1 "$tmp/whole.out")"
 whole_s="$(seconds_since "$t0")"
 
 # ------------------------------------------------------------------ the merge is the unsharded map
 check="$here/scripts/sweep_files_equal.py"
-same="$(/usr/bin/python3 "$check" "$tmp/whole.h5" "$tmp/s_map.h5" 2>&1)" || fail "merged shards ≠ unsharded map: $same"
+same="$(/usr/bin/python3 "$check" "$tmp/whole.h5" "$tmp/s_map.h5" 2>&1)" ||
+  fail "merged shards ≠ unsharded map: $same"
 # The comparison can fail: a shard alone is not the whole map.
 if [ "$shards" -gt 1 ] && /usr/bin/python3 "$check" "$tmp/whole.h5" "$tmp/s_map.1.h5" >/dev/null 2>&1; then
   fail "sweep_files_equal.py finds shard 1 equal to the whole map: the check sees nothing"
