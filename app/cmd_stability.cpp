@@ -220,7 +220,9 @@ void command_stability(const StabilityCliOptions& o) {
   std::string text;
   Json j;
   if (!critical) {
-    const HopfEvaluation s = hopf_evaluation(p, HopfParameter::spin_ratio, alpha, nullptr, std::nullopt);
+    HopfOptions honest;  // the converged search: every shift to convergence, shifts added for gaps
+    honest.full = StabilityOptions{};
+    const HopfEvaluation s = hopf_evaluation(p, HopfParameter::spin_ratio, alpha, nullptr, std::nullopt, honest);
     if (!s.converged)
       throw std::runtime_error(fmt::format("{}: Newton's method found no steady state (Re {:.4g}, α {:g})",
                                            o.case_path, p.reynolds(), alpha));

@@ -117,7 +117,7 @@ HopfEvaluation hopf_evaluation(const NsParams& p, HopfParameter which, double x,
   if (near) {
     track(p, which, e, *near, o);
   } else {
-    e.stability = leading_eigenvalues(with_parameter(p, which, x), e.state, o.count);
+    e.stability = leading_eigenvalues(with_parameter(p, which, x), e.state, o.count, o.full);
     e.mode = e.stability.leading_pair().value_or(0.0);
   }
   return e;

@@ -1,0 +1,58 @@
+// The onset of shedding as computed points (label `validation`, minutes each): the secant search of
+// postproc/navier_stokes/critical.hpp on the scene's grid (the grid rule of postproc/navier_stokes/grid_rule.hpp
+// at the published onset, Jensen's wall closure, second order), against the linear-stability and DNS studies.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+
+#include "postproc/navier_stokes/critical.hpp"
+#include "postproc/navier_stokes/grid_rule.hpp"
+
+using namespace magnus;
+
+namespace {
+
+/// A cylinder of a = 0.5 m in U = 1 m/s (D/U = 1 s) at Re and α, on the scene's grid of (Re, α).
+NsParams scene(double Re, double alpha) {
+  NsParams p;
+  p.a = 0.5, p.U = 1.0, p.nu = 1.0 / Re, p.omega = alpha * p.U / p.a;
+  const SceneGrid g = scene_grid(Re, alpha);
+  p.n_theta = g.n_theta, p.radial_refinement = g.radial_refinement, p.n_r = 0;
+  p.wall_refinement = g.wall_refinement, p.wall_layer = g.wall_layer;
+  p.wall_closure = NsWallClosure::jensen;  // the scene's closure (kRuleWallClosure)
+  return p;
+}
+
+HopfPoint search(const NsParams& p, HopfParameter which, double A, double B, double tol) {
+  HopfOptions o;
+  o.tol = tol;
+  const HopfPoint h = hopf_point(p, which, A, B, o, [](const HopfEvaluation& e) {
+    std::printf("  %.5f growth %+.6f St %.4f%s\n", e.x, e.growth(), e.mode.imag() / (2.0 * M_PI),
+                e.tracked ? " (tracked)" : "");
+    std::fflush(stdout);
+  });
+  std::printf("crossing %.4f +- %.1g in [%.4f, %.4f], St %.4f, %zu steady states, %.1f s\n", h.x_c, h.change, h.lo,
+              h.hi, h.strouhal(), h.evaluations.size(), h.seconds);
+  return h;
+}
+
+}  // namespace
+
+TEST_CASE("[validation][onset] Re_c without spin: 46.2–46.8 at St 0.117", "[validation][onset]") {
+  // Jackson 1987 (46.2), Giannetti & Luchini 2007 (46.7), Sipp & Lebedev 2007 (46.6); St ≈ 0.117 at onset.
+  const HopfPoint h = search(scene(47.0, 0.0), HopfParameter::reynolds, 40.0, 55.0, 0.02);
+  CHECK(h.x_c > 46.2);
+  CHECK(h.x_c < 46.8);
+  CHECK(h.strouhal() == Approx(0.117).epsilon(0.03));
+  CHECK(h.at_a.growth() < 0.0);
+  CHECK(h.at_b.growth() > 0.0);
+}
+
+TEST_CASE("[validation][onset] Re 200: shedding stops at alpha 1.91", "[validation][onset]") {
+  // Mittal & Kumar 2003: the wake at Re 200 stops shedding at α_L = 1.91 (their DNS). The old search failed
+  // here: Newton from the potential flow found no steady state at α = 1.6.
+  const HopfPoint h = search(scene(200.0, 1.9), HopfParameter::spin_ratio, 1.6, 2.2, 0.002);
+  CHECK(h.x_c == Approx(1.91).margin(0.04));
+  CHECK(h.at_a.growth() > 0.0);
+  CHECK(h.at_b.growth() < 0.0);
+}
