@@ -39,9 +39,25 @@ std::optional<NsState> continue_to(const NsParams& p, HopfParameter which, doubl
   return s0;
 }
 
+/// The steady state at x where Newton from the potential flow fails: continued from a safe point, first in
+/// Re at this α from Re = 60 (a spin search above it: at Re 200 Newton reaches no state from the potential
+/// flow at any α up to 1.6), then in the searched parameter from α = 0 or Re = 20.
+std::optional<NsState> steady_from_safe(const NsParams& p, HopfParameter which, double x) {
+  if (which == HopfParameter::spin_ratio && p.reynolds() > 60.0) {
+    const NsParams at_x = with_parameter(p, which, x);
+    NewtonResult s = newton_at(at_x, HopfParameter::reynolds, 60.0, nullptr);
+    if (s.converged)
+      if (auto r = continue_to(at_x, HopfParameter::reynolds, 60.0, std::move(s.state), p.reynolds())) return r;
+  }
+  const double safe = which == HopfParameter::spin_ratio ? 0.0 : std::min(20.0, x);
+  if (safe == x) return std::nullopt;
+  NewtonResult s = newton_at(p, which, safe, nullptr);
+  if (!s.converged) return std::nullopt;
+  return continue_to(p, which, safe, std::move(s.state), x);
+}
+
 /// The steady state at x: from `from` by continuation, else from `guess` (a state of other parameters on
-/// the same grid), else from the potential flow, else by continuation from the safe end (α = 0: the wake
-/// without spin; Re = 20: a steady wake).
+/// the same grid), else from the potential flow, else steady_from_safe.
 std::optional<NsState> steady_at(const NsParams& p, HopfParameter which, double x, const HopfEvaluation* from,
                                  const NsState* guess) {
   if (from && from->converged) return continue_to(p, which, from->x, from->state, x);
@@ -51,11 +67,7 @@ std::optional<NsState> steady_at(const NsParams& p, HopfParameter which, double 
   }
   NewtonResult r = newton_at(p, which, x, nullptr);
   if (r.converged) return std::move(r.state);
-  const double safe = which == HopfParameter::spin_ratio ? 0.0 : std::min(20.0, x);
-  if (safe == x) return std::nullopt;
-  NewtonResult s = newton_at(p, which, safe, nullptr);
-  if (!s.converged) return std::nullopt;
-  return continue_to(p, which, safe, std::move(s.state), x);
+  return steady_from_safe(p, which, x);
 }
 
 /// The pair's member with Im λ > 0 nearest `near` among r's eigenvalues (0 when there is none).
@@ -131,6 +143,8 @@ struct HopfBracket {
   double w_lo = 1.0, w_hi = 1.0;
   int kept = 0;  ///< −1: lo kept by the last step, +1: hi kept, 0: neither yet
   double root() const { return secant_root(lo, hi, w_lo, w_hi); }
+  /// The pair of the end where it grows, U/D.
+  std::complex<double> unstable_mode() const { return lo.growth() >= 0.0 ? lo.mode : hi.mode; }
   /// The pair at x by linear interpolation between the ends, U/D.
   std::complex<double> pair_at(double x) const { return lo.mode + (hi.mode - lo.mode) * ((x - lo.x) / (hi.x - lo.x)); }
   /// m replaces the end of its sign; the end kept twice in a row has its growth rate halved (Illinois).
@@ -203,13 +217,24 @@ HopfPoint hopf_point(const NsParams& p, HopfParameter which, double A, double B,
   h.change = k.hi.x - k.lo.x;
   while (k.hi.x - k.lo.x > o.tol && h.change > 0.5 * o.tol && int(h.evaluations.size()) < o.max_evaluations) {
     const HopfEvaluation& from = std::fabs(root - k.lo.x) <= std::fabs(root - k.hi.x) ? k.lo : k.hi;
-    HopfEvaluation m = hopf_evaluation(p, which, root, &from, k.pair_at(root), o);
+    // The pair is tracked from the unstable end's: the one whose crossing is wanted (the stable end's
+    // nearest pair may be another, damped mode).
+    HopfEvaluation m = hopf_evaluation(p, which, root, &from, k.unstable_mode(), o);
     keep(m);
     k.replace(std::move(m));
     const double next = k.root();
     h.change = std::fabs(next - root);
     root = next;
   }
+  // A crossing the secant can trust: the growth rate falls to a small fraction of the ends' across the
+  // final bracket. A jump instead (a fold of the steady branch, states from either end on two branches,
+  // or the tracked pair changing) is no Hopf point.
+  const double slope = std::fabs(h.at_b.growth() - h.at_a.growth()) / (h.at_b.x - h.at_a.x);
+  if (std::fabs(k.hi.growth() - k.lo.growth()) > 10.0 * slope * (k.hi.x - k.lo.x) + 1e-9)
+    throw std::runtime_error(fmt::format(
+        "onset of shedding: the growth rate jumps from {:+.4g} at {} = {:g} to {:+.4g} at {:g} (U/D) instead of "
+        "crossing zero: a fold of the steady branch or a change of the tracked mode, not a Hopf point",
+        k.lo.growth(), name, k.lo.x, k.hi.growth(), k.hi.x));
   h.x_c = root, h.lo = k.lo.x, h.hi = k.hi.x;
   if (h.lo > h.hi) std::swap(h.lo, h.hi);
   h.lambda = k.pair_at(root);
