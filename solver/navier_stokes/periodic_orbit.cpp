@@ -1,0 +1,186 @@
+// Newton–GMRES shooting for the periodic orbits of the time stepper (periodic_orbit.hpp).
+#include "solver/navier_stokes/periodic_orbit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+
+#include "solver/gmres.hpp"
+
+namespace magnus {
+
+NsState period_map(const NsOperator& op, const NsState& s, int N,
+                   const std::function<void(const NsState&)>& on_step) {
+  NsState cur = s, nxt;
+  for (int k = 0; k < N; ++k) {
+    advance(op, cur, nxt);
+    std::swap(cur, nxt);
+    if (on_step) on_step(cur);
+  }
+  return cur;
+}
+
+namespace {
+
+/// Factors that make the blocks of a state dimensionless (multiply by them to get an unknown): ζ·D/U,
+/// ψ/(UD), N/U², Γ_R/(UD), (dΓ_R/dt)/U², and a time·U/D. U_ref = U, or a|ω| without a freestream.
+struct Scales {
+  double zeta, psi, N, Gamma, flux, time;
+};
+Scales scales_of(const NsParams& p) {
+  const double U = p.U > 0.0 ? p.U : std::fabs(p.a * p.omega), D = 2.0 * p.a;
+  return {D / U, 1.0 / (U * D), 1.0 / (U * U), 1.0 / (U * D), 1.0 / (U * U), U / D};
+}
+
+/// What the shooting keeps: the parameters, N, the node count n and the scales; counts the steps taken.
+struct Shooting {
+  const NsParams& p;
+  int N;
+  size_t n;
+  Scales c;
+  long steps = 0;
+
+  /// The unknowns of a state: [ζ | ψ | N^{n−1} | Γ_R | dΓ_R/dt^{n−1}], scaled (an absent N^{n−1}: 0).
+  std::vector<double> pack(const NsState& s) const {
+    std::vector<double> x(3 * n + 2, 0.0);
+    for (size_t q = 0; q < n; ++q) x[q] = s.zeta[q] * c.zeta, x[n + q] = s.psi[q] * c.psi;
+    if (s.N_prev.size() == n)
+      for (size_t q = 0; q < n; ++q) x[2 * n + q] = s.N_prev[q] * c.N;
+    x[3 * n] = s.Gamma_R * c.Gamma;
+    x[3 * n + 1] = s.Gamma_flux_prev * c.flux;
+    return x;
+  }
+  /// The state of the unknowns x, at t = 0 after a step of dt (s), so that AB2 goes on with its own Δt.
+  NsState unpack(const std::vector<double>& x, double dt) const {
+    NsState s;
+    s.zeta.resize(n), s.psi.resize(n), s.N_prev.resize(n);
+    for (size_t q = 0; q < n; ++q)
+      s.zeta[q] = x[q] / c.zeta, s.psi[q] = x[n + q] / c.psi, s.N_prev[q] = x[2 * n + q] / c.N;
+    s.Gamma_R = x[3 * n] / c.Gamma;
+    s.Gamma_flux_prev = x[3 * n + 1] / c.flux;
+    s.dt_prev = dt;
+    return s;
+  }
+  /// Φ_T(x) on op (Δt = T/N), scaled; first (if given): the unknowns after the first step.
+  std::vector<double> map(const NsOperator& op, const std::vector<double>& x, std::vector<double>* first) {
+    bool at_first = true;
+    const NsState end = period_map(op, unpack(x, op.dt()), N, [&](const NsState& s) {
+      if (first && at_first) *first = pack(s);
+      at_first = false;
+    });
+    steps += N;
+    return pack(end);
+  }
+  /// ‖y_ζ − x_ζ‖/‖x_ζ‖: the vorticity block's relative change over a period.
+  double residual(const std::vector<double>& y, const std::vector<double>& x) const {
+    double d = 0.0, s = 0.0;
+    for (size_t q = 0; q < n; ++q) d += (y[q] - x[q]) * (y[q] - x[q]), s += x[q] * x[q];
+    return s > 0.0 ? std::sqrt(d / s) : std::sqrt(d);
+  }
+};
+
+/// A Newton step (δx, δT in s) and its GMRES solve.
+struct NewtonStep {
+  std::vector<double> dx;
+  double dT = 0.0;
+  GmresResult gmres;
+};
+
+/// The bordered system of the Newton step at (x, T) with y = Φ_T(x) and first = S(x) on op, by GMRES to
+/// the relative tolerance eta: products (Φ_T(x + εv) − y)/ε − v + ∂Φ/∂T·v_T and ⟨ẋ₀, v⟩/‖ẋ₀‖.
+NewtonStep newton_step(Shooting& sh, const NsOperator& op, const std::vector<double>& x,
+                       const std::vector<double>& y, const std::vector<double>& first, double T, double eta,
+                       int max_krylov) {
+  const size_t m = x.size();
+  std::vector<double> xdot(m);
+  for (size_t i = 0; i < m; ++i) xdot[i] = first[i] - x[i];
+  const double xdot_norm = norm2(xdot);
+  for (double& v : xdot) v /= xdot_norm > 0.0 ? xdot_norm : 1.0;
+  const double dT_fd = 1e-6 * T;  // ∂Φ/∂T per scaled time, from one more period at Δt = (T + δT)/N
+  const NsOperator op_T(sh.p, (T + dT_fd) / sh.N);
+  std::vector<double> dPhi = sh.map(op_T, x, nullptr);
+  for (size_t i = 0; i < m; ++i) dPhi[i] = (dPhi[i] - y[i]) / (dT_fd * sh.c.time);
+  const double x_norm = norm2(x);
+  auto apply = [&](const std::vector<double>& v, std::vector<double>& out) {
+    std::vector<double> vx(v.begin(), v.begin() + long(m));
+    const double v_norm = norm2(vx), vT = v[m];
+    std::fill(out.begin(), out.end(), 0.0);
+    if (v_norm > 0.0) {
+      const double eps = 1e-8 * (1.0 + x_norm) / v_norm;
+      std::vector<double> xp(m);
+      for (size_t i = 0; i < m; ++i) xp[i] = x[i] + eps * vx[i];
+      const std::vector<double> yp = sh.map(op, xp, nullptr);
+      for (size_t i = 0; i < m; ++i) out[i] = (yp[i] - y[i]) / eps - vx[i];
+    }
+    for (size_t i = 0; i < m; ++i) out[i] += dPhi[i] * vT;
+    out[m] = dot(xdot, vx);
+  };
+  std::vector<double> b(m + 1, 0.0), z;
+  for (size_t i = 0; i < m; ++i) b[i] = x[i] - y[i];
+  NewtonStep s;
+  s.gmres = gmres(apply, b, z, eta, max_krylov);
+  s.dx.assign(z.begin(), z.begin() + long(m));
+  s.dT = z[m] / sh.c.time;
+  return s;
+}
+
+/// x₀ + λ·dx.
+std::vector<double> along(const std::vector<double>& x0, const std::vector<double>& dx, double lambda) {
+  std::vector<double> x(x0.size());
+  for (size_t i = 0; i < x.size(); ++i) x[i] = x0[i] + lambda * dx[i];
+  return x;
+}
+
+}  // namespace
+
+OrbitResult solve_periodic_orbit(const NsParams& p, const NsState& start, double T0, const OrbitOptions& o) {
+  const PolarGrid g = ns_grid(p);
+  const size_t n = size_t(g.n_r) * size_t(g.n_theta);
+  if (o.steps <= 0) throw std::invalid_argument("solve_periodic_orbit: needs N > 0 time steps per period");
+  if (!(T0 > 0.0) || !std::isfinite(T0)) throw std::invalid_argument("solve_periodic_orbit: needs a period > 0");
+  if (start.zeta.size() != n || start.psi.size() != n)
+    throw std::invalid_argument("solve_periodic_orbit: the state does not match the grid");
+  Shooting sh{p, o.steps, n, scales_of(p)};
+  OrbitResult res;
+  res.steps = o.steps;
+  std::vector<double> x = sh.pack(start), x_old, first;
+  double T = T0, T_old = T0, rho_old = std::numeric_limits<double>::infinity(), lambda = 1.0;
+  NewtonStep step;
+  for (int k = 0;;) {
+    auto op = std::make_unique<NsOperator>(p, T / o.steps);
+    const std::vector<double> y = sh.map(*op, x, &first);
+    const double rho = sh.residual(y, x);
+    if (k > 0 && !(rho < rho_old) && lambda > 0.125) {  // backtrack: half the step
+      lambda *= 0.5;
+      x = along(x_old, step.dx, lambda);
+      T = T_old + lambda * step.dT;
+      continue;
+    }
+    res.history.push_back({k, rho, T, step.gmres.iterations, step.gmres.residual, lambda});
+    if (o.on_iterate) o.on_iterate(res.history.back());
+    res.residual = rho;
+    if (!std::isfinite(rho)) break;
+    if (rho <= o.tol) {
+      res.converged = true;
+      break;
+    }
+    if (k == o.max_newton) break;
+    const double eta = std::clamp(10.0 * rho, 1e-7, o.forcing_max);
+    step = newton_step(sh, *op, x, y, first, T, eta, o.max_krylov);
+    res.krylov_total += step.gmres.iterations;
+    x_old = x, T_old = T, rho_old = rho, lambda = 1.0;
+    x = along(x_old, step.dx, 1.0);
+    T = T_old + step.dT;
+    ++k;
+    if (!(T > 0.0)) throw std::runtime_error("solve_periodic_orbit: the period turned non-positive");
+  }
+  res.time_steps = sh.steps;
+  res.T = T;
+  res.state = sh.unpack(x, T / o.steps);
+  res.message = res.converged ? "periodic orbit converged" : "Newton stopped before the tolerance";
+  return res;
+}
+
+}  // namespace magnus
