@@ -273,10 +273,11 @@ void read_navier_stokes(const Reader& r, Case& c) {
   c.solver.wall_closure =
       r.word("solver", "wall_closure", rule ? kRuleWallClosure : c.solver.wall_closure, {"thom", "jensen"});
   c.solver.implicit_rotation = r.boolean("solver", "implicit_rotation", c.solver.implicit_rotation);
-  const std::string mode = r.word("time", "mode", "auto", {"auto", "steady", "unsteady"});
-  c.time.mode = mode == "auto"     ? TimeMode::automatic
-                : mode == "steady" ? TimeMode::steady
-                                   : TimeMode::unsteady;
+  const std::string mode = r.word("time", "mode", "auto", {"auto", "steady", "unsteady", "periodic"});
+  c.time.mode = mode == "auto"       ? TimeMode::automatic
+                : mode == "steady"   ? TimeMode::steady
+                : mode == "periodic" ? TimeMode::periodic
+                                     : TimeMode::unsteady;
   auto non_negative = [](double v) { return v >= 0.0; };
   c.time.end = r.number("time", "end", c.time.end, positive, "> 0 (D/U)");
   c.time.dt = r.number("time", "dt", c.time.dt, non_negative, ">= 0 (D/U; 0: from time.cfl)");

@@ -137,7 +137,10 @@ const char* to_string(Method m) {
 const char* to_string(StencilKind s) { return s == StencilKind::five_point ? "5-point" : "9-point"; }
 const char* to_string(FlowModel m) { return m == FlowModel::potential ? "potential" : "navier-stokes"; }
 const char* to_string(TimeMode m) {
-  return m == TimeMode::automatic ? "auto" : m == TimeMode::steady ? "steady" : "unsteady";
+  return m == TimeMode::automatic  ? "auto"
+         : m == TimeMode::steady   ? "steady"
+         : m == TimeMode::periodic ? "periodic"
+                                   : "unsteady";
 }
 
 const std::vector<std::string>& field_names() {

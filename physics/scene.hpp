@@ -18,8 +18,8 @@ enum class StencilKind { five_point, nine_point };
 enum class FlowModel { potential, navier_stokes };
 /// How a navier-stokes case is run: "auto" (march in time; stop when steady or periodic), "steady"
 /// (Newton's method on the discrete steady equations), "unsteady" (march to time.end or converged
-/// periodic means).
-enum class TimeMode { automatic, steady, unsteady };
+/// periodic means), "periodic" (a short march, then the shedding orbit by Newton–GMRES shooting).
+enum class TimeMode { automatic, steady, unsteady, periodic };
 
 /// The physical scene: a cylinder of radius a spinning at ω in a freestream U. The solve is done in the wind
 /// frame (freestream towards +x'); the world frame is the wind frame turned CCW by the direction β.
@@ -182,7 +182,7 @@ const char* to_string(FarField);
 const char* to_string(Method);
 const char* to_string(StencilKind);
 const char* to_string(FlowModel);  ///< "potential" | "navier-stokes"
-const char* to_string(TimeMode);   ///< "auto" | "steady" | "unsteady"
+const char* to_string(TimeMode);   ///< "auto" | "steady" | "unsteady" | "periodic"
 
 /// The (n_r, n_θ) fields a result can hold (output.fields), in file order; psi_exact and psi_error are
 /// potential flow's, vorticity the navier-stokes model's.

@@ -51,6 +51,7 @@ FlowResult run_on_grid(const Case& c, const ViscousHooks& hooks, const Checkpoin
   const double unit = c.scene.time_unit();
 
   if (c.time.mode == TimeMode::steady) return steady_by_newton(c, p, g, resume);
+  if (c.time.mode == TimeMode::periodic) return periodic_by_shooting(c, p, g, unit, hooks, resume);
   AutoChoice choice;
   if (c.time.mode == TimeMode::automatic && hooks.march_at_once)
     choice.why = "auto: marched in time (asked to march at once); ";

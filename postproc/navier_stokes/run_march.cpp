@@ -13,13 +13,11 @@
 
 namespace magnus {
 
-namespace {
-
-/// A weak vortex (Γ = 0.1% of U·D) off the axis behind the body: it breaks the mirror symmetry of the
-/// start so that a flow that sheds starts shedding (round-off alone takes hundreds of D/U at α = 0).
 void break_symmetry(const NsParams& p, const PolarGrid& g, NsState& s) {
   if (p.U > 0.0) add_vortex_blob(g, s, 3.0 * p.a, 0.6 * p.a, 0.5 * p.a, 1e-3 * p.U * 2.0 * p.a);
 }
+
+namespace {
 
 /// The state the march starts from: the checkpoint's, or the impulsive start from rest with the symmetry
 /// broken. A checkpoint already past time.end has nothing left to march: refused, so that it is kept.

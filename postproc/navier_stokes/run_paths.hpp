@@ -38,4 +38,15 @@ AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g, boo
 FlowResult march(const Case& c, const NsParams& p, const PolarGrid& g, double unit, const ViscousHooks& hooks,
                  const Checkpoint* resume, const AutoChoice& choice);
 
+/// time.mode = "periodic": a short march from rest (broken symmetry), then the orbit by Newton–GMRES
+/// shooting (orbit.hpp), its period's summary as the result, the Newton history in the status. Throws
+/// std::invalid_argument with a checkpoint to resume or without a freestream; std::runtime_error when the
+/// flow does not shed.
+FlowResult periodic_by_shooting(const Case& c, const NsParams& p, const PolarGrid& g, double unit,
+                                const ViscousHooks& hooks, const Checkpoint* resume);
+
+/// A weak vortex (Γ = 0.1% of U·D) off the axis behind the body: it breaks the mirror symmetry of the
+/// start so that a flow that sheds starts shedding (round-off alone takes hundreds of D/U at α = 0).
+void break_symmetry(const NsParams& p, const PolarGrid& g, NsState& s);
+
 }  // namespace magnus

@@ -1,0 +1,137 @@
+// A shedding state as a periodic orbit: the short march, the shooting, the orbit's summary (orbit.hpp).
+#include "postproc/navier_stokes/orbit.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "postproc/navier_stokes/forces.hpp"
+
+namespace magnus {
+
+namespace {
+
+/// The short march's stop: its means to o.march_tol over o.march_periods periods, from t = 0 on.
+UnsteadyOptions short_march_options(const OrbitRunOptions& o) {
+  UnsteadyOptions m;
+  m.t_end = o.t_end;
+  m.rho = o.rho;
+  m.mean_tol = o.march_tol;
+  m.converged_periods = o.march_periods;
+  m.t_min = 0.0;
+  m.on_step = o.on_step;
+  return m;
+}
+
+/// Refuses a short march that leaves nothing to shoot from (one line, why).
+void check_short_march(const UnsteadyResult& m, double t_conv) {
+  if (!m.ok) throw std::runtime_error("the short march before the orbit failed: " + m.error);
+  if (m.interrupted) throw std::runtime_error("interrupted during the short march before the orbit");
+  if (m.steady)
+    throw std::runtime_error(fmt::format(
+        "the flow is steady by t = {:.4g} D/U: there is no periodic orbit to find (time.mode = \"periodic\" "
+        "needs a shedding flow; \"auto\" finds steady ones)",
+        m.state.t / t_conv));
+  if (!m.periodic || !(m.period > 0.0))
+    throw std::runtime_error(fmt::format(
+        "no shedding period in the lift by t = {:.4g} D/U (time.end): no start for the periodic orbit; "
+        "a later time.end, or time.mode = \"auto\"",
+        m.state.t / t_conv));
+}
+
+/// The trapezoidal mean of samples y over their span (uniform in time).
+double trapezoid_mean(const std::vector<double>& y) {
+  if (y.size() < 2) return y.empty() ? 0.0 : y[0];
+  double s = 0.5 * (y.front() + y.back());
+  for (size_t k = 1; k + 1 < y.size(); ++k) s += y[k];
+  return s / double(y.size() - 1);
+}
+
+}  // namespace
+
+void periodic_extremes(const std::vector<double>& y, double& lo, double& hi) {
+  const size_t n = y.size();
+  lo = hi = n ? y[0] : 0.0;
+  if (n < 3) {
+    for (double v : y) lo = std::min(lo, v), hi = std::max(hi, v);
+    return;
+  }
+  const size_t kmax = size_t(std::max_element(y.begin(), y.end()) - y.begin());
+  const size_t kmin = size_t(std::min_element(y.begin(), y.end()) - y.begin());
+  auto vertex = [&](size_t k) {
+    const double a = y[(k + n - 1) % n], b = y[k], c = y[(k + 1) % n];
+    const double curv = a - 2.0 * b + c;
+    return curv != 0.0 ? b - (c - a) * (c - a) / (8.0 * curv) : b;
+  };
+  hi = std::max(y[kmax], vertex(kmax));
+  lo = std::min(y[kmin], vertex(kmin));
+}
+
+UnsteadyResult orbit_summary(const NsParams& p, const OrbitResult& orbit, double rho) {
+  UnsteadyResult r;
+  const PolarGrid g = ns_grid(p);
+  const NsOperator op(p, orbit.T / orbit.steps);
+  auto sample = [&](const NsState& s) { r.history.push_back(force_sample(s.t, viscous_forces(g, p, rho, s))); };
+  NsState at0 = orbit.state;
+  at0.t = 0.0;
+  sample(at0);
+  r.state = period_map(op, at0, orbit.steps, sample);
+  std::vector<double> L, Dc, M, Cm;
+  for (const ForceSample& s : r.history) L.push_back(s.C_L), Dc.push_back(s.C_D), M.push_back(s.M), Cm.push_back(s.C_M);
+  r.C_L_mean = trapezoid_mean(L), r.C_D_mean = trapezoid_mean(Dc), r.C_M_mean = trapezoid_mean(Cm);
+  r.M_mean = trapezoid_mean(M);
+  L.pop_back(), Dc.pop_back();  // one period: the last sample is the first again
+  double lo, hi;
+  periodic_extremes(L, lo, hi);
+  r.C_L_amplitude = 0.5 * (hi - lo);
+  periodic_extremes(Dc, lo, hi);
+  r.C_D_amplitude = 0.5 * (hi - lo);
+  r.has_coefficients = p.U > 0.0;
+  r.reference_speed = p.U > 0.0 ? p.U : std::fabs(p.a * p.omega);
+  r.period = orbit.T;
+  r.St = p.U > 0.0 ? 2.0 * p.a / (p.U * orbit.T) : 0.0;
+  r.periodic = true;
+  r.converged = orbit.converged;
+  r.dt = op.dt();
+  r.steps = orbit.steps;
+  return r;
+}
+
+std::string orbit_history_text(const OrbitResult& orbit, double time_unit) {
+  std::string s = "Newton residual";
+  for (const OrbitIterate& it : orbit.history) {
+    s += fmt::format("{} {:.2e}", it.newton ? " →" : "", it.residual);
+    if (it.newton == 0) continue;
+    s += fmt::format(" (GMRES {}{})", it.krylov, it.damping < 1.0 ? fmt::format(", step {:g}", it.damping) : "");
+  }
+  return s + fmt::format("; T = {:.6g} D/U, N = {} steps a period, {} Newton iterations, {} GMRES products",
+                         orbit.T / time_unit, orbit.steps, orbit.history.empty() ? 0 : orbit.history.back().newton,
+                         orbit.krylov_total);
+}
+
+OrbitRun periodic_orbit_run(const NsParams& p, const OrbitRunOptions& o, NsState start) {
+  const auto clock0 = std::chrono::steady_clock::now();
+  const double t_conv = 2.0 * p.a / (p.U > 0.0 ? p.U : std::fabs(p.a * p.omega));
+  OrbitRun run;
+  run.march = run_unsteady(p, short_march_options(o), std::move(start));
+  const UnsteadyResult& m = run.march;
+  check_short_march(m, t_conv);
+  OrbitOptions oo = o.orbit;
+  if (oo.steps <= 0) oo.steps = int(std::ceil(m.period / m.dt));
+  run.orbit = solve_periodic_orbit(p, m.state, m.period, oo);
+  run.result = orbit_summary(p, run.orbit, o.rho);
+  run.result.steps = m.steps + run.orbit.time_steps + run.orbit.steps;
+  run.result.times = m.times;
+  run.result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock0).count();
+  run.result.steps_per_second =
+      run.result.wall_seconds > 0.0 ? double(run.result.steps) / run.result.wall_seconds : 0.0;
+  run.result.message = fmt::format("periodic orbit {}after a march to t = {:.4g} D/U ({} steps): {}",
+                                   run.orbit.converged ? "" : "NOT converged ", m.state.t / t_conv, m.steps,
+                                   orbit_history_text(run.orbit, t_conv));
+  return run;
+}
+
+}  // namespace magnus

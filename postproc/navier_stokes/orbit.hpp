@@ -1,0 +1,52 @@
+#pragma once
+// A shedding state as a periodic orbit (solver/navier_stokes/periodic_orbit.hpp) instead of a long march:
+// a short march from the start until the lift's first periods look alike, its period from the lift's mean
+// crossings, then Newton–GMRES shooting on the period map, and the orbit's summary (means, amplitudes, St)
+// from one period of its forces, in the march's terms (UnsteadyResult).
+#include <functional>
+#include <string>
+
+#include "postproc/navier_stokes/unsteady.hpp"
+#include "solver/navier_stokes/periodic_orbit.hpp"
+
+namespace magnus {
+
+/// How long the short march runs and how the orbit is sought.
+struct OrbitRunOptions {
+  double t_end = 200.0;       ///< the short march gives up here, s (no shedding by then: an error)
+  double rho = 1.0;           ///< density for the forces, kg/m³
+  double march_tol = 1e-2;    ///< the short march stops when converged_periods + 1 periods agree to this
+  int march_periods = 2;      ///< …over this many consecutive periods
+  OrbitOptions orbit;         ///< tolerance, iterations (orbit.steps 0: N = ⌈T/Δt_march⌉)
+  /// After every step of the short march (a progress line, Ctrl-C: false stops it); may be empty.
+  std::function<bool(const NsState&, const ViscousForces&)> on_step;
+};
+
+/// The short march, the orbit, and the orbit's summary in the march's terms.
+struct OrbitRun {
+  UnsteadyResult march;   ///< the short march from the start
+  OrbitResult orbit;      ///< the Newton–GMRES solve
+  /// One period of the orbit: state = the orbit's state at t = 0; history: its N + 1 samples over [0, T];
+  /// means over the period (the trapezoidal rule, exact for the periodic samples), amplitudes (max − min)/2
+  /// with each extreme refined by the parabola through its sample and the two beside it; period = T,
+  /// St = D/(U T); steps and wall_seconds of the whole (march + orbit + this period); converged = the orbit's.
+  UnsteadyResult result;
+};
+
+/// Short march from `start`, then the orbit (p: the run's parameters; p.dt is ignored by the orbit, whose
+/// Δt is T/N). Throws std::runtime_error with one line when the march fails, does not shed (steady, or no
+/// period by t_end) or is interrupted; a Newton solve that stalls returns with result.converged = false.
+OrbitRun periodic_orbit_run(const NsParams& p, const OrbitRunOptions& o, NsState start);
+
+/// The summary of one period of a converged orbit in the march's terms (OrbitRun::result without the steps
+/// and seconds of the march and the solve).
+UnsteadyResult orbit_summary(const NsParams& p, const OrbitResult& orbit, double rho);
+
+/// Extremes of periodic samples y (uniform in time): max and min, each refined by the parabola through it
+/// and its two neighbours (cyclic), in y's units.
+void periodic_extremes(const std::vector<double>& y, double& lo, double& hi);
+
+/// The Newton history in one line: "residual 3.1e-03 → 4.2e-06 (GMRES 21) → …; T = … D/U, N = …".
+std::string orbit_history_text(const OrbitResult& orbit, double time_unit);
+
+}  // namespace magnus

@@ -1,0 +1,104 @@
+// Shedding states as periodic orbits (Newton–GMRES shooting on the period map) against long marches on the
+// same grid and Δt: the orbit's mean C_L, mean C_D, C_L amplitude and St agree with the march's to 1e-4,
+// and the Newton residual falls to 1e-9. R = 30a runs in seconds (default); R = 100a, whose march converges
+// slowly, under the ctest label "orbit".
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "postproc/navier_stokes/forces.hpp"
+#include "postproc/navier_stokes/orbit.hpp"
+#include "postproc/navier_stokes/periodic.hpp"
+
+using namespace magnus;
+
+namespace {
+
+/// Re, α past the cylinder of a = 0.5 m in U = 1 m/s (D/U = 1 s) on n_θ points, R = outer·a.
+NsParams shedding_flow(double Re, double alpha, int n_theta, double outer) {
+  NsParams p;
+  p.a = 0.5, p.U = 1.0, p.nu = 1.0 / Re, p.omega = alpha * p.U / p.a;
+  p.n_theta = n_theta, p.outer_over_a = outer, p.threads = 1;
+  return p;
+}
+
+/// Impulsive start with the mirror symmetry broken by a weak vortex behind the body.
+NsState broken_start(const NsParams& p) {
+  const PolarGrid g = ns_grid(p);
+  NsState s = impulsive_start(p, g);
+  add_vortex_blob(g, s, 3.0 * p.a, 0.6 * p.a, 0.5 * p.a, 1e-3 * p.U * 2.0 * p.a);
+  return s;
+}
+
+double rel(double a, double b) { return std::fabs(a - b) / std::max(std::fabs(b), 1e-300); }
+
+/// The orbit of p by shooting from a short march against a march on from the short march's state with the
+/// orbit's Δt = T/N (the same discrete map; run_unsteady would clamp this Δt to its start's CFL floor) to
+/// t_long, its forces every step: means, C_L amplitude (extremes refined alike) and St agree to 1e-4, and
+/// the Newton residual falls quadratically-ish to 1e-9.
+void check_orbit_against_march(const NsParams& p, double t_long) {
+  OrbitRunOptions o;
+  o.t_end = 300.0;
+  o.orbit.tol = 1e-9;
+  const OrbitRun run = periodic_orbit_run(p, o, broken_start(p));
+  const OrbitResult& orb = run.orbit;
+  WARN(run.result.message);
+  REQUIRE(orb.converged);
+  CHECK(orb.residual <= 1e-9);
+  REQUIRE(orb.history.size() >= 2);
+  // Quadratic-ish: once below 1e-3, each residual is below 10·(the previous one)^1.5.
+  for (size_t k = 1; k < orb.history.size(); ++k)
+    if (orb.history[k - 1].residual < 1e-3)
+      CHECK(orb.history[k].residual < 10.0 * std::pow(orb.history[k - 1].residual, 1.5));
+
+  const PolarGrid g = ns_grid(p);
+  const NsOperator op(p, orb.T / orb.steps);
+  std::vector<ForceSample> h;
+  NsState s = run.march.state, next;
+  while (s.t < t_long) {
+    advance(op, s, next);
+    std::swap(s, next);
+    h.push_back(force_sample(s.t, viscous_forces(g, p, 1.0, s)));
+  }
+  const std::vector<PeriodWindow> w = lift_periods(h, 1);
+  REQUIRE(w.size() == 1);
+  std::vector<double> L;
+  for (const ForceSample& x : h)
+    if (x.t >= w[0].t0 && x.t <= w[0].t1) L.push_back(x.C_L);
+  double lo, hi;
+  periodic_extremes(L, lo, hi);
+  const UnsteadyResult& r = run.result;
+  WARN("orbit: C_L " << r.C_L_mean << " C_D " << r.C_D_mean << " amp " << r.C_L_amplitude << " St " << r.St
+                     << "; march: C_L " << w[0].C_L << " C_D " << w[0].C_D << " amp " << 0.5 * (hi - lo)
+                     << " St " << 1.0 / w[0].length());
+  CHECK(std::fabs(r.C_L_mean - w[0].C_L) < 1e-4 * std::max(1.0, std::fabs(w[0].C_L)));
+  CHECK(rel(r.C_D_mean, w[0].C_D) < 1e-4);
+  CHECK(rel(r.C_L_amplitude, 0.5 * (hi - lo)) < 1e-4);
+  CHECK(rel(r.St, 1.0 / w[0].length()) < 1e-4);
+}
+
+}  // namespace
+
+TEST_CASE("orbit: extremes of a sampled sinusoid refined by parabolas give its amplitude", "[periodic_orbit]") {
+  std::vector<double> y;
+  const int N = 64;
+  for (int k = 0; k < N; ++k) y.push_back(0.3 + 1.7 * std::sin(2.0 * M_PI * (k + 0.37) / N));
+  double lo, hi;
+  periodic_extremes(y, lo, hi);
+  CHECK(std::fabs(0.5 * (hi - lo) - 1.7) < 1e-4 * 1.7);
+  CHECK(std::fabs(0.5 * (hi + lo) - 0.3) < 1e-4);
+}
+
+TEST_CASE("orbit: Re 100, alpha 1, n_theta 64, R 30a: the orbit by shooting is the long march's periodic state",
+          "[periodic_orbit]") {
+  check_orbit_against_march(shedding_flow(100.0, 1.0, 64, 30.0), 400.0);
+}
+
+TEST_CASE("orbit: Re 100, alpha 1, n_theta 64, R 100a: the orbit by shooting is the long march's periodic state",
+          "[orbit]") {
+  check_orbit_against_march(shedding_flow(100.0, 1.0, 64, 100.0), 1500.0);
+}
+
+TEST_CASE("orbit: Re 60, alpha 0, n_theta 64, R 100a: the orbit by shooting is the long march's periodic state",
+          "[orbit]") {
+  check_orbit_against_march(shedding_flow(60.0, 0.0, 64, 100.0), 1500.0);
+}
