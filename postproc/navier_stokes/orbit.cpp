@@ -9,21 +9,47 @@
 #include <stdexcept>
 
 #include "postproc/navier_stokes/forces.hpp"
+#include "postproc/navier_stokes/periodic.hpp"
 
 namespace magnus {
 
 namespace {
 
-/// The short march's stop: its means to o.march_tol over o.march_periods periods, from t = 0 on.
-UnsteadyOptions short_march_options(const OrbitRunOptions& o) {
+/// Whether the last `periods` + 1 whole periods of C_L in h agree with the last one in amplitude and length
+/// to tol (relative): the growth near the onset has ended (the means alone agree while it grows).
+bool lift_settled(const std::vector<ForceSample>& h, int periods, double tol) {
+  const std::vector<PeriodWindow> w = lift_periods(h, size_t(periods) + 1);
+  if (w.size() < size_t(periods) + 1) return false;
+  for (const PeriodWindow& x : w)
+    if (std::fabs(x.amp_L - w.back().amp_L) > tol * w.back().amp_L ||
+        std::fabs(x.length() - w.back().length()) > tol * w.back().length())
+      return false;
+  return true;
+}
+
+/// The short march: from `start` until, after t_min, the lift's periods have settled (lift_settled, checked
+/// every 50 steps), or it is steady, or t_end. settled: set when it stopped for that.
+UnsteadyResult short_march(const NsParams& p, const OrbitRunOptions& o, NsState start, bool& settled) {
+  const PolarGrid g = ns_grid(p);
+  const double U_ref = p.U > 0.0 ? p.U : std::fabs(p.a * p.omega), t_conv = 2.0 * p.a / U_ref;
+  const double t_min = o.t_min >= 0.0 ? o.t_min : (g.outer_radius() - p.a) / U_ref + 10.0 * t_conv;
   UnsteadyOptions m;
   m.t_end = o.t_end;
   m.rho = o.rho;
-  m.mean_tol = o.march_tol;
-  m.converged_periods = o.march_periods;
-  m.t_min = 0.0;
-  m.on_step = o.on_step;
-  return m;
+  m.mean_tol = 1e-300;  // the lift's periods decide (below), not the means
+  m.t_min = t_min;
+  std::vector<ForceSample> h;
+  settled = false;
+  m.on_step = [&](const NsState& s, const ViscousForces& f) {
+    if (o.on_step && !o.on_step(s, f)) return false;
+    h.push_back(force_sample(s.t, f));
+    if (s.t < t_min || h.size() % 50 != 0) return true;
+    settled = lift_settled(h, o.march_periods, o.march_tol);
+    return !settled;
+  };
+  UnsteadyResult r = run_unsteady(p, m, std::move(start));
+  if (settled) r.interrupted = false, r.message = "the lift's periods settled";
+  return r;
 }
 
 /// Refuses a short march that leaves nothing to shoot from (one line, why).
@@ -40,6 +66,16 @@ void check_short_march(const UnsteadyResult& m, double t_conv) {
         "no shedding period in the lift by t = {:.4g} D/U (time.end): no start for the periodic orbit; "
         "a later time.end, or time.mode = \"auto\"",
         m.state.t / t_conv));
+}
+
+/// Refuses an orbit that is the steady state (a fixed point of every period map): its C_L amplitude below
+/// kOrbitMinAmplitude·max(1, |mean C_L|), when the short march caught a decaying wobble as a period.
+void check_sheds(const UnsteadyResult& r) {
+  if (r.C_L_amplitude >= kOrbitMinAmplitude * std::max(1.0, std::fabs(r.C_L_mean))) return;
+  throw std::runtime_error(fmt::format(
+      "the flow does not shed: the orbit shrank onto the steady state (C_L amplitude {:.2g}); time.mode = "
+      "\"periodic\" needs a shedding flow (\"auto\" or \"steady\" find steady ones)",
+      r.C_L_amplitude));
 }
 
 /// The trapezoidal mean of samples y over their span (uniform in time).
@@ -116,13 +152,15 @@ OrbitRun periodic_orbit_run(const NsParams& p, const OrbitRunOptions& o, NsState
   const auto clock0 = std::chrono::steady_clock::now();
   const double t_conv = 2.0 * p.a / (p.U > 0.0 ? p.U : std::fabs(p.a * p.omega));
   OrbitRun run;
-  run.march = run_unsteady(p, short_march_options(o), std::move(start));
+  bool settled = false;
+  run.march = short_march(p, o, std::move(start), settled);
   const UnsteadyResult& m = run.march;
   check_short_march(m, t_conv);
   OrbitOptions oo = o.orbit;
   if (oo.steps <= 0) oo.steps = int(std::ceil(m.period / m.dt));
   run.orbit = solve_periodic_orbit(p, m.state, m.period, oo);
   run.result = orbit_summary(p, run.orbit, o.rho);
+  check_sheds(run.result);
   run.result.steps = m.steps + run.orbit.time_steps + run.orbit.steps;
   run.result.times = m.times;
   run.result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock0).count();

@@ -15,8 +15,14 @@ namespace magnus {
 struct OrbitRunOptions {
   double t_end = 200.0;       ///< the short march gives up here, s (no shedding by then: an error)
   double rho = 1.0;           ///< density for the forces, kg/m³
-  double march_tol = 1e-2;    ///< the short march stops when converged_periods + 1 periods agree to this
-  int march_periods = 2;      ///< …over this many consecutive periods
+  /// The short march stops when the last march_periods + 1 periods of C_L agree with the last one in
+  /// amplitude and length to this (relative): near the onset the means agree long before the growth ends.
+  double march_tol = 1e-2;
+  int march_periods = 2;
+  /// The short march never stops before this time, s; < 0: when the starting vortex has left the domain,
+  /// (R − a)/U + 10 D/U (UnsteadyOptions::t_min): its circulation is far from the orbit and Newton's
+  /// linear model holds poorly while it is in the domain.
+  double t_min = -1.0;
   OrbitOptions orbit;         ///< tolerance, iterations (orbit.steps 0: N = ⌈T/Δt_march⌉)
   /// After every step of the short march (a progress line, Ctrl-C: false stops it); may be empty.
   std::function<bool(const NsState&, const ViscousForces&)> on_step;
@@ -33,9 +39,15 @@ struct OrbitRun {
   UnsteadyResult result;
 };
 
+/// The smallest C_L amplitude, relative to max(1, |mean C_L|), of an orbit that is taken for shedding
+/// (below it the orbit is the steady state; near the onset at Re ≈ 47 the amplitude grows as √(Re − Re_c)
+/// and is ~0.05 two units of Re above it).
+constexpr double kOrbitMinAmplitude = 1e-4;
+
 /// Short march from `start`, then the orbit (p: the run's parameters; p.dt is ignored by the orbit, whose
-/// Δt is T/N). Throws std::runtime_error with one line when the march fails, does not shed (steady, or no
-/// period by t_end) or is interrupted; a Newton solve that stalls returns with result.converged = false.
+/// Δt is T/N). Throws std::runtime_error with one line when the march fails, does not shed (steady, no
+/// period by t_end, or an orbit that is the steady state) or is interrupted; a Newton solve that stalls
+/// returns with result.converged = false.
 OrbitRun periodic_orbit_run(const NsParams& p, const OrbitRunOptions& o, NsState start);
 
 /// The summary of one period of a converged orbit in the march's terms (OrbitRun::result without the steps

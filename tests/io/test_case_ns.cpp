@@ -104,6 +104,7 @@ TEST_CASE("time keys and the snapshots: every value, and every range named", "[i
   CHECK(c.output.snapshot_interval == 0.5);
   CHECK(parse(ns_scene + "[time]\nmode = \"steady\"\n").time.mode == TimeMode::steady);
   CHECK(parse(ns_scene + "[time]\nmode = \"auto\"\n").time.mode == TimeMode::automatic);
+  CHECK(parse(ns_scene + "[time]\nmode = \"periodic\"\n").time.mode == TimeMode::periodic);
   CHECK(parse(ns_scene + "[output]\nsnapshots = 10000\n").output.snapshots == 10000);
   // The scene's grid comes with its scheme: Jensen's closure, fourth order in θ where the wake sheds
   // (ns_scene: Re 100, α 1); a stated grid: 2, Thom.
