@@ -132,7 +132,7 @@ TEST_CASE("time keys and the snapshots: every value, and every range named", "[i
 
   const std::vector<std::pair<std::string, std::string>> bad = {
       {"[time]\nmode = \"fast\"\n",
-       "test.toml: time.mode: \"fast\" is not one of \"auto\", \"steady\", \"unsteady\""},
+       "test.toml: time.mode: \"fast\" is not one of \"auto\", \"steady\", \"unsteady\", \"periodic\""},
       {"[time]\nend = 0\n", "test.toml: time.end: 0 is out of range: must be > 0 (D/U)"},
       {"[time]\nend = -3.0\n", "test.toml: time.end: -3 is out of range: must be > 0 (D/U)"},
       {"[time]\nend = inf\n", "test.toml: time.end: must be finite, got inf"},
