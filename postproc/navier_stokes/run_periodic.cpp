@@ -2,6 +2,7 @@
 // (postproc/navier_stokes/orbit.hpp), reported as a march's result.
 #include <stdexcept>
 
+#include "postproc/navier_stokes/forces.hpp"
 #include "postproc/navier_stokes/orbit.hpp"
 #include "postproc/navier_stokes/run_paths.hpp"
 
@@ -22,6 +23,10 @@ FlowResult periodic_by_shooting(const Case& c, const NsParams& p, const PolarGri
   o.t_end = c.time.end * unit;
   o.rho = c.scene.density;
   o.on_step = hooks.on_step;
+  if (hooks.on_step)  // the progress line and Ctrl-C once a period during the Newton solve
+    o.orbit.on_period = [&](const NsState& s) {
+      return hooks.on_step(s, viscous_forces(g, p, c.scene.density, s));
+    };
   OrbitRun run = periodic_orbit_run(p, o, std::move(start));
   FlowResult r = viscous_result(c, p, run.result, {});
   r.viscous->march_seconds = run.march.wall_seconds;

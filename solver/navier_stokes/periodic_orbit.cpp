@@ -40,6 +40,7 @@ struct Shooting {
   int N;
   size_t n;
   Scales c;
+  const std::function<bool(const NsState&)>& on_period;
   long steps = 0;
 
   /// The unknowns of a state: [ζ | ψ | N^{n−1} | Γ_R | dΓ_R/dt^{n−1}], scaled (an absent N^{n−1}: 0).
@@ -71,6 +72,8 @@ struct Shooting {
       at_first = false;
     });
     steps += N;
+    if (on_period && !on_period(end))
+      throw std::runtime_error("interrupted during the Newton solve of the periodic orbit: no result");
     return pack(end);
   }
   /// ‖y_ζ − x_ζ‖/‖x_ζ‖: the vorticity block's relative change over a period.
@@ -142,7 +145,7 @@ OrbitResult solve_periodic_orbit(const NsParams& p, const NsState& start, double
   if (!(T0 > 0.0) || !std::isfinite(T0)) throw std::invalid_argument("solve_periodic_orbit: needs a period > 0");
   if (start.zeta.size() != n || start.psi.size() != n)
     throw std::invalid_argument("solve_periodic_orbit: the state does not match the grid");
-  Shooting sh{p, o.steps, n, scales_of(p)};
+  Shooting sh{p, o.steps, n, scales_of(p), o.on_period};
   OrbitResult res;
   res.steps = o.steps;
   std::vector<double> x = sh.pack(start), x_old, first;

@@ -25,8 +25,8 @@ struct OrbitIterate {
   int newton = 0;              ///< iteration (0: the start)
   double residual = 0.0;       ///< ‖Φ_T(x)_ζ − x_ζ‖/‖x_ζ‖ of the vorticity (what ψ, N follow from), 1
   double T = 0.0;              ///< period, s
-  int krylov = 0;              ///< GMRES products of this iteration's solve (0 on the last)
-  double krylov_residual = 0;  ///< GMRES's relative residual of the bordered system
+  int krylov = 0;              ///< GMRES products of the solve that led here (0 at the start)
+  double krylov_residual = 0;  ///< that solve's relative residual of the bordered system, 1
   double damping = 1.0;        ///< the fraction of the Newton step taken to reach this iterate
 };
 
@@ -39,6 +39,9 @@ struct OrbitOptions {
   double forcing_max = 0.1;  ///< GMRES's relative tolerance: min(forcing_max, 10·residual), ≥ 1e-7
   /// After each iteration's residual is known (a progress line); may be empty.
   std::function<void(const OrbitIterate&)> on_iterate;
+  /// After each period of time steps (every GMRES product), with its last state; false stops the solve
+  /// (std::runtime_error: Ctrl-C). May be empty.
+  std::function<bool(const NsState&)> on_period;
 };
 
 /// What the orbit solve reached.
@@ -60,8 +63,8 @@ NsState period_map(const NsOperator& op, const NsState& s, int N,
 
 /// Newton–GMRES shooting from (start, T0) (start: a state near the orbit, e.g. from a short march, with its
 /// N^{n−1}; T0, s: the period of its lift). Throws std::invalid_argument for N ≤ 0, T0 ≤ 0 or a state of
-/// another grid; a time step that fails (CFL above the limit, non-finite fields) propagates as
-/// std::runtime_error. Does not throw when Newton stalls: converged = false, message.
+/// another grid; a time step that fails (CFL above the limit, non-finite fields) or on_period's stop
+/// propagates as std::runtime_error. Does not throw when Newton stalls: converged = false, message.
 OrbitResult solve_periodic_orbit(const NsParams& p, const NsState& start, double T0, const OrbitOptions& o);
 
 }  // namespace magnus
