@@ -186,4 +186,9 @@ OrbitResult solve_periodic_orbit(const NsParams& p, const NsState& start, double
   return res;
 }
 
+OrbitResult continue_orbit(const NsParams& p, const OrbitResult& near, OrbitOptions o) {
+  o.steps = near.steps;
+  return solve_periodic_orbit(p, near.state, near.T, o);
+}
+
 }  // namespace magnus

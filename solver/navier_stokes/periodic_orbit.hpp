@@ -67,4 +67,8 @@ NsState period_map(const NsOperator& op, const NsState& s, int N,
 /// propagates as std::runtime_error. Does not throw when Newton stalls: converged = false, message.
 OrbitResult solve_periodic_orbit(const NsParams& p, const NsState& start, double T0, const OrbitOptions& o);
 
+/// One step of natural continuation: the orbit of p (a neighbouring Re or α) from a converged orbit of
+/// other parameters on the same grid, its state and period the start, its N kept (o.steps ignored).
+OrbitResult continue_orbit(const NsParams& p, const OrbitResult& near, OrbitOptions o);
+
 }  // namespace magnus

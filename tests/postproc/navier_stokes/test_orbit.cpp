@@ -119,3 +119,23 @@ TEST_CASE("orbit: a flow that does not shed (Re 40) is refused in one line", "[p
     CHECK(m.find('\n') == std::string::npos);
   }
 }
+
+TEST_CASE("orbit: continued from alpha 1 to 1.2, the orbit is the one found from a march at 1.2",
+          "[periodic_orbit]") {
+  OrbitRunOptions o;
+  o.orbit.tol = 1e-9;
+  const NsParams p1 = shedding_flow(100.0, 1.0, 64, 30.0), p2 = shedding_flow(100.0, 1.2, 64, 30.0);
+  const OrbitRun at1 = periodic_orbit_run(p1, o, broken_start(p1));
+  REQUIRE(at1.orbit.converged);
+  const OrbitResult next = continue_orbit(p2, at1.orbit, o.orbit);
+  REQUIRE(next.converged);
+  CHECK(next.history.size() <= 7);  // 6 Newton iterations at most
+  o.orbit.steps = at1.orbit.steps;  // the same N: the same discrete map
+  const OrbitRun at2 = periodic_orbit_run(p2, o, broken_start(p2));
+  REQUIRE(at2.orbit.converged);
+  const UnsteadyResult a = orbit_summary(p2, next, 1.0), &b = at2.result;
+  WARN(orbit_history_text(next, 1.0) << "; C_L " << a.C_L_mean << " against " << b.C_L_mean);
+  CHECK(rel(a.C_L_mean, b.C_L_mean) < 1e-6);
+  CHECK(rel(a.C_D_mean, b.C_D_mean) < 1e-6);
+  CHECK(rel(next.T, at2.orbit.T) < 1e-6);
+}
