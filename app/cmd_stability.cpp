@@ -140,8 +140,9 @@ void critical_report(const NsParams& p, const CriticalRange& range, bool json, s
   ho.tol = range.tolerance;
   const HopfPoint h = hopf_point(p, range.which, range.A, range.B, ho, [&](const HopfEvaluation& e) {
     if (!json)
-      std::fprintf(stderr, "  %s = %-9.6g growth rate %+.6f U/D  (%s%s)\n", x, e.x, e.growth(),
-                   e.growth() < 0.0 ? "stable" : "unstable", e.tracked ? ", the pair tracked" : "");
+      std::fprintf(stderr, "  %s = %-9.6g growth rate %+.6f U/D, St %.4f  (%s%s)\n", x, e.x, e.growth(),
+                   e.mode.imag() / (2.0 * M_PI), e.growth() < 0.0 ? "stable" : "unstable",
+                   e.tracked ? ", the pair tracked" : "");
   });
   const double alpha = p.a * p.omega / p.U;
   text += fmt::format("critical {:<5} {:.4f} ± {:.1g}  ({}; bracket [{:.4f}, {:.4f}], {} steady states, {:.1f} s)\n",

@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -143,8 +144,22 @@ struct HopfBracket {
   double w_lo = 1.0, w_hi = 1.0;
   int kept = 0;  ///< −1: lo kept by the last step, +1: hi kept, 0: neither yet
   double root() const { return secant_root(lo, hi, w_lo, w_hi); }
-  /// The pair of the end where it grows, U/D.
-  std::complex<double> unstable_mode() const { return lo.growth() >= 0.0 ? lo.mode : hi.mode; }
+  /// The unstable side's pairs (x, λ) in the order solved: the mode whose crossing is wanted.
+  std::vector<std::pair<double, std::complex<double>>> lineage;
+  /// The wanted pair predicted at x, U/D: extrapolated along a line through the two unstable-side points
+  /// nearest x (the stable side's nearest pair may be another, damped mode), or the one there is.
+  std::complex<double> predict(double x) const {
+    auto near = lineage;
+    std::sort(near.begin(), near.end(),
+              [x](const auto& a, const auto& b) { return std::fabs(a.first - x) < std::fabs(b.first - x); });
+    if (near.size() < 2 || near[0].first == near[1].first) return near.front().second;
+    const auto &a = near[0], &b = near[1];
+    return a.second + (a.second - b.second) * ((x - a.first) / (a.first - b.first));
+  }
+  /// Adds e to the lineage when it grows.
+  void note(const HopfEvaluation& e) {
+    if (e.growth() >= 0.0) lineage.emplace_back(e.x, e.mode);
+  }
   /// The pair at x by linear interpolation between the ends, U/D.
   std::complex<double> pair_at(double x) const { return lo.mode + (hi.mode - lo.mode) * ((x - lo.x) / (hi.x - lo.x)); }
   /// m replaces the end of its sign; the end kept twice in a row has its growth rate halved (Illinois).
@@ -180,6 +195,7 @@ HopfBracket hopf_ends(const NsParams& p, HopfParameter which, double A, double B
     track(p, which, k.lo, k.hi.mode, o);  // the stable end's eigenvalues at the mode that turns unstable
   if (!a_unstable) keep(k.lo);
   keep(k.hi);
+  k.note(k.lo), k.note(k.hi);
   if ((k.lo.growth() < 0.0) == (k.hi.growth() < 0.0))
     throw std::invalid_argument(fmt::format(
         "onset of shedding over {} {:g}:{:g}: the leading growth rate does not change sign (Re λ·D/U = {:.4g} "
@@ -213,28 +229,50 @@ HopfPoint hopf_point(const NsParams& p, HopfParameter which, double A, double B,
   };
   HopfBracket k = hopf_ends(p, which, A, B, o, keep, guess);
   h.at_a = without_state(k.lo), h.at_b = without_state(k.hi);
-  double root = k.root();
-  h.change = k.hi.x - k.lo.x;
-  while (k.hi.x - k.lo.x > o.tol && h.change > 0.5 * o.tol && int(h.evaluations.size()) < o.max_evaluations) {
-    const HopfEvaluation& from = std::fabs(root - k.lo.x) <= std::fabs(root - k.hi.x) ? k.lo : k.hi;
-    // The pair is tracked from the unstable end's: the one whose crossing is wanted (the stable end's
-    // nearest pair may be another, damped mode).
-    HopfEvaluation m = hopf_evaluation(p, which, root, &from, k.unstable_mode(), o);
-    keep(m);
-    k.replace(std::move(m));
-    const double next = k.root();
-    h.change = std::fabs(next - root);
-    root = next;
-  }
-  // A crossing the secant can trust: the growth rate falls to a small fraction of the ends' across the
-  // final bracket. A jump instead (a fold of the steady branch, states from either end on two branches,
-  // or the tracked pair changing) is no Hopf point.
+  HopfEvaluation far = k.lo.growth() < 0.0 ? k.lo : k.hi;  // the stable end asked for, with its state
   const double slope = std::fabs(h.at_b.growth() - h.at_a.growth()) / (h.at_b.x - h.at_a.x);
-  if (std::fabs(k.hi.growth() - k.lo.growth()) > 10.0 * slope * (k.hi.x - k.lo.x) + 1e-9)
-    throw std::runtime_error(fmt::format(
-        "onset of shedding: the growth rate jumps from {:+.4g} at {} = {:g} to {:+.4g} at {:g} (U/D) instead of "
-        "crossing zero: a fold of the steady branch or a change of the tracked mode, not a Hopf point",
-        k.lo.growth(), name, k.lo.x, k.hi.growth(), k.hi.x));
+  double root = k.root();
+  for (int repairs = 0;; ++repairs) {
+    h.change = k.hi.x - k.lo.x;
+    while (k.hi.x - k.lo.x > o.tol && h.change > 0.5 * o.tol && int(h.evaluations.size()) < o.max_evaluations) {
+      const HopfEvaluation& from = std::fabs(root - k.lo.x) <= std::fabs(root - k.hi.x) ? k.lo : k.hi;
+      // The pair is tracked as predicted from the unstable side's (the stable side's nearest pair may be
+      // another, damped mode).
+      HopfEvaluation m = hopf_evaluation(p, which, root, &from, k.predict(root), o);
+      keep(m);
+      k.note(m);
+      k.replace(std::move(m));
+      const double next = k.root();
+      h.change = std::fabs(next - root);
+      root = next;
+    }
+    // A crossing the secant can trust: across the final bracket the growth rate changes no faster than
+    // ten times its mean slope over [A, B]. A jump instead is the stable end's pair being another mode
+    // (tracked from a poor prediction: it is tracked again, at most twice), or a fold of the steady branch.
+    if (std::fabs(k.hi.growth() - k.lo.growth()) <= 10.0 * slope * (k.hi.x - k.lo.x) + 1e-9) break;
+    if (repairs == 2)
+      throw std::runtime_error(fmt::format(
+          "onset of shedding: the growth rate jumps from {:+.4g} at {} = {:g} to {:+.4g} at {:g} (U/D) instead of "
+          "crossing zero: a fold of the steady branch or a change of the tracked mode, not a Hopf point",
+          k.lo.growth(), name, k.lo.x, k.hi.growth(), k.hi.x));
+    HopfEvaluation& stable = k.lo.growth() < 0.0 ? k.lo : k.hi;
+    track(p, which, stable, k.predict(stable.x), o);
+    keep(stable);
+    if (stable.growth() >= 0.0) {  // the wanted pair still grows there: bracket it with the far end again
+      k.note(stable);
+      track(p, which, far, k.predict(far.x), o);
+      keep(far);
+      if (far.growth() >= 0.0)
+        throw std::invalid_argument(fmt::format("onset of shedding: the wake's pair still grows at {} = {:g} "
+                                                "(Re λ·D/U = {:.4g}): widen or move the bracket",
+                                                name, far.x, far.growth()));
+      HopfEvaluation grows = std::move(stable);  // the nearer end on the unstable side, far the other
+      (far.x > grows.x ? k.lo : k.hi) = std::move(grows);
+      (far.x > k.lo.x ? k.hi : k.lo) = far;
+    }
+    k.w_lo = k.w_hi = 1.0, k.kept = 0;
+    root = k.root();
+  }
   h.x_c = root, h.lo = k.lo.x, h.hi = k.hi.x;
   if (h.lo > h.hi) std::swap(h.lo, h.hi);
   h.lambda = k.pair_at(root);
