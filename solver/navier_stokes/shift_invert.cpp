@@ -1,15 +1,10 @@
 #include "solver/navier_stokes/shift_invert.hpp"
 
-#include <umfpack.h>
-
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
-#include <string>
 
-#include "solver/navier_stokes/arakawa.hpp"
-#include "solver/navier_stokes/lu.hpp"
+#include "solver/navier_stokes/shifted_lu.hpp"
 
 namespace magnus {
 
@@ -17,113 +12,6 @@ namespace {
 
 using cplx = std::complex<double>;
 using cvec = std::vector<cplx>;
-
-double norm(const cvec& v) {
-  double s = 0.0;
-  for (const cplx& z : v) s += std::norm(z);
-  return std::sqrt(s);
-}
-
-/// J − σM in UMFPACK's split complex form, factored; solves (J − σM) y = b.
-class ShiftedLu {
- public:
-  ShiftedLu(const SteadyJacobian& jac, const std::vector<double>& m, cplx sigma, void** symbolic) {
-    // J's pattern with a diagonal entry in every column that M touches (the Γ_R column has none in J).
-    const long n = jac.size();
-    const std::vector<long>&Jp = jac.col_ptr(), &Ji = jac.row_index();
-    const std::vector<double>& Jx = jac.values();
-    Ap_.assign(size_t(n) + 1, 0);
-    for (long c = 0; c < n; ++c) {
-      bool diag = false;
-      for (long t = Jp[size_t(c)]; t < Jp[size_t(c) + 1]; ++t) {
-        const long r = Ji[size_t(t)];
-        if (!diag && m[size_t(c)] != 0.0 && r >= c) {
-          if (r > c) Ai_.push_back(c), Ax_.push_back(0.0), Az_.push_back(0.0);
-          diag = true;
-        }
-        Ai_.push_back(r), Ax_.push_back(Jx[size_t(t)]), Az_.push_back(0.0);
-      }
-      if (!diag && m[size_t(c)] != 0.0) Ai_.push_back(c), Ax_.push_back(0.0), Az_.push_back(0.0);
-      Ap_[size_t(c) + 1] = long(Ai_.size());
-      if (m[size_t(c)] == 0.0) continue;
-      for (long t = Ap_[size_t(c)]; t < Ap_[size_t(c) + 1]; ++t)
-        if (Ai_[size_t(t)] == c) {
-          Ax_[size_t(t)] -= sigma.real() * m[size_t(c)];
-          Az_[size_t(t)] -= sigma.imag() * m[size_t(c)];
-        }
-    }
-    double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
-    umfpack_zl_defaults(control);
-    // The grid's nested-dissection order, as for the real Jacobian (J − σM has J's pattern).
-    if (!*symbolic) {
-      const long st = symbolic_in_grid_order(
-          n,
-          grid_order(jac.grid().n_r, jac.grid().n_theta, false, advection_reach(jac.params().advection_order),
-                     advection_reach(jac.params().advection_order_xi)),
-          [&](const double* ctl, const long* q) {
-            double inf[UMFPACK_INFO];
-            return q ? umfpack_zl_qsymbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), q, symbolic,
-                                            ctl, inf)
-                     : umfpack_zl_symbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), symbolic,
-                                           ctl, inf);
-          });
-      if (st != UMFPACK_OK) {
-        *symbolic = nullptr;
-        throw std::runtime_error("leading_eigenvalues: UMFPACK symbolic analysis failed (status " +
-                                 std::to_string(st) + ")");
-      }
-    }
-    const SingleThreadBlas one_thread;
-    const long st = umfpack_zl_numeric(Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), *symbolic, &numeric_,
-                                       control, info);
-    if (st != UMFPACK_OK) {
-      if (numeric_) umfpack_zl_free_numeric(&numeric_);
-      throw std::runtime_error("leading_eigenvalues: UMFPACK factorisation of J − σM failed (status " +
-                               std::to_string(st) +
-                               (st == UMFPACK_WARNING_singular_matrix ? ": singular" : "") + ")");
-    }
-  }
-  ~ShiftedLu() {
-    if (numeric_) umfpack_zl_free_numeric(&numeric_);
-  }
-  ShiftedLu(const ShiftedLu&) = delete;
-  ShiftedLu& operator=(const ShiftedLu&) = delete;
-
-  /// y = (J − σM)⁻¹ b.
-  cvec solve(const cvec& b) const {
-    const size_t n = b.size();
-    std::vector<double> bx(n), bz(n), yx(n), yz(n);
-    for (size_t q = 0; q < n; ++q) bx[q] = b[q].real(), bz[q] = b[q].imag();
-    double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
-    umfpack_zl_defaults(control);
-    // No iterative refinement: Arnoldi needs (J − σM)⁻¹ only to the accuracy its residual test checks, and
-    // refinement cost two more solves (and a residual) for each of the few hundred solves per state.
-    control[UMFPACK_IRSTEP] = 0;
-    const long st = umfpack_zl_solve(UMFPACK_A, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), yx.data(),
-                                     yz.data(), bx.data(), bz.data(), numeric_, control, info);
-    if (st != UMFPACK_OK)
-      throw std::runtime_error("leading_eigenvalues: UMFPACK solve failed (status " + std::to_string(st) +
-                               ")");
-    cvec y(n);
-    for (size_t q = 0; q < n; ++q) y[q] = {yx[q], yz[q]};
-    return y;
-  }
-
- private:
-  std::vector<long> Ap_, Ai_;
-  std::vector<double> Ax_, Az_;
-  void* numeric_ = nullptr;
-};
-
-/// J x with the real matrix applied to the real and imaginary parts.
-cvec apply_j(const SteadyJacobian& jac, const cvec& x) {
-  std::vector<double> re(x.size()), im(x.size());
-  for (size_t q = 0; q < x.size(); ++q) re[q] = x[q].real(), im[q] = x[q].imag();
-  const std::vector<double> jr = jac.multiply(re), ji = jac.multiply(im);
-  cvec y(x.size());
-  for (size_t q = 0; q < x.size(); ++q) y[q] = {jr[q], ji[q]};
-  return y;
-}
 
 /// Swaps the adjacent diagonal entries i, i+1 of the upper-triangular T (T ← GᴴTG, Q ← QG with G a plane
 /// rotation whose first column is T's eigenvector for T(i+1, i+1)): the Schur form stays a Schur form.
@@ -158,17 +46,6 @@ Eigen::VectorXcd triangular_eigenvector(const Eigen::MatrixXcd& T, int r) {
     y(i) = -T.block(i, i + 1, 1, r - i).transpose().cwiseProduct(y.segment(i + 1, r - i)).sum() / d;
   }
   return y / y.norm();
-}
-
-/// ‖Jx − λMx‖/(‖Jx‖ + |λ|‖Mx‖): the relative residual of an eigenpair of J x = λ M x.
-double relative_residual(const SteadyJacobian& jac, const std::vector<double>& m, cplx lambda, const cvec& x) {
-  const cvec jx = apply_j(jac, x);
-  double r2 = 0.0, mx = 0.0;
-  for (size_t q = 0; q < x.size(); ++q) {
-    r2 += std::norm(jx[q] - lambda * m[q] * x[q]);
-    mx += std::norm(m[q] * x[q]);
-  }
-  return std::sqrt(r2) / (norm(jx) + std::abs(lambda) * std::sqrt(mx));
 }
 
 /// Orders the Schur form T = QᴴHQ so that its diagonal (the Ritz values μ) falls in |μ| from the largest.
@@ -238,7 +115,7 @@ ShiftSearch shift_invert_arnoldi(const SteadyJacobian& jac, const std::vector<do
   Krylov K;
   K.V.resize(Eigen::Index(n), k_max + 1);
   K.H = Eigen::MatrixXcd::Zero(k_max + 1, k_max);
-  const double s0 = norm(start);
+  const double s0 = Eigen::Map<const Eigen::VectorXcd>(start.data(), Eigen::Index(n)).norm();
   if (!(s0 > 0.0)) return out;
   for (size_t q = 0; q < n; ++q) K.V(Eigen::Index(q), 0) = start[q] / s0;
   for (;; ++out.restarts) {
@@ -248,25 +125,16 @@ ShiftSearch shift_invert_arnoldi(const SteadyJacobian& jac, const std::vector<do
     Eigen::ComplexSchur<Eigen::MatrixXcd> cs(K.H.topLeftCorner(k, k));
     Eigen::MatrixXcd T = cs.matrixT(), Q = cs.matrixU();
     sort_schur(T, Q);
-    // Test the nearest Ritz pairs on J itself, nearest first: everything nearer σ than the first that fails
-    // is accepted (the disk of `radius`); farther ones that pass are kept too.
-    out.found.clear();
-    out.radius = 0.0;
-    bool unbroken = true;
-    int nearest_ok = 0;
-    const int tests = std::min(k, 2 * want + 4);
-    for (int r = 0; r < tests; ++r) {
-      const cplx mu = T(r, r);
-      if (std::abs(mu) == 0.0) break;
-      const Eigen::VectorXcd xv = K.V.leftCols(k) * (Q.leftCols(r + 1) * triangular_eigenvector(T, r));
-      cvec x(xv.data(), xv.data() + xv.size());
-      const cplx lambda = sigma + 1.0 / mu;
-      const double rel = relative_residual(jac, m, lambda, x);
-      unbroken = unbroken && rel <= tol;
-      if (unbroken) out.radius = 1.0 / std::abs(mu), ++nearest_ok;
-      if (rel <= tol) out.found.push_back({lambda, std::move(x), rel});
-    }
-    out.converged = nearest_ok >= want;
+    // Test the nearest Ritz pairs on J itself, nearest first (the disk of `radius`; farther ones that pass
+    // are kept too).
+    std::vector<RitzValue> ritz;
+    for (int r = 0; r < std::min(k, 2 * want + 4); ++r)
+      ritz.push_back({T(r, r), [&, r] {
+                        const Eigen::VectorXcd xv =
+                            K.V.leftCols(k) * (Q.leftCols(r + 1) * triangular_eigenvector(T, r));
+                        return cvec(xv.data(), xv.data() + xv.size());
+                      }});
+    accept_ritz_values(jac, m, ritz, want, tol, out);
     if (out.converged || !full || out.restarts >= max_restarts) break;
     // Krylov–Schur restart: keep the `keep` nearest Schur vectors, A·(V Q_p) = (V Q_p)·T_p + v_k·(h_k Q_p).
     const Eigen::MatrixXcd Vp = K.V.leftCols(k) * Q.leftCols(keep);
