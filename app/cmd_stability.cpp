@@ -1,4 +1,5 @@
-// magnus stability CASE [--set k=v]… [--critical-spin A:B | --critical-reynolds A:B] [--tolerance T] [--json]
+// magnus stability CASE [--set k=v]… [--critical-spin A:B | --critical-reynolds A:B] [--tolerance T]
+//                  [--eigensolver NAME] [--json]
 // The steady state's leading eigenvalues (growth rate, St; stable or not), or the onset of shedding: the
 // critical spin ratio or Reynolds number where the wake's pair crosses the axis.
 #include <fmt/core.h>
@@ -29,6 +30,7 @@ namespace {
 
 struct StabilityCliOptions {
   std::string case_path, critical, critical_re, tolerance, curve_re, curve_alpha;
+  std::string eigensolver = StabilityOptions{}.eigensolver;
   std::vector<std::string> sets;
   bool json = false;
 };
@@ -133,11 +135,13 @@ std::string search_text(const StabilityResult& s) {
 }
 
 /// The onset of shedding over the range: the crossing, its bracket and the pair at each end asked for.
-void critical_report(const NsParams& p, const CriticalRange& range, bool json, std::string& text, Json& j) {
+void critical_report(const NsParams& p, const CriticalRange& range, const std::string& eigensolver, bool json,
+                     std::string& text, Json& j) {
   const bool spin = range.which == HopfParameter::spin_ratio;
   const char* x = spin ? "α" : "Re";
   HopfOptions ho;
   ho.tol = range.tolerance;
+  ho.full.eigensolver = eigensolver;
   const HopfPoint h = hopf_point(p, range.which, range.A, range.B, ho, [&](const HopfEvaluation& e) {
     if (!json)
       std::fprintf(stderr, "  %s = %-9.6g growth rate %+.6f U/D, St %.4f  (%s%s)\n", x, e.x, e.growth(),
@@ -170,11 +174,13 @@ void critical_report(const NsParams& p, const CriticalRange& range, bool json, s
 }
 
 /// The onset curve: one line per value of the other parameter, the crossing or why none was found.
-void curve_report(const NsParams& p, const CriticalRange& range, bool json, std::string& text, Json& j) {
+void curve_report(const NsParams& p, const CriticalRange& range, const std::string& eigensolver, bool json,
+                  std::string& text, Json& j) {
   const bool spin = range.which == HopfParameter::spin_ratio;
   const char *x = spin ? "α_L" : "Re_c", *other = spin ? "Re" : "α";
   HopfOptions ho;
   ho.tol = range.tolerance;
+  ho.full.eigensolver = eigensolver;
   text += fmt::format("onset curve    {}({}): where the wake's pair crosses the axis (shedding {} above it)\n", x, other,
                       spin ? "stops" : "starts");
   text += fmt::format("{:>8}  {:>9}  {:>8}  {:>8}  {:>7}  {:>8}\n", other, x, "±", "St", "points", "time s");
@@ -210,6 +216,9 @@ void command_stability(const StabilityCliOptions& o) {
                                 ": an onset curve needs --critical-spin A:B (with --reynolds) or --critical-reynolds A:B "
                                 "(with --spin-ratio)");
   const CriticalRange range = critical ? parse_critical(o) : CriticalRange{};
+  if (!known_eigensolver(o.eigensolver))
+    throw std::invalid_argument(fmt::format("--eigensolver {}: unknown eigensolver (expected {})",
+                                            cut_input(o.eigensolver), eigensolver_names()));
   Case c = load_case(o.case_path, o.sets);
   retitle_for_overrides(c, o.case_path, o.sets);
   if (c.model != FlowModel::navier_stokes)
@@ -223,6 +232,8 @@ void command_stability(const StabilityCliOptions& o) {
   if (!critical) {
     HopfOptions honest;  // the converged search: every shift to convergence, shifts added for gaps
     honest.full = StabilityOptions{};
+    honest.full.eigensolver = o.eigensolver;
+    const StabilityOptions& so = honest.full;
     const HopfEvaluation s = hopf_evaluation(p, HopfParameter::spin_ratio, alpha, nullptr, std::nullopt, honest);
     if (!s.converged)
       throw std::runtime_error(fmt::format("{}: Newton's method found no steady state (Re {:.4g}, α {:g})",
@@ -230,8 +241,8 @@ void command_stability(const StabilityCliOptions& o) {
     const StabilityResult& st = s.stability;
     if (st.eigenvalues.empty()) throw std::runtime_error(o.case_path + ": " + st.message);
     text += fmt::format("steady state   Re {:.4g}, α {:g}: Newton {:.2f} s, eigenvalues {:.2f} s ({} shifted "
-                        "solves)\n",
-                        p.reynolds(), alpha, s.newton_seconds, st.seconds, st.solves);
+                        "solves, {})\n",
+                        p.reynolds(), alpha, s.newton_seconds, st.seconds, st.solves, so.eigensolver);
     text += "eigenvalues    λ·D/U (growth rate, frequency), rightmost first; residual ‖Jx − λMx‖/(‖Jx‖ + |λ|‖Mx‖)\n";
     for (size_t k = 0; k < st.eigenvalues.size(); ++k)
       text += "               " + eig_text(st.eigenvalues[k]) +
@@ -243,11 +254,12 @@ void command_stability(const StabilityCliOptions& o) {
                         st.eigenvalues.front().imag() != 0.0 ? fmt::format(", St {:.4f}", st.strouhal()) : "",
                         st.covered ? "" : "; not verified: see the coverage line");
     j = {{"reynolds", p.reynolds()}, {"spin_ratio", alpha}, {"stable", st.stable}, {"eigenvalues", eig_json(st)},
-         {"seconds", s.newton_seconds + st.seconds}, {"solves", st.solves}, {"search", search_json(st)}};
+         {"seconds", s.newton_seconds + st.seconds}, {"solves", st.solves}, {"eigensolver", so.eigensolver},
+         {"search", search_json(st)}};
   } else if (range.others.empty()) {
-    critical_report(p, range, o.json, text, j);
+    critical_report(p, range, o.eigensolver, o.json, text, j);
   } else {
-    curve_report(p, range, o.json, text, j);
+    curve_report(p, range, o.eigensolver, o.json, text, j);
   }
   if (o.json)
     std::fputs((json_text(j) + "\n").c_str(), stdout);
@@ -273,6 +285,9 @@ void add_stability_command(CLI::App& app) {
                   "with --critical-reynolds: the curve Re_c(α) over spin ratios A:B:STEP");
   cmd->add_option("--tolerance", o->tolerance,
                   "how closely the crossing is found: the secant root's last move, or the bracket (default 0.01)");
+  cmd->add_option("--eigensolver", o->eigensolver,
+                  "each shift's search: arnoldi (hand-written Krylov–Schur) or arpack (ARPACK-ng); default " +
+                      StabilityOptions{}.eigensolver);
   cmd->add_flag("--json", o->json, "print one JSON object instead of the table");
   cmd->callback([o] { command_stability(*o); });
 }

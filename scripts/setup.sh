@@ -7,7 +7,7 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${MAGNUS_BUILD_DIR:-$here/build}"
 
 packages=(build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev libopenblas0-pthread
-          libhdf5-dev hdf5-tools catch2 libfftw3-dev libtomlplusplus-dev libcli11-dev libfmt-dev
+          libhdf5-dev hdf5-tools catch2 libfftw3-dev libarpack2-dev libtomlplusplus-dev libcli11-dev libfmt-dev
           libplplot-dev plplot-driver-cairo libpng-dev libxml2-utils nlohmann-json3-dev
           pybind11-dev python3-dev python3-numpy python3-pytest python3-h5py python3-matplotlib)
 case "${1:-}" in

@@ -83,6 +83,7 @@ std::complex<double> nearest_pair(const StabilityResult& r, std::complex<double>
 void track(const NsParams& p, HopfParameter which, HopfEvaluation& e, std::complex<double> near,
            const HopfOptions& o) {
   StabilityOptions so;
+  so.eigensolver = o.full.eigensolver;
   so.shifts = {near};
   so.extra_shifts = 0;
   so.want = 2;

@@ -1,7 +1,7 @@
 #pragma once
 // Shift-invert Arnoldi for J x = λ M x at one complex shift σ (the operator (J − σM)⁻¹M, UMFPACK's complex
 // LU), restarted in Krylov–Schur form until the Ritz values nearest σ have converged: leading_eigenvalues
-// (ns_stability.hpp) runs it at each of its shifts.
+// (ns_stability.hpp) runs it at each of its shifts. shift_invert_arpack does the same search with ARPACK-ng.
 #include <complex>
 #include <random>
 #include <vector>
@@ -35,5 +35,14 @@ struct ShiftSearch {
 ShiftSearch shift_invert_arnoldi(const SteadyJacobian& jac, const std::vector<double>& m, std::complex<double> sigma,
                                  int want, int krylov, int max_restarts, double tol, void** symbolic,
                                  std::mt19937& rng);
+
+/// The same search by ARPACK-ng (znaupd/zneupd, mode 1 on OP = (J − σM)⁻¹M, which = "LM", implicit restarts
+/// with exact shifts): nev = 2·want + 4 Ritz values from ncv = max(krylov, 2·want + 10) vectors, at most
+/// max_restarts + 1 Arnoldi iterations, stopping when ARPACK's Ritz estimates are ≤ arpack_tol·|μ|. Its
+/// converged Ritz pairs then pass the same test on J (relative residual ≤ tol) as shift_invert_arnoldi's;
+/// the ones it did not converge end the disk. ARPACK is not reentrant: searches in other threads wait.
+ShiftSearch shift_invert_arpack(const SteadyJacobian& jac, const std::vector<double>& m, std::complex<double> sigma,
+                                int want, int krylov, int max_restarts, double tol, double arpack_tol,
+                                void** symbolic, std::mt19937& rng);
 
 }  // namespace magnus

@@ -131,6 +131,10 @@ std::string verdict_message(const StabilityResult& res) {
 
 }  // namespace
 
+std::string eigensolver_names() { return "arnoldi, arpack"; }
+
+bool known_eigensolver(const std::string& name) { return name == "arnoldi" || name == "arpack"; }
+
 double stability_speed(const NsParams& p) {
   return p.U > 0.0 ? p.U : std::fabs(p.a * p.omega) > 0.0 ? std::fabs(p.a * p.omega) : p.nu / p.a;
 }
@@ -154,6 +158,9 @@ StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, in
   const auto t0 = std::chrono::steady_clock::now();
   if (count < 1) throw std::invalid_argument("leading_eigenvalues: count must be ≥ 1");
   if (o.shifts.empty()) throw std::invalid_argument("leading_eigenvalues: no shifts");
+  if (!known_eigensolver(o.eigensolver))
+    throw std::invalid_argument("leading_eigenvalues: unknown eigensolver \"" + o.eigensolver + "\" (expected " +
+                                eigensolver_names() + ")");
   SteadyJacobian jac(p);
   const std::vector<double> x0 = jac.pack(steady);
   jac.factor(x0);  // assembles J at the state (its real LU is not used)
@@ -165,9 +172,13 @@ StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, in
   void* symbolic = nullptr;
   std::mt19937 rng(o.seed);
   std::vector<ShiftSearch> searches;
+  const bool arpack = o.eigensolver == "arpack";
   auto search = [&](cplx s_unit) {
-    searches.push_back(shift_invert_arnoldi(jac, m, s_unit * unit, o.want, std::max(o.krylov, count + 10),
-                                            o.restarts, o.tol, &symbolic, rng));
+    const int krylov = std::max(o.krylov, count + 10);
+    searches.push_back(arpack ? shift_invert_arpack(jac, m, s_unit * unit, o.want, krylov, o.restarts, o.tol,
+                                                    o.arpack_tol, &symbolic, rng)
+                              : shift_invert_arnoldi(jac, m, s_unit * unit, o.want, krylov, o.restarts, o.tol,
+                                                     &symbolic, rng));
     res.solves += searches.back().solves;
   };
   // The rightmost accepted eigenvalue so far, U/D (−∞ when none).
