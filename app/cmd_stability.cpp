@@ -134,6 +134,21 @@ std::string search_text(const StabilityResult& s) {
   return t;
 }
 
+/// Each point the search solved, in order: its value, the tracked pair's growth rate and frequency (U/D),
+/// whether it was tracked, and what it cost (Newton and eigenvalue seconds, shifted solves).
+Json points_json(const HopfPoint& h) {
+  Json a = Json::array();
+  for (const HopfEvaluation& e : h.evaluations)
+    a.push_back({{"value", e.x},
+                 {"growth_rate", e.growth()},
+                 {"frequency", e.mode.imag()},
+                 {"tracked", e.tracked},
+                 {"newton_seconds", e.newton_seconds},
+                 {"eigenvalue_seconds", e.stability.seconds},
+                 {"solves", e.stability.solves}});
+  return a;
+}
+
 /// The onset of shedding over the range: the crossing, its bracket and the pair at each end asked for.
 void critical_report(const NsParams& p, const CriticalRange& range, const std::string& eigensolver, bool json,
                      std::string& text, Json& j) {
@@ -168,6 +183,7 @@ void critical_report(const NsParams& p, const CriticalRange& range, const std::s
        {"onset_frequency", h.lambda.imag()},
        {"onset_strouhal", h.strouhal()},
        {"evaluations", h.evaluations.size()},
+       {"points", points_json(h)},
        {"at_a", {{"value", range.A}, {"stable", h.at_a.growth() < 0.0}, {"eigenvalues", eig_json(h.at_a.stability)}}},
        {"at_b", {{"value", range.B}, {"stable", h.at_b.growth() < 0.0}, {"eigenvalues", eig_json(h.at_b.stability)}}},
        {"seconds", h.seconds}};

@@ -209,6 +209,10 @@ TEST_CASE("magnus stability: the eigenvalues, the critical spin ratio, and refus
   CHECK(j["at_a"]["stable"] == false);  // sheds below the threshold
   CHECK(j["at_b"]["stable"] == true);   // steady above it
   CHECK(j["evaluations"].get<int>() < 8);  // bisection to 0.05 from a width of 0.5 took 6 points and 2 more ends
+  REQUIRE(j["points"].size() == j["evaluations"].get<size_t>());
+  CHECK(j["points"][0]["value"].get<double>() == 1.4);  // the ends first
+  CHECK(j["points"][1]["value"].get<double>() == 1.9);
+  for (const auto& pt : j["points"]) CHECK(pt["newton_seconds"].get<double>() >= 0.0);
 
   // The onset in Re at α = 0 on the same coarse grid, and the curve α_L(Re) over three Reynolds numbers.
   o = magnus_cmd({"stability", s_map, "--critical-reynolds", "40:60", "--tolerance", "0.1", "--json"}, dir);
