@@ -93,7 +93,7 @@ CriticalRange parse_critical(const StabilityCliOptions& o) {
 
 std::string eig_text(const std::complex<double>& l) {
   return fmt::format("{} {}i   St {}", figure(l.real(), "{:+.5f}"), figure(l.imag(), "{:+.5f}"),
-                     figure(std::fabs(l.imag()) / (2.0 * M_PI), "{:.4f}"));
+                     figure(eigen_strouhal(l), "{:.4f}"));
 }
 
 Json eig_json(const StabilityResult& s) {
@@ -102,7 +102,7 @@ Json eig_json(const StabilityResult& s) {
     const auto& l = s.eigenvalues[k];
     a.push_back({{"growth_rate", l.real()},
                  {"frequency", l.imag()},
-                 {"strouhal", std::fabs(l.imag()) / (2.0 * M_PI)},
+                 {"strouhal", eigen_strouhal(l)},
                  {"residual", k < s.residuals.size() ? Json(s.residuals[k]) : Json()}});
   }
   return a;
@@ -160,7 +160,7 @@ void critical_report(const NsParams& p, const CriticalRange& range, const std::s
   const HopfPoint h = hopf_point(p, range.which, range.A, range.B, ho, [&](const HopfEvaluation& e) {
     if (!json)
       std::fprintf(stderr, "  %s = %-9.6g growth rate %+.6f U/D, St %.4f  (%s%s)\n", x, e.x, e.growth(),
-                   e.mode.imag() / (2.0 * M_PI), e.growth() < 0.0 ? "stable" : "unstable",
+                   eigen_strouhal(e.mode), e.growth() < 0.0 ? "stable" : "unstable",
                    e.tracked ? ", the pair tracked" : "");
   });
   const double alpha = p.a * p.omega / p.U;

@@ -114,7 +114,7 @@ NsParams with_parameter(const NsParams& p, HopfParameter which, double x) {
   return q;
 }
 
-double HopfPoint::strouhal() const { return std::fabs(lambda.imag()) / (2.0 * M_PI); }
+double HopfPoint::strouhal() const { return eigen_strouhal(lambda); }
 
 HopfEvaluation hopf_evaluation(const NsParams& p, HopfParameter which, double x, const HopfEvaluation* from,
                                const std::optional<std::complex<double>>& near, const HopfOptions& o,

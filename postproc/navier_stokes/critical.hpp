@@ -64,13 +64,8 @@ struct HopfOptions {
   int max_evaluations = 24;
   int count = 6;       ///< eigenvalues kept per full search
   int track_krylov = 24;  ///< Arnoldi vectors of a tracking search (one shift at the predicted pair)
-  /// The full search at the ends: the default shifts with at most four restarts and no shifts added for
-  /// gaps (as `time.mode = "auto"` searches): the pair wanted leads at the unstable end.
-  StabilityOptions full = [] {
-    StabilityOptions s;
-    s.restarts = 4, s.extra_shifts = 0;
-    return s;
-  }();
+  /// The full search at the ends, auto's cheaper one: the pair wanted leads at the unstable end.
+  StabilityOptions full = quick_stability_options();
 };
 
 /// The steady state at parameter value x and its eigenvalues. The state: by continuation from `from` (a

@@ -199,11 +199,9 @@ AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g, boo
   }
   StabilityResult st;
   try {
-    // Cheaper than `magnus stability`: fewer restarts and no shifts added for gaps (the status says when
-    // the strip right of the leading eigenvalue was not covered).
-    StabilityOptions so;
-    so.restarts = 4, so.extra_shifts = 0;
-    st = leading_eigenvalues(p, nr.state, 4, so);
+    // Cheaper than `magnus stability` (the status says when the strip right of the leading eigenvalue was
+    // not covered).
+    st = leading_eigenvalues(p, nr.state, 4, quick_stability_options());
   } catch (const std::exception& e) {
     a.why = fmt::format("auto: marched in time (stability not computed: {}); ", e.what());
     return a;

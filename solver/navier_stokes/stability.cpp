@@ -146,7 +146,13 @@ std::optional<std::complex<double>> StabilityResult::leading_pair() const {
 }
 
 double StabilityResult::strouhal() const {
-  return eigenvalues.empty() ? 0.0 : std::fabs(eigenvalues.front().imag()) / (2.0 * M_PI);
+  return eigenvalues.empty() ? 0.0 : eigen_strouhal(eigenvalues.front());
+}
+
+StabilityOptions quick_stability_options() {
+  StabilityOptions o;
+  o.restarts = 4, o.extra_shifts = 0;
+  return o;
 }
 
 StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, int count) {

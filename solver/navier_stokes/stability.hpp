@@ -24,6 +24,7 @@
 // eigenvalue with a larger real part that none of the shifts found would have to lie outside every shift's
 // disk (the distance within which all its Ritz values were accepted): the strip from the leading eigenvalue
 // to the imaginary axis is checked to lie inside the disks (`covered`), and a gap gets a shift of its own. The wake's modes of higher frequency than the highest shift are damped.
+#include <cmath>
 #include <complex>
 #include <optional>
 #include <string>
@@ -106,6 +107,13 @@ struct StabilityResult {
   /// circulation on R relaxing through the outflow), which lead whenever the wake is stable.
   std::optional<std::complex<double>> leading_pair() const;
 };
+
+/// The Strouhal number of an eigenvalue λ in U/D: St = f·D/U = |Im λ|/(2π).
+inline double eigen_strouhal(std::complex<double> lambda) { return std::fabs(lambda.imag()) / (2.0 * M_PI); }
+
+/// The cheaper search of `time.mode = "auto"` and of the onset search's ends: the default shifts with at most
+/// four restarts each and no shifts added for gaps (the result's `covered` says when the strip was left open).
+StabilityOptions quick_stability_options();
 
 /// The leading eigenvalues at a steady state of p (a converged solve_steady state on ns_grid(p)). Throws
 /// std::invalid_argument for a state of the wrong size, std::runtime_error when a factorisation fails.

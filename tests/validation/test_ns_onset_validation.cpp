@@ -27,7 +27,7 @@ HopfPoint search(const NsParams& p, HopfParameter which, double A, double B, dou
   HopfOptions o;
   o.tol = tol;
   const HopfPoint h = hopf_point(p, which, A, B, o, [](const HopfEvaluation& e) {
-    std::printf("  %.5f growth %+.6f St %.4f%s\n", e.x, e.growth(), e.mode.imag() / (2.0 * M_PI),
+    std::printf("  %.5f growth %+.6f St %.4f%s\n", e.x, e.growth(), eigen_strouhal(e.mode),
                 e.tracked ? " (tracked)" : "");
     std::fflush(stdout);
   });

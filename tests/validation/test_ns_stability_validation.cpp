@@ -39,7 +39,7 @@ TEST_CASE("[validation][stability] Re 100: the critical spin ratio is 1.84 ± 0.
   HopfOptions o;
   o.tol = 0.002;
   const HopfPoint c = hopf_point(re100(), HopfParameter::spin_ratio, 1.6, 2.2, o, [](const HopfEvaluation& s) {
-    std::printf("  alpha %.5f growth %+.5f St %.4f%s\n", s.x, s.growth(), s.mode.imag() / (2.0 * M_PI),
+    std::printf("  alpha %.5f growth %+.5f St %.4f%s\n", s.x, s.growth(), eigen_strouhal(s.mode),
                 s.tracked ? " (tracked)" : "");
     std::fflush(stdout);
   });
