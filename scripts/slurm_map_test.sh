@@ -58,7 +58,10 @@ teardown() {
   local status=$? p i
   trap - ERR
   set +e
-  if [ ${#pids[@]} -gt 0 ] && kill -0 "${pids[1]:-0}" 2>/dev/null; then
+  # Only our own slurmctld, through our own SLURM_CONF: before it started, scancel would reach the
+  # machine's own Slurm (and "kill -0 0" always succeeds, so the pid alone is no guard).
+  if [ ${#pids[@]} -ge 2 ] && [ -n "${SLURM_CONF:-}" ] && [ "$SLURM_CONF" = "$tmp/slurm.conf" ] &&
+    kill -0 "${pids[1]}" 2>/dev/null; then
     scancel --quiet --user=root 2>/dev/null
     for i in $(seq 40); do [ -z "$(squeue -h -o %i 2>/dev/null)" ] && break; sleep 0.5; done
   fi
