@@ -58,14 +58,14 @@ GmresResult gmres(const std::function<void(const std::vector<double>&, std::vect
     apply(V[size_t(k)], w);
     std::vector<double> h(size_t(k) + 2, 0.0);
     orthogonalise(V, w, h);
-    h[size_t(k) + 1] = norm2(w);
+    const double wn = norm2(w);  // rotate() overwrites h[k + 1]: keep the norm for the next basis vector
+    h[size_t(k) + 1] = wn;
     cs.push_back(0.0), sn.push_back(0.0), g.push_back(0.0);
     rotate(h, cs, sn, k);
     g[size_t(k) + 1] = -sn[size_t(k)] * g[size_t(k)];
     g[size_t(k)] *= cs[size_t(k)];
     H.push_back(h);
     res.residual = std::fabs(g[size_t(k) + 1]) / beta;
-    const double wn = norm2(w);
     if (res.residual <= tol || !(wn > 1e-300)) {
       ++k;
       break;
