@@ -15,41 +15,18 @@ namespace magnus {
 
 namespace {
 
-/// Whether the last `periods` + 1 whole periods of C_L in h agree with the last one in amplitude and length
-/// to tol (relative): the growth near the onset has ended (the means alone agree while it grows).
-bool lift_settled(const std::vector<ForceSample>& h, int periods, double tol) {
-  const std::vector<PeriodWindow> w = lift_periods(h, size_t(periods) + 1);
-  if (w.size() < size_t(periods) + 1) return false;
-  for (const PeriodWindow& x : w)
-    if (std::fabs(x.amp_L - w.back().amp_L) > tol * w.back().amp_L ||
-        std::fabs(x.length() - w.back().length()) > tol * w.back().length())
-      return false;
-  return true;
-}
-
-/// The short march: from `start` until, after t_min, the lift's periods have settled (lift_settled, checked
-/// every 50 steps), or it is steady, or t_end. settled: set when it stopped for that.
-UnsteadyResult short_march(const NsParams& p, const OrbitRunOptions& o, NsState start, bool& settled) {
-  const PolarGrid g = ns_grid(p);
-  const double U_ref = p.U > 0.0 ? p.U : std::fabs(p.a * p.omega), t_conv = 2.0 * p.a / U_ref;
-  const double t_min = o.t_min >= 0.0 ? o.t_min : (g.outer_radius() - p.a) / U_ref + 10.0 * t_conv;
+/// The short march: from `start` until, after t_min, the lift's periods have settled (run_unsteady's
+/// settle_amplitudes), or it is steady, or t_end.
+UnsteadyResult short_march(const NsParams& p, const OrbitRunOptions& o, NsState start) {
   UnsteadyOptions m;
   m.t_end = o.t_end;
   m.rho = o.rho;
-  m.mean_tol = 1e-300;  // the lift's periods decide (below), not the means
-  m.t_min = t_min;
-  std::vector<ForceSample> h;
-  settled = false;
-  m.on_step = [&](const NsState& s, const ViscousForces& f) {
-    if (o.on_step && !o.on_step(s, f)) return false;
-    h.push_back(force_sample(s.t, f));
-    if (s.t < t_min || h.size() % 50 != 0) return true;
-    settled = lift_settled(h, o.march_periods, o.march_tol);
-    return !settled;
-  };
-  UnsteadyResult r = run_unsteady(p, m, std::move(start));
-  if (settled) r.interrupted = false, r.message = "the lift's periods settled";
-  return r;
+  m.t_min = o.t_min;
+  m.settle_amplitudes = true;
+  m.mean_tol = o.march_tol;
+  m.converged_periods = o.march_periods;
+  m.on_step = o.on_step;
+  return run_unsteady(p, m, std::move(start));
 }
 
 /// Refuses a short march that leaves nothing to shoot from (one line, why).
@@ -150,11 +127,10 @@ std::string orbit_history_text(const OrbitResult& orbit, double time_unit) {
 
 OrbitRun periodic_orbit_run(const NsParams& p, const OrbitRunOptions& o, NsState start) {
   const auto clock0 = std::chrono::steady_clock::now();
-  const double t_conv = 2.0 * p.a / (p.U > 0.0 ? p.U : std::fabs(p.a * p.omega));
   OrbitRun run;
-  bool settled = false;
-  run.march = short_march(p, o, std::move(start), settled);
+  run.march = short_march(p, o, std::move(start));
   const UnsteadyResult& m = run.march;
+  const double t_conv = 2.0 * p.a / m.reference_speed;  // D/U, s (run_unsteady's reference speed)
   check_short_march(m, t_conv);
   OrbitOptions oo = o.orbit;
   if (oo.steps <= 0) oo.steps = int(std::ceil(m.period / m.dt));

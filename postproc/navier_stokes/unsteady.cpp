@@ -176,10 +176,23 @@ bool forces_flat(const std::vector<ForceSample>& h, size_t first_fine, double t_
   return hi[0] - lo[0] < tol && hi[1] - lo[1] < tol && (freestream || hi[2] - lo[2] < tol);
 }
 
+/// Whether the last `periods` + 1 full-grid periods of C_L in h agree with the last one in amplitude and
+/// length to tol (relative): the growth near the onset has ended (the means alone agree while it grows).
+bool lift_settled(const std::vector<ForceSample>& h, size_t first_fine, int periods, double tol) {
+  const std::vector<PeriodWindow> w = lift_periods(h, size_t(periods) + 1, first_fine);
+  if (w.size() < size_t(periods) + 1) return false;
+  for (const PeriodWindow& x : w)
+    if (std::fabs(x.amp_L - w.back().amp_L) > tol * w.back().amp_L ||
+        std::fabs(x.length() - w.back().length()) > tol * w.back().length())
+      return false;
+  return true;
+}
+
 /// Periodic: the last converged_periods + 1 full-grid periods agree (means of C_L, C_D by means_agree and
 /// lengths to mean_tol, relatively) and the spectrum of the last periods peaks at the same frequency (a
-/// false period never stops it).
+/// false period never stops it); with settle_amplitudes, lift_settled instead.
 bool periods_agree(const std::vector<ForceSample>& h, size_t first_fine, const UnsteadyOptions& o) {
+  if (o.settle_amplitudes) return lift_settled(h, first_fine, o.converged_periods, o.mean_tol);
   // The last periods, enough for both tests (the means' agreement and the spectrum's).
   const size_t n_same = size_t(o.converged_periods) + 1;
   const std::vector<PeriodWindow> all = lift_periods(h, std::max<size_t>(8, n_same), first_fine);
@@ -195,12 +208,14 @@ bool periods_agree(const std::vector<ForceSample>& h, size_t first_fine, const U
 }
 
 /// Why a run may stop at time t (checked every 50 steps after earliest_stop): "steady" (forces_flat over
-/// the last steady_window), "periodic means converged" (periods_agree; with coefficients only), or "".
+/// the last steady_window), "periodic means converged" or "the lift's periods settled" (periods_agree; with
+/// coefficients only), or "".
 std::string stop_reason(const UnsteadyResult& res, size_t first_fine, double t, const UnsteadyOptions& o,
                         double q_ref, double D, double t_conv, bool freestream) {
   if (forces_flat(res.history, first_fine, t - o.steady_window * t_conv, q_ref, D, freestream, o.steady_tol))
     return "steady";
-  if (res.has_coefficients && periods_agree(res.history, first_fine, o)) return "periodic means converged";
+  if (res.has_coefficients && periods_agree(res.history, first_fine, o))
+    return o.settle_amplitudes ? "the lift's periods settled" : "periodic means converged";
   return "";
 }
 

@@ -17,6 +17,10 @@ struct UnsteadyOptions {
   double rho = 1.0;             ///< density for the forces, kg/m³
   double mean_tol = 1e-3;       ///< periodic: stop when the last periods' means of C_L, C_D differ < this·max(1, |C|)
   int converged_periods = 3;    ///< …over this many consecutive periods (and their lengths by < mean_tol)
+  /// Stop a shedding run instead when its last converged_periods + 1 lift periods agree with the last one
+  /// in amplitude and length to mean_tol (relatively): near the onset the means agree long before the
+  /// growth has ended (the short march before a periodic orbit).
+  bool settle_amplitudes = false;
   double steady_tol = 1e-5;     ///< steady: stop when C_L, C_D vary < this over steady_window
   double steady_window = 10.0;  ///< in convective times D/U
   /// Never stop before this time, s; < 0: (R − a)/U + 10·D/U, when the starting vortex (shed at the
