@@ -68,8 +68,8 @@ ShiftSearch shift_invert_arpack(const SteadyJacobian& jac, const std::vector<dou
   cvec start(nn), resid(nn);
   for (auto& z : start) z = {gauss(rng), gauss(rng)};
   op(start.data(), resid.data());  // in the range of the operator: no component along the infinite eigenvalues
-  const a_int ncv = std::min<a_int>(n, std::max(krylov, 2 * want + 10));
-  const a_int nev = std::min<a_int>(ncv - 2, 2 * want + 4);
+  const a_int ncv = std::min<a_int>(n, krylov_vectors(krylov, want));
+  const a_int nev = std::min<a_int>(ncv - 2, ritz_tested(want));
   ArpackWork w(n, ncv);
   w.iparam[0] = 1;                 // exact shifts
   w.iparam[2] = max_restarts;  // it stops after the (max_restarts + 1)th factorisation (iter > mxiter)

@@ -110,7 +110,7 @@ ShiftSearch shift_invert_arnoldi(const SteadyJacobian& jac, const std::vector<do
   cvec start(n);
   for (auto& z : start) z = {gauss(rng), gauss(rng)};
   start = op(start);  // in the range of the operator: no component along the infinite eigenvalues
-  const int k_max = std::max(krylov, 2 * want + 10);
+  const int k_max = krylov_vectors(krylov, want);
   const int keep = std::min(k_max - 10, want + k_max / 4);  // Ritz vectors kept at a restart
   Krylov K;
   K.V.resize(Eigen::Index(n), k_max + 1);
@@ -128,7 +128,7 @@ ShiftSearch shift_invert_arnoldi(const SteadyJacobian& jac, const std::vector<do
     // Test the nearest Ritz pairs on J itself, nearest first (the disk of `radius`; farther ones that pass
     // are kept too).
     std::vector<RitzValue> ritz;
-    for (int r = 0; r < std::min(k, 2 * want + 4); ++r)
+    for (int r = 0; r < std::min(k, ritz_tested(want)); ++r)
       ritz.push_back({T(r, r), [&, r] {
                         const Eigen::VectorXcd xv =
                             K.V.leftCols(k) * (Q.leftCols(r + 1) * triangular_eigenvector(T, r));

@@ -41,6 +41,11 @@ struct RitzValue {
   std::function<std::vector<std::complex<double>>()> vector;
 };
 
+/// Ritz values a shift's search tests on J (nev): 2·want + 4, the `want` nearest σ and a margin beyond.
+inline int ritz_tested(int want) { return 2 * want + 4; }
+/// Arnoldi vectors a shift's search keeps (ncv): at least 2·want + 10, room for ritz_tested and restarts.
+inline int krylov_vectors(int krylov, int want) { return krylov > 2 * want + 10 ? krylov : 2 * want + 10; }
+
 /// Tests the Ritz values (sorted by |μ| from the largest: nearest σ first) on J itself, λ = σ + 1/μ:
 /// each with relative residual ≤ tol goes into out.found; every one nearer σ than the first that fails is
 /// accepted, and out.radius = 1/|μ| of the farthest of those (1/s); out.converged when that holds for at
