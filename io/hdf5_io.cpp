@@ -95,6 +95,11 @@ void H5Writer::attr(id obj, const char* name, const char* v) { attr(obj, name, s
 void H5Writer::attr(id obj, const char* name, const std::optional<double>& v) {
   if (v) attr(obj, name, *v);
 }
+void H5Writer::described(id obj, const std::string& description) {
+  if (description.empty()) return;
+  attr(obj, "description", description);
+  attr(obj, "long_name", description);
+}
 void H5Writer::attr_with_units(id obj, const char* name, double v, const std::string& units) {
   attr(obj, name, v);
   attr(obj, (std::string(name) + "_units").c_str(), units);
@@ -139,7 +144,7 @@ void write_dataset(H5Writer& w, H5Writer::id parent, const std::string& name,
   errno = 0;
   if (count > 0) check(H5Dwrite(d, mem, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "cannot write dataset " + name);
   w.attr(d, "units", units);
-  if (!description.empty()) w.attr(d, "description", description);
+  w.described(d, description);
 }
 
 }  // namespace
@@ -193,7 +198,7 @@ void H5Writer::view(id parent, const std::string& name, const std::vector<size_t
            H5Dclose);
   if (d < 0) check(-1, "cannot create the view " + name);
   attr(d, "units", units);
-  if (!description.empty()) attr(d, "description", description);
+  described(d, description);
 }
 
 void H5Writer::make_scale(const std::string& scale_path, const std::string& name) {

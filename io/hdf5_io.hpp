@@ -45,6 +45,9 @@ class H5Writer {
   void view(id parent, const std::string& name, const std::vector<size_t>& shape,
             const std::vector<ViewSource>& sources, const std::string& units,
             const std::string& description = "");
+  /// A dataset's one-line description, twice: `description` (magnus's own name) and `long_name` (the CF
+  /// conventions' name, which xarray and netCDF tools show); nothing when empty.
+  void described(id obj, const std::string& description);
   /// A numeric attribute with its unit in the companion attribute NAME_units (format version 2).
   void attr_with_units(id obj, const char* name, double v, const std::string& units);
   /// An already written object (dataset or group) by path, to add attributes; closed with the writer.

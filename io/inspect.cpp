@@ -17,7 +17,7 @@ namespace {
 
 /// Bookkeeping attributes: shown through what they describe, not as values.
 bool bookkeeping(const std::string& name) {
-  return name == "units" || name == "undefined" || name == "note" || name == "description" ||
+  return name == "units" || name == "undefined" || name == "note" || name == "description" || name == "long_name" ||
          (name.size() > 6 && name.compare(name.size() - 6, 6, "_units") == 0);
 }
 

@@ -20,7 +20,7 @@ using json_parts::point_json;
 namespace {
 
 bool bookkeeping(const std::string& name) {
-  return name == "units" || name == "undefined" || name == "note" || name == "description" ||
+  return name == "units" || name == "undefined" || name == "note" || name == "description" || name == "long_name" ||
          name == "_FillValue" || (name.size() > 6 && name.compare(name.size() - 6, 6, "_units") == 0);
 }
 
