@@ -38,22 +38,27 @@ py::dict attributes(const FlowResult& r, const std::string& group) {
   return d;
 }
 
-/// The units of a group's numeric attributes.
-py::dict attribute_units(const FlowResult& r, const std::string& group) {
+/// What is listed about a group's entries (attributes or datasets): their values, units or descriptions.
+enum class Listing { values, units, descriptions };
+
+/// The units (or one-line descriptions) of a group's numeric attributes.
+py::dict attribute_units(const FlowResult& r, const std::string& group, Listing what = Listing::units) {
   py::dict d;
   for (const AttrSpec& a : result_attributes())
-    if (group == a.group && applies(a.models, r) && a.kind != AttrKind::text) d[a.name] = a.units;
+    if (group == a.group && applies(a.models, r) && a.kind != AttrKind::text)
+      d[a.name] = what == Listing::units ? a.units : a.description;
   return d;
 }
 
-/// The datasets under `prefix` ("/surface/", "/history/", "/stagnation/") that apply to r and hold values.
-py::dict datasets(const Ptr& r, const std::string& prefix, bool units) {
+/// The datasets under `prefix` ("/surface/", "/history/", "/stagnation/") that apply to r and hold values
+/// (or the units or descriptions of all that apply).
+py::dict datasets(const Ptr& r, const std::string& prefix, Listing what) {
   py::dict d;
   for (const DatasetSpec& s : result_datasets()) {
     if (!starts_with(s.path, prefix) || !applies(s.models, *r)) continue;
     const std::string name = s.path.substr(prefix.size());
-    if (units) {
-      d[name.c_str()] = s.units;
+    if (what != Listing::values) {
+      d[name.c_str()] = what == Listing::units ? s.units : description_of(s, r->viscous.has_value());
       continue;
     }
     std::vector<double> v = s.values(*r);
@@ -77,10 +82,12 @@ py::dict fields(const Ptr& r) {
   return d;
 }
 
-py::dict field_units(const FlowResult& r) {
+/// The units (or descriptions) of the fields present.
+py::dict field_units(const FlowResult& r, Listing what = Listing::units) {
   py::dict d;
   for (const DatasetSpec* s : field_datasets())
-    if (applies(s->models, r) && !r.fields.get(s->path.substr(8)).empty()) d[s->path.substr(8).c_str()] = s->units;
+    if (applies(s->models, r) && !r.fields.get(s->path.substr(8)).empty())
+      d[s->path.substr(8).c_str()] = what == Listing::units ? s->units : description_of(*s, r.viscous.has_value());
   return d;
 }
 
@@ -116,18 +123,15 @@ py::object snapshots(const Ptr& r) {
   return d;
 }
 
-py::dict units(const Ptr& r) {
+/// The unit (or the one-line description) of every value, by group, as the result file stores them.
+py::dict units(const Ptr& r, Listing what) {
   py::dict d;
-  d["parameters"] = attribute_units(*r, "/parameters");
-  d["forces"] = attribute_units(*r, "/forces");
-  d["errors"] = attribute_units(*r, "/errors");
-  d["timing"] = attribute_units(*r, "/timing");
-  d["fields"] = field_units(*r);
-  d["grid"] = datasets(r, "/grid/", true);
-  d["surface"] = datasets(r, "/surface/", true);
-  d["stagnation"] = datasets(r, "/stagnation/", true);
-  if (r->viscous) d["history"] = datasets(r, "/history/", true);
-  if (r->viscous) d["snapshots"] = datasets(r, "/snapshots/", true);
+  for (const char* group : {"parameters", "forces", "errors", "timing"})
+    d[group] = attribute_units(*r, std::string("/") + group, what);
+  d["fields"] = field_units(*r, what);
+  for (const char* group : {"grid", "surface", "stagnation", "history", "snapshots"})
+    if (r->viscous || (group != std::string("history") && group != std::string("snapshots")))
+      d[group] = datasets(r, std::string("/") + group + "/", what);
   return d;
 }
 
@@ -162,16 +166,16 @@ void bind_result(py::module_& m) {
       .def_property_readonly(
           "grid", [](const PyResult& p) { return grid(p.r); }, "dict: r (n_r), theta (n_theta), x, y (n_r, n_theta)")
       .def_property_readonly(
-          "surface", [](const PyResult& p) { return datasets(p.r, "/surface/", false); },
+          "surface", [](const PyResult& p) { return datasets(p.r, "/surface/", Listing::values); },
           "dict of (n_theta) arrays on the body r = a: theta, u_theta, pressure, cp, …")
       .def_property_readonly(
-          "stagnation", [](const PyResult& p) { return datasets(p.r, "/stagnation/", false); },
+          "stagnation", [](const PyResult& p) { return datasets(p.r, "/stagnation/", Listing::values); },
           "dict: r, theta (numeric) and r_exact, theta_exact of the stagnation points")
       .def_property_readonly(
           "history",
           [](const PyResult& p) -> py::object {
             if (!p.r->viscous) return py::none();
-            return datasets(p.r, "/history/", false);
+            return datasets(p.r, "/history/", Listing::values);
           },
           "navier-stokes: dict of (n_steps) arrays t, t_convective, cl, cd, cm, lift, drag, torque; "
           "None for potential flow")
@@ -180,8 +184,11 @@ void bind_result(py::module_& m) {
           "navier-stokes: dict of the stored states (output.snapshots): t (N), psi and vorticity "
           "(N, n_r, n_theta); None for potential flow")
       .def_property_readonly(
-          "units", [](const PyResult& p) { return units(p.r); },
+          "units", [](const PyResult& p) { return units(p.r, Listing::units); },
           "dict of dicts: the unit of every value, by group (forces, parameters, fields, …)")
+      .def_property_readonly(
+          "descriptions", [](const PyResult& p) { return units(p.r, Listing::descriptions); },
+          "dict of dicts shaped like units: the one-line description of every value, as the file stores it")
       .def(
           "write",
           [](const PyResult& p, const py::object& where, int compression) {

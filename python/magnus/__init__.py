@@ -7,6 +7,7 @@
     s = magnus.sweep("cases/spin_ratio_1.toml", spin_ratio=numpy.linspace(0, 4, 1000))
     s["alpha"], s["cl"], s.units["cl"]
     magnus.read("magnus.h5").forces
+    ds = magnus.open("magnus.h5")                                   # an xarray.Dataset (also r.to_xarray())
 
 A case is a path to a TOML case file or a dict shaped like one ({"cylinder": {"radius": 0.1, ...}, ...}).
 Overrides are keyword arguments section__key=value (grid__n_theta=512) or set={"grid.n_theta": 512}.
@@ -19,12 +20,12 @@ import re
 
 import numpy as np
 
-from . import _magnus
+from . import _magnus, _xarray
 from ._magnus import Result
 
 __version__ = _magnus.__version__
 Result.__module__ = __name__
-__all__ = ["run", "sweep", "read", "Result", "Sweep", "case_toml"]
+__all__ = ["run", "sweep", "read", "open", "Result", "Sweep", "case_toml"]
 
 _MAX_THREADS = 64
 _MAX_SWEEP_POINTS = 100000  # as `magnus sweep`
@@ -143,14 +144,27 @@ def read(path):
     return _magnus._read(os.fspath(path))
 
 
+def open(path):  # noqa: A001 (magnus.open, as xarray.open_dataset: the name users look for)
+    """The xarray.Dataset of a file magnus wrote: a result (fields over (r, theta) with x, y as 2-D
+    coordinates; a navier-stokes force history over t), a sweep (over spin_ratio) or a map (over
+    (reynolds, spin_ratio)). Every variable carries units and long_name. Needs python3-xarray."""
+    return _xarray.open_dataset(path)
+
+
+Result.to_xarray = lambda self: _xarray.result_dataset(self)
+Result.to_xarray.__doc__ = "The result as an xarray.Dataset (as magnus.open gives for its file)."
+
+
 class Sweep(dict):
     """The columns of a sweep (name → 1-D array, one value per point), named as the sweep file's /sweep
     datasets. A column undefined at some points is a numpy masked array (masked there); a column undefined
     at every point is left out and named in .undefined. Attributes: units, descriptions (per column),
-    undefined, grid (n_r, n_theta, outer_radius), method, timing (s), case (the resolved TOML text)."""
+    undefined, grid (n_r, n_theta, outer_radius), method, timing (s), case (the resolved TOML text), variable
+    (the swept one: spin_ratio or circulation). to_xarray() gives it as an xarray.Dataset."""
 
-    def __init__(self, raw):
+    def __init__(self, raw, variable="spin_ratio"):
         super().__init__()
+        self.variable = variable  # the swept variable: "spin_ratio" or "circulation"
         self.units, self.descriptions, self.undefined = {}, {}, []
         for name, column in raw["columns"].items():
             finite = np.isfinite(column)
@@ -165,6 +179,10 @@ class Sweep(dict):
     def __repr__(self):
         n = len(next(iter(self.values()))) if self else 0
         return f"<magnus.Sweep {n} points: {', '.join(self)}>"
+
+    def to_xarray(self):
+        """The sweep as an xarray.Dataset over spin_ratio (or circulation): NaN where a column is undefined."""
+        return _xarray.sweep_dataset(self)
 
 
 def _sweep_values(values, name):
@@ -196,4 +214,4 @@ def sweep(case, /, spin_ratio=None, *, circulation=None, set=None, threads=1, **
     values = _sweep_values(spin_ratio if spin_ratio is not None else circulation, variable)
     source, is_path = _source(case)
     raw = _magnus._sweep(source, is_path, variable, values, _overrides(overrides, set), _threads(threads))
-    return Sweep(raw)
+    return Sweep(raw, variable)
