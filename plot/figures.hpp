@@ -55,6 +55,20 @@ ContourFieldPicture cp_picture(const FlowResult& r, const std::optional<PlotWind
 /// std::runtime_error when the result has no vorticity field.
 ContourFieldPicture vorticity_picture(const FlowResult& r, const std::optional<PlotWindow>& window = {});
 
+/// |ζ| (1/s) over the nodes of grid g inside window w (units of a), pooled over one or more fields of g:
+/// its 98th percentile (vorticity_picture's colour limit) and its peak.
+struct VorticityRange {
+  double limit = 0.0, peak = 0.0;
+};
+VorticityRange vorticity_range(const PolarGrid& g, const std::vector<const std::vector<double>*>& fields,
+                               const PlotWindow& w);
+
+/// vorticity_picture of a vorticity field zeta (1/s) on r's grid (e.g. a stored snapshot's), coloured over
+/// ±range.limit when a range is given (one range for several pictures), else over its own.
+ContourFieldPicture vorticity_field_picture(const FlowResult& r, const std::vector<double>& zeta,
+                                            const std::optional<PlotWindow>& window,
+                                            const std::optional<VorticityRange>& range);
+
 /// C_L(t) and C_D(t) of a navier-stokes result's force history against t in D/U, with their means (over
 /// the last period) and potential flow's C_L for the same scene. Throws std::runtime_error when the
 /// result has no history.

@@ -12,36 +12,48 @@ namespace magnus {
 
 using namespace figure_labels;
 
-ContourFieldPicture vorticity_picture(const FlowResult& r, const std::optional<PlotWindow>& window) {
+VorticityRange vorticity_range(const PolarGrid& g, const std::vector<const std::vector<double>*>& fields,
+                               const PlotWindow& w) {
+  std::vector<double> mags;
+  for (const std::vector<double>* zeta : fields)
+    for (int i = 0; i < g.n_r; ++i)
+      for (int j = 0; j < g.n_theta; ++j) {
+        const double x = g.r[i] / g.a * std::cos(g.theta[j]), y = g.r[i] / g.a * std::sin(g.theta[j]);
+        if (w.contains(x, y)) mags.push_back(std::fabs((*zeta)[size_t(i) * g.n_theta + j]));
+      }
+  std::sort(mags.begin(), mags.end());
+  VorticityRange v;
+  v.peak = mags.empty() ? 0.0 : mags.back();
+  v.limit = mags.empty() ? 0.0 : mags[std::min(mags.size() - 1, size_t(0.98 * double(mags.size())))];
+  if (!(v.limit > 0.0)) v.limit = v.peak;
+  return v;
+}
+
+ContourFieldPicture vorticity_field_picture(const FlowResult& r, const std::vector<double>& zeta,
+                                            const std::optional<PlotWindow>& window,
+                                            const std::optional<VorticityRange>& range) {
   const PolarGrid& g = r.grid;
-  if (r.fields.vorticity.empty()) throw std::runtime_error("plot: the result has no vorticity field");
-  if (r.fields.vorticity.size() != size_t(g.nodes()))
-    throw std::runtime_error("plot: the vorticity field does not match the grid");
+  if (zeta.empty()) throw std::runtime_error("plot: the result has no vorticity field");
+  if (zeta.size() != size_t(g.nodes())) throw std::runtime_error("plot: the vorticity field does not match the grid");
   ContourFieldPicture p;
   p.view = view_of(r, "vorticity", window);
-  p.field = polar(g, r.fields.vorticity);
+  p.field = polar(g, zeta);
   p.bar_label = "ζ (1/s)";
   p.zero_contour = false;
   p.diverging = true;
   // The wall's thin layer holds the largest |ζ|; colours over its peak would leave the wake white.
-  const PlotWindow& w = p.view.window;
-  std::vector<double> mags;
-  for (int i = 0; i < g.n_r; ++i)
-    for (int j = 0; j < g.n_theta; ++j) {
-      const double x = g.r[i] / g.a * std::cos(g.theta[j]), y = g.r[i] / g.a * std::sin(g.theta[j]);
-      if (w.contains(x, y))
-        mags.push_back(std::fabs(r.fields.vorticity[size_t(i) * g.n_theta + j]));
-    }
-  std::sort(mags.begin(), mags.end());
-  const double peak = mags.empty() ? 0.0 : mags.back();
-  p.limit = mags.empty() ? 0.0 : mags[std::min(mags.size() - 1, size_t(0.98 * double(mags.size())))];
-  if (!(p.limit > 0.0)) p.limit = peak;
-  p.footnote = p.limit < peak ? fmt::format(
-                                    "red: counter-clockwise (ζ > 0), blue: clockwise;  colours end at "
-                                    "±{} 1/s (|ζ| reaches {} 1/s at the wall)",
-                                    num(p.limit), num(peak))
-                              : std::string("red: counter-clockwise (ζ > 0), blue: clockwise");
+  const VorticityRange v = range ? *range : vorticity_range(g, {&zeta}, p.view.window);
+  p.limit = v.limit;
+  p.footnote = p.limit < v.peak ? fmt::format(
+                                      "red: counter-clockwise (ζ > 0), blue: clockwise;  colours end at "
+                                      "±{} 1/s (|ζ| reaches {} 1/s at the wall)",
+                                      num(p.limit), num(v.peak))
+                                : std::string("red: counter-clockwise (ζ > 0), blue: clockwise");
   return p;
+}
+
+ContourFieldPicture vorticity_picture(const FlowResult& r, const std::optional<PlotWindow>& window) {
+  return vorticity_field_picture(r, r.fields.vorticity, window, std::nullopt);
 }
 
 CurveFigure force_history_figure(const FlowResult& r) {
