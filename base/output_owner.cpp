@@ -74,6 +74,44 @@ bool png_by_magnus(const std::string& png) {
   return false;
 }
 
+/// The mark of a film: a GIF comment extension, or an MP4's last top-level box ("free", ignored by players).
+std::string film_mark() { return std::string("magnus ") + MAGNUS_VERSION; }
+
+/// Where a GIF's blocks begin: after the header, the logical screen descriptor and the global colour table
+/// (0 when the bytes are not a GIF).
+size_t gif_blocks(const std::string& gif) {
+  if (gif.size() < 13 || (gif.rfind("GIF89a", 0) != 0 && gif.rfind("GIF87a", 0) != 0)) return 0;
+  const unsigned packed = static_cast<unsigned char>(gif[10]);
+  const size_t at = 13 + (packed & 0x80 ? 3 * (size_t(2) << (packed & 7)) : 0);
+  return at <= gif.size() ? at : 0;
+}
+
+/// Whether the GIF bytes hold a comment extension starting with "magnus" before the first image.
+bool gif_by_magnus(const std::string& gif) {
+  size_t at = gif_blocks(gif);
+  if (at == 0) return false;
+  while (at + 2 < gif.size() && static_cast<unsigned char>(gif[at]) == 0x21) {
+    const bool comment = static_cast<unsigned char>(gif[at + 1]) == 0xFE;
+    at += 2;
+    if (comment && at + 7 <= gif.size() && gif.compare(at + 1, 6, "magnus") == 0) return true;
+    while (at < gif.size() && gif[at] != 0) at += 1 + static_cast<unsigned char>(gif[at]);  // sub-blocks
+    ++at;
+  }
+  return false;
+}
+
+/// Whether the file (an MP4: ftyp first) ends with the box "free" holding film_mark().
+bool mp4_by_magnus(const std::string& path) {
+  const std::string box = "free" + film_mark();
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  const std::streamoff size = in.tellg();
+  if (!in || size < std::streamoff(box.size() + 4)) return false;
+  std::string tail(box.size() + 4, '\0');
+  in.seekg(size - std::streamoff(tail.size()));
+  in.read(&tail[0], std::streamsize(tail.size()));
+  return bool(in) && be32(tail, 0) == tail.size() && tail.compare(4, box.size(), box) == 0;
+}
+
 }  // namespace
 
 std::string not_a_magnus_output(const std::string& target) {
@@ -88,11 +126,14 @@ std::string not_a_magnus_output(const std::string& target) {
     return g_hdf5_check && g_hdf5_check(target) ? "" : "an HDF5 file without a magnus format attribute";
   if (head.size() >= 8 && std::memcmp(head.data(), kPngSignature, 8) == 0)
     return png_by_magnus(head) ? "" : "a PNG image magnus did not write (no Software = magnus text chunk)";
+  if (gif_blocks(head) > 0) return gif_by_magnus(head) ? "" : "a GIF magnus did not write (no magnus comment)";
+  if (head.size() >= 8 && head.compare(4, 4, "ftyp") == 0)
+    return mp4_by_magnus(target) ? "" : "an MP4 magnus did not write (no magnus box at its end)";
   if (head.rfind(kXdmfPreamble, 0) == 0 && head.find(kXdmfMesh) != std::string::npos) return "";
   const std::string first_line = head.substr(0, head.find('\n'));
   for (const char* h : kMagnusCsvHeaders)
     if (first_line.rfind(h, 0) == 0) return "";
-  return "not a file magnus wrote (not a magnus HDF5, PNG, XDMF or CSV output)";
+  return "not a file magnus wrote (not a magnus HDF5, PNG, XDMF, CSV, GIF or MP4 output)";
 }
 
 void set_replace_any_file(bool yes) { g_replace_any = yes; }
@@ -122,7 +163,12 @@ std::string mark_png(const std::string& png) {
   return png.substr(0, after_ihdr) + chunk + png.substr(after_ihdr);
 }
 
-bool mark_png_file(const std::string& path) {
+namespace {
+
+/// Replaces the file at path, in place, by edit(its bytes); false if it cannot be read or written, or edit
+/// returns "" (nothing to write).
+template <class Edit>
+bool rewrite_file(const std::string& path, Edit edit) {
   std::string bytes;
   {
     std::ifstream in(path, std::ios::binary);
@@ -130,11 +176,28 @@ bool mark_png_file(const std::string& path) {
     bytes.assign((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (in.bad()) return false;
   }
-  const std::string marked = mark_png(bytes);
+  const std::string edited = edit(bytes);
+  if (edited.empty()) return false;
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out.write(marked.data(), std::streamsize(marked.size()));
+  out.write(edited.data(), std::streamsize(edited.size()));
   out.close();
   return bool(out);
+}
+
+}  // namespace
+
+bool mark_png_file(const std::string& path) { return rewrite_file(path, mark_png); }
+
+bool mark_film_file(const std::string& path) {
+  return rewrite_file(path, [](const std::string& bytes) {
+    const std::string mark = film_mark();
+    if (const size_t at = gif_blocks(bytes); at > 0)  // a comment extension: 0x21 0xFE, one sub-block, 0
+      return bytes.substr(0, at) + "\x21\xFE" + char(mark.size()) + mark + '\0' + bytes.substr(at);
+    if (bytes.size() < 8 || bytes.compare(4, 4, "ftyp") != 0) return std::string();
+    std::string marked = bytes;  // an MP4: a last top-level box "free"
+    put_be32(marked, uint32_t(8 + mark.size()));
+    return marked + "free" + mark;
+  });
 }
 
 }  // namespace magnus

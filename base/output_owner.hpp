@@ -6,7 +6,9 @@
 //   - HDF5 whose root attribute `format` starts with "magnus-" (results, sweeps, checkpoints),
 //   - PNG with a tEXt chunk Software = "magnus …" (every PNG magnus writes carries one),
 //   - XDMF beginning with magnus's preamble and reading its mesh from /mesh/points of an HDF5 file,
-//   - CSV whose first line begins with the header of one of magnus's CSV tables (kMagnusCsvHeaders).
+//   - CSV whose first line begins with the header of one of magnus's CSV tables (kMagnusCsvHeaders),
+//   - GIF with a comment extension "magnus …" before its first image, MP4 ending in a box "free" holding
+//     "magnus VERSION" (the films of `magnus plot --movie`; mark_film_file).
 // Anything else is refused unless replacing it was asked for (--force).
 #include <string>
 
@@ -35,5 +37,10 @@ std::string mark_png(const std::string& png);
 
 /// mark_png applied to the file at path, in place; false if it cannot be read or written.
 bool mark_png_file(const std::string& path);
+
+/// Marks the film at path (GIF or MP4) as magnus's, in place: a GIF gets the comment extension "magnus
+/// VERSION" after its global colour table, an MP4 a last top-level box "free" holding it (players skip both).
+/// False if it is neither or cannot be read or written.
+bool mark_film_file(const std::string& path);
 
 }  // namespace magnus

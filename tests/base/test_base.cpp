@@ -100,3 +100,34 @@ TEST_CASE("output owner: empty files and magnus's marked PNGs may be replaced, o
   CHECK(mark_png("not a png") == "not a png");
   fs::remove_all(dir);
 }
+
+TEST_CASE("output owner: a film magnus marked (GIF comment, MP4 last box) may be replaced, others not", "[base]") {
+  const std::string dir = scratch("owner-film");
+  // A GIF: header, a 1×1 screen with a 2-colour global table, one image, the trailer.
+  const std::string gif = std::string("GIF89a\x01\x00\x01\x00\x80\x00\x00", 13) + std::string("\0\0\0\xff\xff\xff", 6) +
+                          std::string("\x2c\0\0\0\0\x01\0\x01\0\0\x02\x02\x44\x01\0\x3b", 16);
+  // An MP4's first box (ftyp), then a box of media data.
+  const std::string mp4 = std::string("\0\0\0\x10" "ftypisom\0\0\x02\0", 16) + std::string("\0\0\0\x0c" "mdat\1\2\3\4", 12);
+  for (const auto& [name, bytes] : {std::pair<std::string, std::string>{"a.gif", gif}, {"a.mp4", mp4}}) {
+    const std::string path = dir + "/" + name;
+    std::ofstream(path, std::ios::binary) << bytes;
+    CAPTURE(name);
+    CHECK_FALSE(not_a_magnus_output(path).empty());
+    REQUIRE(mark_film_file(path));
+    CHECK(not_a_magnus_output(path).empty());
+    std::ifstream in(path, std::ios::binary);
+    const std::string marked((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    CHECK(marked.size() > bytes.size());
+    CHECK(marked.compare(0, 6, bytes, 0, 6) == 0);  // still a GIF, still an MP4 (its ftyp first)
+  }
+  // A GIF with someone else's comment, an MP4 whose last box is not magnus's, and plain text: not films.
+  std::string other = gif;
+  other.insert(19, std::string("\x21\xfe\x05" "other\0", 9));
+  std::ofstream(dir + "/b.gif", std::ios::binary) << other;
+  std::ofstream(dir + "/b.mp4", std::ios::binary) << mp4 + std::string("\0\0\0\x0c" "freeabcd", 12);
+  CHECK_FALSE(not_a_magnus_output(dir + "/b.gif").empty());
+  CHECK_FALSE(not_a_magnus_output(dir + "/b.mp4").empty());
+  std::ofstream(dir + "/c.txt") << "magnus wrote this, it says\n";
+  CHECK_FALSE(mark_film_file(dir + "/c.txt"));
+  fs::remove_all(dir);
+}
