@@ -2,6 +2,8 @@
 
 #include <stdlib.h>
 
+#include <csignal>
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -11,6 +13,7 @@
 #include <stdexcept>
 
 #include "app/ffmpeg.hpp"
+#include "app/run_viscous.hpp"
 #include "base/atomic_file.hpp"
 #include "base/output_owner.hpp"
 #include "io/hdf5_io.hpp"
@@ -87,6 +90,31 @@ struct FrameDir {
   FrameDir& operator=(const FrameDir&) = delete;
 };
 
+volatile std::sig_atomic_t g_film_signal = 0;  // SIGINT or SIGTERM received while the film is made (0: none)
+
+extern "C" void on_film_signal(int sig) { g_film_signal = sig; }
+
+/// While this lives, SIGINT and SIGTERM are noted instead of ending the program, so that stop() can
+/// unwind: the frames' directory and the film's temporary file are then removed, and no film is written.
+struct FilmSignals {
+  FilmSignals() {
+    g_film_signal = 0;
+    previous_int = std::signal(SIGINT, on_film_signal);
+    previous_term = std::signal(SIGTERM, on_film_signal);
+    if (previous_int == SIG_IGN) std::signal(SIGINT, SIG_IGN);  // a background job's Ctrl-C stays ignored
+  }
+  ~FilmSignals() {
+    std::signal(SIGINT, previous_int);
+    std::signal(SIGTERM, previous_term);
+  }
+  /// Throws Interrupted (exit status 128 + the signal) once a signal came.
+  static void stop() {
+    if (g_film_signal) throw Interrupted{int(g_film_signal)};
+  }
+  void (*previous_int)(int) = SIG_DFL;
+  void (*previous_term)(int) = SIG_DFL;
+};
+
 /// The last non-empty line of a log file ("" when none).
 std::string last_line(const std::string& log) {
   std::ifstream in(log);
@@ -102,6 +130,7 @@ void encode_film(const std::string& ffmpeg, const std::string& dir, const std::s
   AtomicFile out(movie);
   const std::string log = dir + "/ffmpeg.log";
   const int status = run_program(ffmpeg, ffmpeg_film_args(dir, fps, format, out.temp()), log);
+  FilmSignals::stop();  // Ctrl-C reaches ffmpeg too: it stops, and no film is written
   if (status != 0) {
     const std::string why = last_line(log);
     throw std::runtime_error(fmt::format("--movie '{}': ffmpeg failed (exit status {}){}{}", movie, status,
@@ -129,8 +158,10 @@ MovieOutcome make_movie(const std::string& path, const std::string& movie, PlotS
   o.range = film_vorticity_range(r, o.window);
   o.size = size;
   o.frames = r.viscous->snapshots.size();
+  const FilmSignals signals;
   const FrameDir dir;
   for (size_t k = 0; k < o.frames; ++k) {
+    FilmSignals::stop();
     const PlotFrame f = draw_film_frame(r, k, o.window, o.range, size, fmt::format("{}/top_{:05d}.png", dir.path, k),
                                         fmt::format("{}/bottom_{:05d}.png", dir.path, k));
     if (k == 0) o.vorticity = f;

@@ -28,7 +28,8 @@ constexpr PlotSize kMinFilmSize{320, 256};
 /// Makes the film `movie` (.mp4 or .gif) of the result file `path`'s snapshots. Refuses, with one line and
 /// nothing written, a file that is not a navier-stokes result with snapshots and a force history, another
 /// extension, fps outside 1 … kMaxFps, a size under kMinFilmSize or odd for .mp4, a missing ffmpeg, and a target that may not
-/// be replaced (base/atomic_file).
+/// be replaced (base/atomic_file). SIGINT or SIGTERM stops it at the next frame (or when ffmpeg ends),
+/// with nothing left behind, by throwing Interrupted.
 MovieOutcome make_movie(const std::string& path, const std::string& movie, PlotSize size,
                         const std::optional<PlotWindow>& window, int fps);
 

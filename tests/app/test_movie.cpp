@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/ffmpeg.hpp"
+#include "app/run_child.hpp"
 #include "io/hdf5_io.hpp"
 #include "io/viscous_fixture.hpp"
 #include "plot/film.hpp"
@@ -209,4 +210,39 @@ TEST_CASE("magnus plot --movie refuses bad input in one line and writes nothing"
   REQUIRE(::stat((dir + "/pipe.gif").c_str(), &st) == 0);
   CHECK(S_ISFIFO(st.st_mode));
   CHECK(test::slurp(dir + "/theirs.gif") == "someone else's film");
+}
+
+TEST_CASE("magnus plot --movie stopped by SIGTERM or SIGINT leaves no film, no frames and no temporary file",
+          "[app][plot][movie]") {
+  require_ffmpeg();
+  const std::string dir = test::temp_dir("movie-signal"), tmp = dir + "/tmp";
+  fs::create_directories(tmp);
+  write_result(test::viscous_result_by_hand(1.0, 32, 16, 60), dir + "/flow.h5");
+  for (const int sig : {SIGTERM, SIGINT}) {
+    CAPTURE(sig);
+    ::setenv("TMPDIR", tmp.c_str(), 1);
+    const test::Running c =
+        test::start_magnus({"plot", dir + "/flow.h5", "--movie", dir + "/wake.gif", "--size", "400x320"}, dir);
+    ::unsetenv("TMPDIR");
+    // Signal once the second frame is being drawn (its first panel is there): the film is under way.
+    bool drawing = false;
+    for (int k = 0; k < 120000 && !drawing; ++k) {  // up to 2 minutes on a loaded machine
+      for (const auto& e : fs::recursive_directory_iterator(tmp, fs::directory_options::skip_permission_denied))
+        drawing = drawing || e.path().filename() == "top_00001.png";
+      if (!drawing) {
+        if (::waitpid(c.pid, nullptr, WNOHANG) != 0) FAIL("magnus ended before its second frame");
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      }
+    }
+    REQUIRE(drawing);
+    REQUIRE(::kill(c.pid, sig) == 0);
+    const test::Ended e = test::wait_magnus(c);
+    CAPTURE(e.err);
+    CHECK(e.exited);
+    CHECK(e.status == 128 + sig);
+    CHECK(names_in(tmp).empty());
+    std::vector<std::string> left = names_in(dir);
+    std::sort(left.begin(), left.end());
+    CHECK(left == std::vector<std::string>{"child.err", "child.out", "flow.h5", "flow.xmf", "tmp"});
+  }
 }
