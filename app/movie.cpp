@@ -36,6 +36,7 @@ std::string film_format(const std::string& movie) {
   return ext.substr(1);
 }
 
+/// --fps, --size (at least kMinFilmSize; even for .mp4) and the target (writable, replaceable), in one line each.
 void check_film_options(const std::string& movie, const std::string& format, PlotSize size, int fps) {
   if (fps < 1 || fps > kMaxFps)
     throw std::invalid_argument(fmt::format("--fps {}: expected 1 to {} frames a second", fps, kMaxFps));
