@@ -23,6 +23,9 @@ MISSING_HINT = "scripts/setup.sh installs every Debian package magnus needs"
 
 def project_version():
     """The x.y.z of `project(magnus VERSION x.y.z …)` in CMakeLists.txt, the project's one version."""
+    if not (HERE / "CMakeLists.txt").is_file():
+        sys.exit(f"magnus: no CMakeLists.txt in {HERE} (an sdist has no C++ sources): build the wheel from "
+                 "the source tree, with pip install . or python3 -m build --wheel")
     text = (HERE / "CMakeLists.txt").read_text(encoding="utf-8")
     m = re.search(r"^project\(\s*magnus\s+VERSION\s+([0-9][0-9.]*)", text, re.MULTILINE)
     if not m:
@@ -140,6 +143,7 @@ class CMakeBuild(build_ext):
         shutil.copyfile(built[0], target)
 
 
+(HERE / "build" / "pip").mkdir(parents=True, exist_ok=True)  # egg_base must exist before egg_info runs
 setup(
     version=project_version(),
     packages=["magnus"],
