@@ -26,7 +26,7 @@ struct CurveAxes {
   double ty(double v) const { return ly ? std::log10(v) : v * sy; }
 };
 
-/// The window that fits every usable point (x fixed when the page says so), padded, and the powers of ten
+/// The window that fits every usable point and its ± bar (x fixed when the page says so), padded, and the powers of ten
 /// the linear axes' labels show. Throws std::runtime_error when no point is usable.
 CurveAxes curve_axes(const CurvePage& pg, const std::vector<LineCurve>& lines,
                      const std::vector<PointSet>& points, const std::string& png) {
@@ -47,7 +47,12 @@ CurveAxes curve_axes(const CurvePage& pg, const std::vector<LineCurve>& lines,
   for (const auto& l : lines)
     for (const auto& p : l.points) take(p);
   for (const auto& s : points)
-    for (const auto& p : s.points) take(p);
+    for (size_t i = 0; i < s.points.size(); ++i) {
+      take(s.points[i]);
+      const double e = i < s.y_error.size() ? std::fabs(s.y_error[i]) : 0.0;
+      if (!ly && std::isfinite(e) && usable(s.points[i], lx, ly))  // the bars stay inside the window
+        take({s.points[i].x, s.points[i].y - e}), take({s.points[i].x, s.points[i].y + e});
+    }
   if (!(xhi >= xlo)) throw std::runtime_error("plot: nothing to draw in " + png + " (no usable data)");
   if (pg.fixed_x) {
     a.x0 = a.tx(pg.x_min);
@@ -113,6 +118,19 @@ void on_axes(const CurveAxes& a, const std::vector<CurvePoint>& pts, std::vector
     }
 }
 
+/// The ± y bars of a point set (linear y axis; a NaN bar or an unusable point draws none).
+void error_bars(plstream& pls, const CurveAxes& a, const PointSet& s) {
+  if (a.ly || s.y_error.empty()) return;
+  pls.col0(page::pen(s.colour));
+  for (size_t i = 0; i < s.points.size() && i < s.y_error.size(); ++i) {
+    const CurvePoint& p = s.points[i];
+    const double e = s.y_error[i];
+    if (!std::isfinite(e) || !page::usable(p, a.lx, a.ly)) continue;
+    PLFLT x = a.tx(p.x), lo = a.ty(p.y - std::fabs(e)), hi = a.ty(p.y + std::fabs(e));
+    pls.erry(1, &x, &lo, &hi);
+  }
+}
+
 /// The lines (in order), then the point sets over them (joined ones with their line).
 void draw_curves(plstream& pls, const CurveAxes& a, const std::vector<LineCurve>& lines,
                  const std::vector<PointSet>& points) {
@@ -139,6 +157,7 @@ void draw_curves(plstream& pls, const CurveAxes& a, const std::vector<LineCurve>
     }
     set_text(pls, 0.55);
     markers(pls, scaled(a, s.points), kMarkers[s.marker % std::size(kMarkers)], pen(s.colour), a.lx, a.ly);
+    error_bars(pls, a, s);
   }
 }
 

@@ -25,6 +25,9 @@ struct PointSet {
   Colour colour = Colour::red;
   int marker = 0;       ///< 0 ●, 1 ■, 2 ▲, 3 ◆, 4 ▼, 5 ○, 6 □, 7 △ …
   bool joined = false;  ///< draw a line through the points in order
+  /// ± bars in y (absolute, same units as y), one per point; empty: none; a NaN entry: no bar there.
+  /// Drawn on a linear y axis only.
+  std::vector<double> y_error;
 };
 
 /// The page of a curve plot: texts (plplot_text markup, units in the labels) and axes.

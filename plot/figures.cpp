@@ -242,7 +242,7 @@ CurveFigure lift_figure(const LiftSweep& s, const ViscousReference* reference, c
   if (reference && !by_gamma) add_reference_points(f, *reference, re, xlo, xhi);
   if (rotor && !by_gamma)
     add_rotor_overlays(f, *rotor, re, xlo, xhi);
-  PointSet numeric{"numeric (potential flow)", {}, Colour::red, 0, false};
+  PointSet numeric{"numeric (potential flow)", {}, Colour::red, 0, false, {}};
   for (size_t k = 0; k < s.x.size() && k < s.cl.size(); ++k) numeric.points.push_back({s.x[k], s.cl[k]});
   f.points.push_back(std::move(numeric));
   return f;

@@ -123,7 +123,7 @@ CurveFigure shear_stress_figure(const FlowResult& r) {
   tau.points.push_back({360.0, s.shear_stress[0]});
   f.lines.push_back(std::move(tau));
   if (r.viscous && !r.viscous->separation.empty()) {
-    PointSet sep{"τ_w = 0 (separation, reattachment)", {}, Colour::red, 0, false};
+    PointSet sep{"τ_w = 0 (separation, reattachment)", {}, Colour::red, 0, false, {}};
     for (double th : r.viscous->separation) sep.points.push_back({th * 180.0 / M_PI, 0.0});
     f.points.push_back(std::move(sep));
   }
