@@ -34,7 +34,7 @@ struct SweepOptions {
   std::string case_path, spin_ratio, circulation, csv, output, plot, size, reynolds, shard;
   std::vector<std::string> sets;
   int threads = 1;
-  bool quiet = false, json = false, steady_only = false;
+  bool quiet = false, json = false, steady_only = false, no_error_bars = false;
   std::string stability = "eigenvalues";
 };
 
@@ -94,6 +94,7 @@ void command_ns_sweep(const SweepOptions& o, const Case& c, const SweepRange& al
     mo.stability_method = o.stability;
   }
   mo.average_unstable = !o.steady_only;
+  mo.error_estimate = !o.no_error_bars;
   if (!o.quiet)
     mo.on_point = [](const NsMapPoint& p) {
       std::fprintf(stderr, "magnus: Re %g, α %.4g: %s%s (%.2f s)\n", p.reynolds, p.alpha,
@@ -164,9 +165,10 @@ void command_sweep(const SweepOptions& o) {
       throw std::runtime_error("--circulation: a navier-stokes sweep varies the spin ratio (--spin-ratio)");
     return command_ns_sweep(o, c, range);
   }
-  if (!o.reynolds.empty() || !o.shard.empty() || o.steady_only || o.stability != "eigenvalues")
-    throw std::runtime_error(
-        fmt::format("{}: --reynolds, --shard, --steady-only and --stability need a navier-stokes case", o.case_path));
+  if (!o.reynolds.empty() || !o.shard.empty() || o.steady_only || o.stability != "eigenvalues" || o.no_error_bars)
+    throw std::runtime_error(fmt::format(
+        "{}: --reynolds, --shard, --steady-only, --stability and --no-error-bars need a navier-stokes case",
+        o.case_path));
   if (o.json && is_stdout(o.csv))
     throw std::runtime_error("--json and --csv -: both would go to standard output; name a file for one");
   // Fail before solving, not after.
@@ -241,6 +243,9 @@ void add_sweep_command(CLI::App& app) {
                     "navier-stokes: compute only the K-th of N interleaved slices of the Re rows (K/N)");
   sweep->add_flag("--steady-only", o->steady_only,
                   "navier-stokes: the steady branch only (no stability test, no time averages)");
+  sweep->add_flag("--no-error-bars", o->no_error_bars,
+                  "navier-stokes: no per-point error bars (they cost a steady solve on the grid twice as coarse, "
+                  "and a companion march beside each marched point)");
   sweep->add_option("--stability", o->stability,
                     "navier-stokes: eigenvalues (the Jacobian's leading pair, default) or march (the linearised "
                     "time stepper's growth: cheaper on coarse grids)")

@@ -45,6 +45,29 @@ std::string source_short(MapSource s) {
   return "—";
 }
 
+/// A relative bar in per cent, "—" when undefined.
+std::string bar_cell(double rel) {
+  if (!std::isfinite(rel)) return "—";
+  return 100.0 * rel >= 10.0 ? fmt::format("{:.0f}", 100.0 * rel) : fmt::format("{:.2g}", 100.0 * rel);
+}
+
+/// How many points meet the default tolerances, and the largest C_D bar, in one line (empty: no bars).
+std::string error_summary(const NsMap& m) {
+  int meet = 0, short_of = 0, undecided = 0;
+  const NsMapPoint* worst = nullptr;
+  for (const auto& p : m.points) {
+    const double v = p.meets_tolerance;
+    (std::isfinite(v) ? (v == 1.0 ? meet : short_of) : undecided) += 1;
+    if (std::isfinite(p.cd_rel_estimate) && (!worst || p.cd_rel_estimate > worst->cd_rel_estimate)) worst = &p;
+  }
+  if (!worst) return "";
+  return fmt::format("{:<13}{} of {} points within the default tolerances (C_L, St 1%, C_D 2%), {} short of "
+                     "them, {} without a bar; largest C_D bar {}% at Re {:g}, α {:g}{}\n",
+                     "error bars", meet, m.points.size(), short_of, undecided, bar_cell(worst->cd_rel_estimate),
+                     worst->reynolds, worst->alpha,
+                     short_of > 0 ? " (a finer grid: --set grid.n_theta=… or domain.outer_radius)" : "");
+}
+
 }  // namespace
 
 std::string ns_map_table(const NsMap& m) {
@@ -69,15 +92,19 @@ std::string ns_map_table(const NsMap& m) {
     t += fmt::format("{:<13}Re up to {:g} > {:g}: real flow is three-dimensional there; this 2D laminar map "
                      "is not what a real cylinder sees\n",
                      "note", re_max, kReynolds3D);
+  t += error_summary(m);
   t += "\n";
-  t += fmt::format("{:>7} {:>6} {:>9} {:>8} {:>8} {:>9} {:>8} {:>7} {:>6} {:>16} {:>6} {:>4} {:>7}\n", "Re",
-                   "α", "C_L", "C_D", "C_M", "C_L,ideal", "S/2πρa²", "St", "stable", "source", "Newton",
-                   "arc", "s");
+  t += fmt::format("{:>7} {:>6} {:>9} {:>8} {:>8} {:>9} {:>8} {:>7} {:>6} {:>6} {:>6} {:>6} {:>16} {:>6} {:>4} "
+                   "{:>7}\n",
+                   "Re", "α", "C_L", "C_D", "C_M", "C_L,ideal", "S/2πρa²", "St", "±C_L%", "±C_D%", "±St%",
+                   "stable", "source", "Newton", "arc", "s");
   for (const auto& p : m.points)
-    t += fmt::format("{:>7} {:>6} {:>9} {:>8} {:>8} {:>9} {:>8} {:>7} {:>6} {:>16} {:>6} {:>4} {:>7}\n",
+    t += fmt::format("{:>7} {:>6} {:>9} {:>8} {:>8} {:>9} {:>8} {:>7} {:>6} {:>6} {:>6} {:>6} {:>16} {:>6} {:>4} "
+                     "{:>7}\n",
                      cell(p.reynolds, "{:.4g}"), cell(p.alpha, "{:.3f}"), cell(p.cl, "{:.4f}"),
                      cell(p.cd, "{:.4f}"), cell(p.cm, "{:.4f}"), cell(p.cl_ideal, "{:.4f}"),
-                     cell(p.ratio, "{:.4f}"), cell(p.strouhal, "{:.4f}"), stable_text(p),
+                     cell(p.ratio, "{:.4f}"), cell(p.strouhal, "{:.4f}"), bar_cell(p.cl_rel_estimate),
+                     bar_cell(p.cd_rel_estimate), bar_cell(p.strouhal_rel_estimate), stable_text(p),
                      p.fold ? std::string("fold") : source_short(p.source), p.newton_steps, p.arclength_steps,
                      cell(p.seconds, "{:.2f}"));
   return t;
@@ -155,8 +182,14 @@ NsMap read_ns_map_hdf5(const std::string& path) {
   const size_t n = f.dataset("/sweep/alpha").size();
   m.points.resize(n);
   for (auto& p : m.points) p.stable.reset();
+  // The error bars came later: a map file without them reads as undefined there.
+  const auto later = [](const std::string& name) {
+    return name == "cl_rel_estimate" || name == "cd_rel_estimate" || name == "strouhal_rel_estimate" ||
+           name == "meets_tolerance";
+  };
   for (const auto& c : ns_map_columns()) {
-    const std::vector<double> v = read_column(f, "/sweep", c.name, n);
+    const bool absent = later(c.name) && !f.has(std::string("/sweep/") + c.name);
+    const std::vector<double> v = absent ? std::vector<double>(n, std::nan("")) : read_column(f, "/sweep", c.name, n);
     for (size_t i = 0; i < n; ++i) c.set(m.points[i], v[i]);
   }
   return m;

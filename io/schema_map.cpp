@@ -58,6 +58,16 @@ const std::vector<Column<NsMapPoint>>& ns_map_columns() {
              [](NsMapPoint& p, double v) {
                p.source = v >= 0.0 && v <= 4.0 ? MapSource(int(v)) : MapSource::none;
              }},
+      NS_COL("cl_rel_estimate", "1",
+             "relative error bar of cl: |f − f_c|/|f| against the grid twice as coarse (fill value: undefined)",
+             cl_rel_estimate),
+      NS_COL("cd_rel_estimate", "1", "relative error bar of cd, as cl's", cd_rel_estimate),
+      NS_COL("strouhal_rel_estimate", "1", "relative error bar of the Strouhal number, as cl's",
+             strouhal_rel_estimate),
+      NS_COL("meets_tolerance", "1",
+             "1: the bars are within the default grid's tolerances (C_L, St 1%, C_D 2%), 0: not; fill value: "
+             "no C_D bar",
+             meets_tolerance),
       NS_COL("seconds", "s", "wall time of the point (measured under the run's load)", seconds),
   };
   return c;

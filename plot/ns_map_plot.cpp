@@ -31,6 +31,7 @@ void plot_ns_map(const NsMap& m, const std::string& png, PlotSize size) {
       s.marker = 0;
     }
     s.points.push_back({by_re ? p.reynolds : p.alpha, p.ratio});
+    s.y_error.push_back(std::fabs(p.ratio) * p.cl_rel_estimate);  // the point's own bar (NaN: none)
   }
   PointSet avg;
   avg.label = "time-averaged";
@@ -45,7 +46,8 @@ void plot_ns_map(const NsMap& m, const std::string& png, PlotSize size) {
   if (!avg.points.empty()) sets.push_back(std::move(avg));
   CurvePage page;
   page.title =
-      fmt::format("{}: S/(2πρa^2) = C_L/C_L,ideal (n_θ {} × n_r {})", m.base.title, m.n_theta, m.n_r);
+      fmt::format("{}: S/(2πρa^2) = C_L/C_L,ideal (n_θ {} × n_r {}; bars: each point's error estimate)",
+                  m.base.title, m.n_theta, m.n_r);
   page.xlabel = by_re ? "Reynolds number Re = U·2a/ν" : "spin ratio α = aω/U";
   page.ylabel = "S/(2πρa^2) = C_L / (−2πα)";
   const std::vector<LineCurve> lines;

@@ -66,6 +66,13 @@ struct NsMapPoint {
   double strouhal;                                            ///< time-averaged periodic points only
   double cl_ideal;                                            ///< potential flow, −2πα
   double ratio;          ///< cl / cl_ideal = S/(2πρa²) (NaN at α = 0)
+  /// The point's own error bars, relative: |f − f_c|/|f| against the same point on the grid twice as
+  /// coarse (a steady state: Newton there from this one; a marched point: its companion march, plus the
+  /// spread of means that had not converged). NaN where undefined (|f| < 1e-3, no companion).
+  double cl_rel_estimate, cd_rel_estimate, strouhal_rel_estimate;
+  /// 1 when the bars are within the default grid's design tolerances (C_L and St 1%, C_D 2%), 0 when one
+  /// is not, NaN when C_D's bar is undefined.
+  double meets_tolerance;
   double seconds = 0.0;  ///< wall time of this point (steady, stability, averaging)
 };
 
@@ -79,6 +86,7 @@ struct NsMapOptions {
   /// How `stability` decides, kept with the map: "eigenvalues", "march", or "none" (no hook).
   std::string stability_method = "none";
   bool average_unstable = true;  ///< march unstable points and points without a steady state from rest
+  bool error_estimate = true;    ///< each point's error bars from the grid twice as coarse (NsMapPoint)
   double newton_tol = 1e-10;     ///< scaled max-norm residual
   int newton_max = 12;           ///< Newton steps per solve before arclength takes over
   int max_arclength_steps = 40;  ///< per gap between two α
@@ -103,6 +111,11 @@ struct NsMap {
   /// previous row's steady state), not in α.
   bool continued_in_re() const { return alphas.size() == 1 && reynolds.size() > 1; }
 };
+
+/// Whether a point's bars are within the default grid's design tolerances (C_L and St kRuleTolerance = 1%,
+/// C_D 2%): 1 yes, 0 when one is not, NaN when a reported value has no bar (C_L counts only when
+/// |C_L| ≥ 1e-3, where a relative bar is defined; St only for a shedding point).
+double meets_tolerance(const NsMapPoint& m);
 
 /// The case of one map point: the base with ω = αU/a and ν = U·2a/Re (flow.reynolds = Re).
 Case map_point_case(const Case& base, double reynolds, double alpha);

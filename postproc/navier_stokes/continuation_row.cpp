@@ -6,7 +6,10 @@
 #include <stdexcept>
 
 #include "physics/exact.hpp"
+#include "postproc/navier_stokes/error_estimate.hpp"
 #include "postproc/navier_stokes/forces.hpp"
+#include "postproc/navier_stokes/grid_rule.hpp"
+#include "postproc/navier_stokes/steady_study.hpp"
 #include "postproc/run_case.hpp"
 #include "solver/navier_stokes/newton.hpp"
 
@@ -119,11 +122,26 @@ void set_forces(NsMapPoint& m, const NsParams& p, const PolarGrid& g, double rho
   m.cd_pressure = f.C_D_pressure.value_or(kNaN), m.cd_friction = f.C_D_friction.value_or(kNaN);
 }
 
+/// The steady point's error bars: the row's state interpolated onto the companion row's grid (twice as
+/// coarse), Newton there at the same α, and the relative differences of C_L and C_D (relative_estimate).
+/// Undefined (NaN) when that Newton fails.
+void estimate_steady(Row& companion, const PolarGrid& fine, const NsState& s, double rho, NsMapPoint& m) {
+  std::vector<double> xc = companion.jac.pack(interpolate_state(fine, s, companion.jac.grid()));
+  int steps = 0;
+  if (!companion.newton(xc, m.alpha, steps)) return;
+  NsParams pc = companion.p0;
+  pc.omega = m.alpha * pc.U / pc.a;
+  const ViscousForces f = viscous_forces(companion.jac.grid(), pc, rho, companion.jac.unpack(xc));
+  m.cl_rel_estimate = relative_estimate(m.cl_steady, f.C_L.value_or(kNaN), 0.0).value_or(kNaN);
+  m.cd_rel_estimate = relative_estimate(m.cd_steady, f.C_D.value_or(kNaN), 0.0).value_or(kNaN);
+}
+
 NsMapPoint blank_point(const Case& base, int row, int col, double re, double alpha) {
   NsMapPoint m;
   m.row = row, m.column = col, m.reynolds = re, m.alpha = alpha;
   m.cl = m.cd = m.cm = m.cl_steady = m.cd_steady = m.cm_steady = kNaN;
   m.cl_pressure = m.cl_friction = m.cd_pressure = m.cd_friction = m.strouhal = kNaN;
+  m.cl_rel_estimate = m.cd_rel_estimate = m.strouhal_rel_estimate = m.meets_tolerance = kNaN;
   m.cl_ideal = exact_flow(map_point_case(base, re, alpha).scene).cl() + 0.0;  // + 0.0: no −0 at α = 0
   m.ratio = kNaN;
   return m;
@@ -145,7 +163,7 @@ void finish_point(const Case& base, const NsMapOptions& o, NsMapPoint& m) {
     c.output.fields = std::vector<std::string>{};
     RunHooks marching;
     marching.viscous.march_at_once = true;
-    marching.viscous.error_estimate = false;  // no companion run on the map's points
+    marching.viscous.error_estimate = o.error_estimate;  // its companion march gives the point's bars
     const FlowResult r = run_case(c, marching);
     const ViscousPart& v = *r.viscous;
     m.source = v.steady      ? MapSource::marched_steady
@@ -153,8 +171,14 @@ void finish_point(const Case& base, const NsMapOptions& o, NsMapPoint& m) {
                              : MapSource::averaged_no_steady;
     m.cl = v.cl_mean.value_or(kNaN), m.cd = v.cd_mean.value_or(kNaN), m.cm = v.cm_mean.value_or(kNaN);
     m.strouhal = v.strouhal.value_or(kNaN);
+    m.cl_rel_estimate = v.cl_mean_rel_estimate.value_or(kNaN);
+    m.cd_rel_estimate = v.cd_mean_rel_estimate.value_or(kNaN);
+    m.strouhal_rel_estimate = v.strouhal_rel_estimate.value_or(kNaN);
+  } else {
+    m.cl_rel_estimate = m.cd_rel_estimate = kNaN;  // no reported value: no bar either
   }
   if (std::isfinite(m.cl) && m.cl_ideal != 0.0) m.ratio = m.cl / m.cl_ideal;
+  m.meets_tolerance = meets_tolerance(m);
 }
 
 /// Pseudo-arclength from the last converged point (x1, α_1 = a1) towards α = alpha > a1: once past α,
@@ -194,6 +218,23 @@ void arclength_to(Row& R, const ArclengthProblem& prob, const NsMapOptions& o, c
 
 }  // namespace
 
+double meets_tolerance(const NsMapPoint& m) {
+  const auto within = [](double value, double bar, double tol, bool needed) -> std::optional<bool> {
+    if (!needed || !std::isfinite(value)) return true;
+    if (!std::isfinite(bar)) return std::nullopt;
+    return bar <= tol;
+  };
+  const std::optional<bool> checks[] = {
+      within(m.cd, m.cd_rel_estimate, 2.0 * kRuleTolerance, true),
+      within(m.cl, m.cl_rel_estimate, kRuleTolerance, std::fabs(m.cl) >= kEstimateZero),
+      within(m.strouhal, m.strouhal_rel_estimate, kRuleTolerance, true)};
+  for (const auto& c : checks)
+    if (c == std::optional<bool>(false)) return 0.0;
+  for (const auto& c : checks)
+    if (!c) return kNaN;
+  return 1.0;
+}
+
 std::vector<NsMapPoint> solve_row(const Case& base, const NsMapOptions& o, int row, double re,
                                   const std::function<void(const NsMapPoint&)>& done, const NsState* guess,
                                   std::optional<NsState>* first) {
@@ -203,6 +244,10 @@ std::vector<NsMapPoint> solve_row(const Case& base, const NsMapOptions& o, int r
   const double rho = base.scene.density;
   Row R(p0, al.front(), o.newton_tol, o.newton_max);
   const PolarGrid& g = R.jac.grid();
+  // The same branch on the grid twice as coarse, for each steady point's error bars.
+  std::optional<Row> companion;
+  if (o.error_estimate && companion_refusal(p0, g, false).empty())
+    companion.emplace(companion_params(p0, g), al.front(), o.newton_tol, o.newton_max);
   const ArclengthProblem prob = R.problem();
   std::vector<NsMapPoint> out;
   // The last two converged points of the branch (for the secant predictor and the arclength start).
@@ -230,6 +275,7 @@ std::vector<NsMapPoint> solve_row(const Case& base, const NsMapOptions& o, int r
     if (m.converged) {
       const NsState s = R.jac.unpack(x);
       set_forces(m, p, g, rho, s);
+      if (companion) estimate_steady(*companion, g, s, rho, m);
       if (k == 0 && first) *first = s;
       if (o.stability) m.stable = o.stability(p, s);
       x2 = std::move(x1), a2 = a1, have2 = have1;

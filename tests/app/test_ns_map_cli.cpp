@@ -379,3 +379,36 @@ TEST_CASE("navier-stokes summary of a steady run: values marked steady, no signe
   CHECK(o.out.find("(mean)") == std::string::npos);
   CHECK(o.out.find("-0.0000") == std::string::npos);
 }
+
+TEST_CASE("map error bars: in the CSV and the file, the same either way; --no-error-bars leaves them out",
+          "[app][sweep]") {
+  const std::string dir = temp_dir("ns-map-bars");
+  write_case(dir + "/c.toml", 32, 0.0);
+  const auto map = [&](const std::string& out, std::vector<std::string> extra) {
+    std::vector<std::string> args = {"sweep", dir + "/c.toml", "--spin-ratio", "0.5:1:0.5", "--reynolds",
+                                     "20:20:1", "--steady-only", "-q", "-o", dir + "/" + out};
+    args.insert(args.end(), extra.begin(), extra.end());
+    REQUIRE(magnus_cmd(args, dir).status == 0);
+    return read_ns_map_hdf5(dir + "/" + out);
+  };
+  const NsMap with = map("with.h5", {"--csv", dir + "/with.csv"}), without = map("without.h5", {"--no-error-bars"});
+  REQUIRE(with.points.size() == 2);
+  const std::string csv = slurp(dir + "/with.csv"), header = csv.substr(0, csv.find('\n'));
+  for (const char* col : {"cl_rel_estimate", "cd_rel_estimate", "strouhal_rel_estimate", "meets_tolerance"})
+    CHECK(header.find(col) != std::string::npos);
+  for (size_t i = 0; i < 2; ++i) {
+    // The bars do not change what is reported; they are defined with, undefined without.
+    CHECK(with.points[i].cl == without.points[i].cl);
+    CHECK(with.points[i].cd_rel_estimate > 0.0);
+    CHECK(std::isfinite(with.points[i].meets_tolerance));
+    CHECK(std::isnan(without.points[i].cd_rel_estimate));
+    CHECK(std::isnan(without.points[i].meets_tolerance));
+  }
+  // A potential case has no map to put bars on.
+  const Outcome p = magnus_cmd(
+      {"sweep", std::string(MAGNUS_SOURCE_DIR) + "/cases/spin_ratio_1.toml", "--spin-ratio", "0:1:1", "--no-error-bars"},
+      dir);
+  CHECK(p.status != 0);
+  CHECK(one_line(p.err));
+  CHECK(p.err.find("--no-error-bars need a navier-stokes case") != std::string::npos);
+}
