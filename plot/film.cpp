@@ -72,8 +72,8 @@ CurveFigure film_force_figure(const FlowResult& r, double t) {
     }
   const auto [cl, cd] = forces_at(r.viscous->history, t);
   f.lines.push_back({"", {{t / unit, lo}, {t / unit, hi}}, Colour::black, LineStyle::solid, 1.5});
-  f.points.push_back({"", {{t / unit, cl}}, Colour::red, 0, false});
-  f.points.push_back({"", {{t / unit, cd}}, Colour::blue, 0, false});
+  f.points.push_back({"", {{t / unit, cl}}, Colour::red, 0, false, {}});
+  f.points.push_back({"", {{t / unit, cd}}, Colour::blue, 0, false, {}});
   return f;
 }
 

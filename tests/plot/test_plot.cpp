@@ -314,8 +314,8 @@ TEST_CASE("curve plots: the points where the data say, the legend off the data",
   const std::string dir = test::temp_dir("plot-curves");
   // A log-log benchmark (the Pareto plot): the best point bottom right, where a corner legend would go.
   std::vector<PointSet> series = {
-      {"fft, 5-point", {{0.04, 4e-3}, {0.1, 3e-4}, {0.7, 2e-5}, {3.0, 5e-6}}, Colour::blue, 0, true},
-      {"cholmod, 9-point", {{0.5, 4e-7}, {3.0, 7e-9}, {15.0, 1e-10}, {80.0, 1e-13}}, Colour::red, 1, true}};
+      {"fft, 5-point", {{0.04, 4e-3}, {0.1, 3e-4}, {0.7, 2e-5}, {3.0, 5e-6}}, Colour::blue, 0, true, {}},
+      {"cholmod, 9-point", {{0.5, 4e-7}, {3.0, 7e-9}, {15.0, 1e-10}, {80.0, 1e-13}}, Colour::red, 1, true, {}}};
   CurvePage page;
   page.title = "C_L error against time";
   page.xlabel = "time (ms)";
@@ -336,7 +336,7 @@ TEST_CASE("curve plots: the points where the data say, the legend off the data",
     CHECK(clear_edges(img));
   }
   // Nothing positive on log axes: an error, and no file.
-  REQUIRE_THROWS_AS(plot_curves(page, {}, {{"zero", {{0.0, 1.0}}, Colour::blue, 0, false}}, dir + "/e.png"),
+  REQUIRE_THROWS_AS(plot_curves(page, {}, {{"zero", {{0.0, 1.0}}, Colour::blue, 0, false, {}}}, dir + "/e.png"),
                     std::runtime_error);
   std::ifstream probe(dir + "/e.png");
   CHECK_FALSE(probe.good());
