@@ -26,6 +26,7 @@
 // wake leaves, the convective condition ζ_t + (u_r/r) ζ_ξ = 0, i.e. ζ_t + (ψ_θ/J) ζ_ξ = 0 (explicit upwind).
 #include <chrono>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include "mesh/polar_grid.hpp"
@@ -170,8 +171,15 @@ class NsOperator {
 /// wall_refinement > 1: the rings clustered at the wall (make_stretched_grid, Δ_f = Δθ/radial_refinement).
 PolarGrid ns_grid(const NsParams& p);
 
-/// One AB2/CN step of op.dt() from old to next (next may not alias old). Throws std::runtime_error when the
-/// CFL number of old exceeds kNsCflLimit or the new fields are not finite (message: time and likely cause).
+/// advance()'s refusal of a step whose CFL number (of the state it starts from) is above kNsCflLimit: the
+/// step taken was too long for that state; nothing was changed but `next`.
+struct CflExceeded : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// One AB2/CN step of op.dt() from old to next (next may not alias old). Throws CflExceeded when the CFL
+/// number of old exceeds kNsCflLimit, std::runtime_error when the new fields are not finite (message: time
+/// and likely cause).
 /// The whole step after the advection stays in Fourier space (one forward FFT of the right-hand side, the
 /// Helmholtz, Poisson and wall-closure solves per mode, two inverse FFTs), on params().threads threads of a
 /// persistent pool. Steps on one operator run one at a time (its work buffers are shared).

@@ -151,9 +151,9 @@ double check_step(const Step& s, const NsState& old, const NsState& next, double
   const double cfl =
       p.stokes ? cfl_number(s.g, old.psi, dt, p.advection_order, p.advection_order_xi) : rate * dt;
   if (!(cfl <= kNsCflLimit))
-    throw std::runtime_error("advance: at t = " + fmt_time(old.t) + " the CFL number is " + fmt_cfl(cfl) +
-                             " > " + fmt_cfl(kNsCflLimit) + ": the time step " + fmt_time(dt) +
-                             " is above the stability limit (reduce dt or the CFL number)");
+    throw CflExceeded("advance: at t = " + fmt_time(old.t) + " the CFL number is " + fmt_cfl(cfl) + " > " +
+                      fmt_cfl(kNsCflLimit) + ": the time step " + fmt_time(dt) +
+                      " is above the stability limit (reduce dt or the CFL number)");
   if (!std::isfinite(acc)) throw non_finite(old.t + dt, dt, "vorticity right-hand side");
   if (!std::isfinite(next.Gamma_R)) throw non_finite(old.t + dt, dt, "circulation at R");
   return cfl;
