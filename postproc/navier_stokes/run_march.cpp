@@ -8,6 +8,7 @@
 #include <string>
 
 #include "postproc/navier_stokes/error_estimate.hpp"
+#include "postproc/navier_stokes/means_drift.hpp"
 #include "postproc/navier_stokes/run_paths.hpp"
 #include "postproc/navier_stokes/unsteady.hpp"
 
@@ -150,7 +151,7 @@ FlowResult march(const Case& c, const NsParams& p, const PolarGrid& g, double un
   UnsteadyOptions o;
   o.t_end = c.time.end * unit;
   o.rho = c.scene.density;
-  o.mean_tol = c.time.mean_tolerance;
+  o.mean_tol = stop_mean_tolerance(c.time.mean_tolerance, c.grid.tolerance);
   if (c.time.mode == TimeMode::unsteady) o.steady_tol = 0.0;  // march on: a steady flow runs to time.end
 
   // The companion for the error estimate: from rest on the grid twice as coarse, beside the run.

@@ -6,6 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "postproc/navier_stokes/means_drift.hpp"
 #include "postproc/navier_stokes/periodic.hpp"
 #include "solver/navier_stokes/rotation.hpp"
 
@@ -188,9 +189,17 @@ bool lift_settled(const std::vector<ForceSample>& h, size_t first_fine, int peri
   return true;
 }
 
-/// Periodic: the last converged_periods + 1 full-grid periods agree (means of C_L, C_D by means_agree and
-/// lengths to mean_tol, relatively) and the spectrum of the last periods peaks at the same frequency (a
-/// false period never stops it); with settle_amplitudes, lift_settled instead.
+/// Whether the drift still to come of the means of the periods w (means_drift) is below tol·max(1, |C|) for
+/// C_L and C_D and below tol·T for the period T (the last period's values).
+bool drift_small(const std::vector<PeriodWindow>& w, double tol) {
+  const MeansDrift d = means_drift(w);
+  const PeriodWindow& last = w.back();
+  return d.cl < tol * std::max(1.0, std::fabs(last.C_L)) && d.cd < tol * std::max(1.0, std::fabs(last.C_D)) &&
+         d.period < tol * last.length();
+}
+
+}  // namespace
+
 bool periods_agree(const std::vector<ForceSample>& h, size_t first_fine, const UnsteadyOptions& o) {
   if (o.settle_amplitudes) return lift_settled(h, first_fine, o.converged_periods, o.mean_tol);
   // The last periods, enough for both tests (the means' agreement and the spectrum's).
@@ -204,8 +213,11 @@ bool periods_agree(const std::vector<ForceSample>& h, size_t first_fine, const U
     same = same && means_agree(w[q - 1].C_L, w[q].C_L, o.mean_tol) &&
            means_agree(w[q - 1].C_D, w[q].C_D, o.mean_tol) && std::fabs(T1 - T0) < o.mean_tol * T1;
   }
-  return same && period_disagreement(h, all).empty();  // it reads the last 8 periods
+  return same && (!o.stop_on_drift || drift_small(all, o.mean_tol)) &&
+         period_disagreement(h, all).empty();  // it reads the last 8 periods
 }
+
+namespace {
 
 /// Why a run may stop at time t (checked every 50 steps after earliest_stop): "steady" (forces_flat over
 /// the last steady_window), "periodic means converged" or "the lift's periods settled" (periods_agree; with

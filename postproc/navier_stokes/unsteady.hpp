@@ -17,6 +17,10 @@ struct UnsteadyOptions {
   double rho = 1.0;             ///< density for the forces, kg/m³
   double mean_tol = 1e-3;       ///< periodic: stop when the last periods' means of C_L, C_D differ < this·max(1, |C|)
   int converged_periods = 3;    ///< …over this many consecutive periods (and their lengths by < mean_tol)
+  /// …and the drift still to come of the last periods' means (means_drift) is below mean_tol·max(1, |C|)
+  /// for C_L, C_D and mean_tol·T for the period T: a slow monotone drift agrees period to period long before
+  /// the means have arrived.
+  bool stop_on_drift = true;
   /// Stop a shedding run instead when its last converged_periods + 1 lift periods agree with the last one
   /// in amplitude and length to mean_tol (relatively): near the onset the means agree long before the
   /// growth has ended (the short march before a periodic orbit).
@@ -56,6 +60,13 @@ ForceSample force_sample(double t, const ViscousForces& f);
 /// relative for a coefficient above 1 (a lift of 26 at high spin agrees to 1e-3 of itself, not to 4e-5 of
 /// itself), absolute below (a lift near 0 without spin).
 bool means_agree(double f0, double f1, double tol);
+
+/// Periodic stop rule: the last converged_periods + 1 periods of h from index first_fine on agree (means of
+/// C_L, C_D by means_agree and lengths to mean_tol, relatively), with stop_on_drift the drift still to come
+/// of their means (means_drift) is below mean_tol·max(1, |C|) and mean_tol·T, and the spectrum of the last
+/// periods peaks at the same frequency (a false period never stops it); with settle_amplitudes, the lift's
+/// amplitudes and periods agree instead.
+bool periods_agree(const std::vector<ForceSample>& h, size_t first_fine, const UnsteadyOptions& o);
 
 /// What a run reached.
 struct UnsteadyResult {
