@@ -3,6 +3,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <utility>
@@ -195,6 +196,7 @@ std::string estimate_text(const ViscousPart& v, double tolerance) {
                          "of the estimate",
                          v.periodic ? "spread between periods" : "drift over the last window",
                          num(100.0 * *v.means_spread_rel, "{:.2f}")));
+  if (v.means_drift_rel) line("", drift_text(v));
   if (v.tolerance_met)
     line("", fmt::format("grid.tolerance = {:g}: {}{}", tolerance,
                          *v.tolerance_met ? "met by every estimate" : "NOT met by the estimate above",
@@ -250,6 +252,18 @@ std::string findings_text(const FlowResult& r) {
 }
 
 }  // namespace
+
+std::string drift_text(const ViscousPart& v) {
+  const double bar = std::max({v.cl_mean_rel_estimate.value_or(0.0), v.cd_mean_rel_estimate.value_or(0.0),
+                               v.strouhal_rel_estimate.value_or(0.0)});
+  const double d = *v.means_drift_rel;
+  const std::string pct = num(100.0 * d, "{:.3f}");
+  if (bar > 0.0 && d > 0.5 * bar)
+    return fmt::format("the means were still drifting when the run stopped: the drift still to come, {}%, "
+                       "dominates the estimate (the grid's part is smaller)",
+                       pct);
+  return fmt::format("the drift still to come of the last periods' means, {}%, is part of the estimate", pct);
+}
 
 bool above_laminar_range(double reynolds) { return reynolds > kReynolds3D * (1.0 + 1e-9); }
 

@@ -147,7 +147,7 @@ std::vector<AttrSpec> viscous_error_rows() {
   return {
       vnum(E, "cl_mean_rel_estimate", "1",
            "estimated relative error of cl_mean: |f − f_coarse|/|f| against the grid twice as coarse (3× the "
-           "Richardson estimate), plus the means' spread when they had not converged",
+           "Richardson estimate), plus the means' spread when they had not converged and their drift still to come",
            &ViscousPart::cl_mean_rel_estimate),
       vnum(E, "cd_mean_rel_estimate", "1", "estimated relative error of cd_mean (as cl_mean_rel_estimate)",
            &ViscousPart::cd_mean_rel_estimate),
@@ -161,6 +161,10 @@ std::vector<AttrSpec> viscous_error_rows() {
       vnum(E, "means_spread_rel", "1",
            "the spread of the last periods' means (or the last window's drift) in the estimate, relative",
            &ViscousPart::means_spread_rel),
+      vnum(E, "means_drift_rel", "1",
+           "the drift still to come of the last periods' means in the estimate, relative (largest of C_L, C_D, "
+           "St): d·q/(1 − q) for the last differences d decaying by q per period, else 4 periods at the current rate",
+           &ViscousPart::means_drift_rel),
       vint(E, "companion_n_theta", "points in θ of the companion run's grid", &ViscousPart::companion_n_theta),
       vint(E, "companion_n_r", "rings of the companion run's grid", &ViscousPart::companion_n_r),
       vtext(E, "estimate_method", "how the error estimate was formed", &ViscousPart::error_method),

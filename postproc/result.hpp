@@ -68,10 +68,13 @@ struct ViscousPart {
   std::optional<SteadyStudy> steady_study;
   /// Estimated discretisation error of cl_mean, cd_mean, strouhal, relative (1): |f − f_2h|/|f| against a
   /// companion run on the grid twice as coarse (Roache's GCI, safety 3, order 2: 3|Δ|/(2² − 1) = |Δ|), plus
-  /// the means' spread when they had not converged; absent when undefined (error_note says why).
+  /// the means' spread when they had not converged and the drift still to come of a periodic run's means; absent when undefined (error_note says why).
   std::optional<double> cl_mean_rel_estimate, cd_mean_rel_estimate, strouhal_rel_estimate;
   bool means_converged = true;              ///< the means (or steady values) had converged when it stopped
   std::optional<double> means_spread_rel;   ///< the spread added when they had not (largest of C_L, C_D, St)
+  /// The drift still to come of the last periods' means in the estimate (means_drift; largest of C_L, C_D,
+  /// St, relative; periodic runs only).
+  std::optional<double> means_drift_rel;
   int companion_n_theta = 0, companion_n_r = 0;  ///< the companion's grid (0: no companion run)
   std::optional<double> companion_seconds;       ///< the companion's wall time, s
   std::string error_method;                      ///< how the estimate was formed ("" when none was)

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <exception>
 
+#include "postproc/navier_stokes/means_drift.hpp"
 #include "postproc/navier_stokes/periodic.hpp"
 #include "postproc/result.hpp"
 
@@ -57,6 +58,13 @@ MeansSpread means_spread(const UnsteadyResult& run, int periods, double window) 
   return s;
 }
 
+MeansSpread means_drift_rel(const UnsteadyResult& run) {
+  if (!run.periodic) return {};
+  const MeansDrift d = means_drift(lift_periods(run.history, kDriftPeriods));
+  auto rel = [](double x, double f) { return std::fabs(f) >= kEstimateZero ? x / std::fabs(f) : 0.0; };
+  return {rel(d.cl, run.C_L_mean), rel(d.cd, run.C_D_mean), run.period > 0.0 ? d.period / run.period : 0.0};
+}
+
 std::optional<double> relative_estimate(double f_h, double f_2h, double spread) {
   if (!std::isfinite(f_h) || !std::isfinite(f_2h) || !(std::fabs(f_h) >= kEstimateZero)) return std::nullopt;
   return std::fabs(f_h - f_2h) / std::fabs(f_h) + spread;
@@ -70,7 +78,7 @@ void record_companion(ViscousPart& v, const char* what, const NsParams& pc, bool
 }
 
 void estimate_from_companion(ViscousPart& v, const UnsteadyResult& fine, const UnsteadyResult& coarse,
-                             const MeansSpread& spread) {
+                             const MeansSpread& spread, const MeansSpread& drift) {
   v.means_converged = fine.converged;
   if (fine.interrupted) {
     v.error_note = "the run was interrupted";
@@ -86,15 +94,16 @@ void estimate_from_companion(ViscousPart& v, const UnsteadyResult& fine, const U
   }
   const MeansSpread add = fine.converged ? MeansSpread{} : spread;
   if (!fine.converged) v.means_spread_rel = std::max({add.cl, add.cd, fine.periodic ? add.st : 0.0});
+  if (fine.periodic) v.means_drift_rel = std::max({drift.cl, drift.cd, drift.st});
   std::string note;
   auto one = [&](const char* name, double f_h, double f_2h, double s, std::optional<double>& out) {
     out = relative_estimate(f_h, f_2h, s);
     if (!out) note += fmt::format("{}{} ≈ 0: no relative error", note.empty() ? "" : "; ", name);
   };
-  one("C_L", fine.C_L_mean, coarse.C_L_mean, add.cl, v.cl_mean_rel_estimate);
-  one("C_D", fine.C_D_mean, coarse.C_D_mean, add.cd, v.cd_mean_rel_estimate);
+  one("C_L", fine.C_L_mean, coarse.C_L_mean, add.cl + drift.cl, v.cl_mean_rel_estimate);
+  one("C_D", fine.C_D_mean, coarse.C_D_mean, add.cd + drift.cd, v.cd_mean_rel_estimate);
   if (fine.St > 0.0 && coarse.St > 0.0)
-    v.strouhal_rel_estimate = relative_estimate(fine.St, coarse.St, add.st);
+    v.strouhal_rel_estimate = relative_estimate(fine.St, coarse.St, add.st + drift.st);
   else if (fine.St > 0.0)
     note += std::string(note.empty() ? "" : "; ") + "St: the companion found no confirmed period";
   v.error_note = note;

@@ -36,7 +36,12 @@ struct MeansSpread {
 };
 MeansSpread means_spread(const UnsteadyResult& run, int periods, double window);
 
-/// e = |f_h − f_2h|/|f_h| + spread (relative, 1): Roache's GCI 3·|f_h − f_2h|/(2² − 1) for order 2 on a
+/// The relative drift still to come of a periodic run's means (means_drift of its last kDriftPeriods
+/// periods): of C_L and C_D over |C| (0 when |C| < kEstimateZero), of St as the period's over T (1). All 0
+/// when the run is not periodic.
+MeansSpread means_drift_rel(const UnsteadyResult& run);
+
+/// e = |f_h − f_2h|/|f_h| + spread (relative, 1; spread: the means' spread and drift): Roache's GCI 3·|f_h − f_2h|/(2² − 1) for order 2 on a
 /// grid ratio 2, the safety factor 3 covering an order that is not yet 2. Undefined when |f_h| < kEstimateZero
 /// or either value is not finite.
 std::optional<double> relative_estimate(double f_h, double f_2h, double spread);
@@ -45,11 +50,13 @@ std::optional<double> relative_estimate(double f_h, double f_2h, double spread);
 /// companion {what} on n_θ × n_r[ (coarser in the rings only)]: |f − f_coarse|, 3× the Richardson estimate".
 void record_companion(ViscousPart& v, const char* what, const NsParams& pc, bool rings_only, double seconds);
 
-/// The estimates of v (cl_mean_rel_estimate, …, means_converged, means_spread_rel, error_note) from the
-/// run `fine` and its companion `coarse` (U > 0); undefined, with the reason in error_note, when the
-/// companion failed or was stopped before the run's time, or the run was interrupted.
+/// The estimates of v (cl_mean_rel_estimate, …, means_converged, means_spread_rel, means_drift_rel,
+/// error_note) from the run `fine` and its companion `coarse` (U > 0): each bar |f − f_coarse|/|f| + the
+/// spread (when the means had not converged) + the drift still to come (always, when periodic); undefined,
+/// with the reason in error_note, when the companion failed or was stopped before the run's time, or the
+/// run was interrupted.
 void estimate_from_companion(ViscousPart& v, const UnsteadyResult& fine, const UnsteadyResult& coarse,
-                             const MeansSpread& spread);
+                             const MeansSpread& spread, const MeansSpread& drift = {});
 
 /// A companion march on its own thread; its destructor stops it at once (the future then waits for it).
 struct CompanionMarch {

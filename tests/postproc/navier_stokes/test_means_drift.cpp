@@ -1,11 +1,13 @@
 // The drift still to come of a run's period means (postproc/navier_stokes/means_drift.hpp) on synthetic
 // sequences (geometric decay with a known limit, a linear drift, noise), the stop rule that asks it to be
-// small (periods_agree) on a slowly drifting synthetic force history, and the tolerance the stop rule holds
-// the means to under grid.tolerance.
+// small (periods_agree) on a slowly drifting synthetic force history, the error bar that adds it, and the
+// tolerance the stop rule holds the means to under grid.tolerance.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>
 
+#include "io/report_viscous.hpp"
+#include "postproc/navier_stokes/error_estimate.hpp"
 #include "postproc/navier_stokes/means_drift.hpp"
 #include "postproc/navier_stokes/periodic.hpp"
 #include "postproc/navier_stokes/unsteady.hpp"
@@ -135,4 +137,30 @@ TEST_CASE("stop_mean_tolerance: a fifth of grid.tolerance when that is tighter",
   CHECK(stop_mean_tolerance(1e-3, 5e-4) == Approx(1e-4));
   CHECK(stop_mean_tolerance(1e-3, 0.01) == 1e-3);  // 2e-3 would be looser than time.mean_tolerance
   CHECK(stop_mean_tolerance(1e-4, 1e-3) == 1e-4);
+}
+
+TEST_CASE("estimate: the drift still to come is part of every bar, and the summary says when it dominates",
+          "[drift]") {
+  UnsteadyResult fine, coarse;
+  fine.C_L_mean = -2.5, fine.C_D_mean = 1.1, fine.St = 0.165, fine.converged = true, fine.periodic = true;
+  coarse.C_L_mean = -2.4995, coarse.C_D_mean = 1.0989, coarse.St = 0.16495;
+  ViscousPart v;
+  estimate_from_companion(v, fine, coarse, {}, MeansSpread{0.0004, 0.002, 0.0001});
+  CHECK(*v.cl_mean_rel_estimate == Approx(0.0005 / 2.5 + 0.0004));
+  CHECK(*v.cd_mean_rel_estimate == Approx(0.0011 / 1.1 + 0.002));
+  CHECK(*v.strouhal_rel_estimate == Approx(0.00005 / 0.165 + 0.0001));
+  CHECK(*v.means_drift_rel == Approx(0.002));
+  CHECK_FALSE(v.means_spread_rel);  // converged: no spread, the drift still counts
+  CHECK(drift_text(v).find("dominates the estimate") != std::string::npos);
+  CHECK(drift_text(v).find("0.200%") != std::string::npos);
+  // A small drift is part of the bar, not the larger part.
+  ViscousPart small;
+  estimate_from_companion(small, fine, coarse, {}, MeansSpread{1e-5, 1e-5, 1e-5});
+  CHECK(drift_text(small).find("dominates") == std::string::npos);
+  CHECK(drift_text(small).find("is part of the estimate") != std::string::npos);
+  // Not periodic (steady): no drift term at all.
+  fine.periodic = false;
+  ViscousPart steady;
+  estimate_from_companion(steady, fine, coarse, {}, {});
+  CHECK_FALSE(steady.means_drift_rel);
 }
