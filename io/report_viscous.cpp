@@ -196,7 +196,7 @@ std::string estimate_text(const ViscousPart& v, double tolerance) {
                          "of the estimate",
                          v.periodic ? "spread between periods" : "drift over the last window",
                          num(100.0 * *v.means_spread_rel, "{:.2f}")));
-  if (v.means_drift_rel) line("", drift_text(v));
+  if (const std::string d = drift_text(v); !d.empty()) line("", d);
   if (v.tolerance_met)
     line("", fmt::format("grid.tolerance = {:g}: {}{}", tolerance,
                          *v.tolerance_met ? "met by every estimate" : "NOT met by the estimate above",
@@ -254,15 +254,29 @@ std::string findings_text(const FlowResult& r) {
 }  // namespace
 
 std::string drift_text(const ViscousPart& v) {
-  const double bar = std::max({v.cl_mean_rel_estimate.value_or(0.0), v.cd_mean_rel_estimate.value_or(0.0),
-                               v.strouhal_rel_estimate.value_or(0.0)});
-  const double d = *v.means_drift_rel;
-  const std::string pct = num(100.0 * d, "{:.3f}");
-  if (bar > 0.0 && d > 0.5 * bar)
-    return fmt::format("the means were still drifting when the run stopped: the drift still to come, {}%, "
-                       "dominates the estimate (the grid's part is smaller)",
-                       pct);
-  return fmt::format("the drift still to come of the last periods' means, {}%, is part of the estimate", pct);
+  struct Part {
+    const char* name;
+    const std::optional<double>& drift;
+    const std::optional<double>& bar;
+  };
+  const Part parts[] = {{"C_L", v.cl_mean_drift_rel, v.cl_mean_rel_estimate},
+                        {"C_D", v.cd_mean_drift_rel, v.cd_mean_rel_estimate},
+                        {"St", v.strouhal_drift_rel, v.strouhal_rel_estimate}};
+  std::string most, largest;
+  double d_max = -1.0;
+  for (const Part& p : parts) {
+    if (!p.drift) continue;
+    if (*p.drift > d_max) d_max = *p.drift, largest = p.name;
+    if (p.bar && *p.drift > 0.5 * *p.bar)
+      most += fmt::format("{}{} ({}% of ±{}%)", most.empty() ? "" : ", ", p.name, num(100.0 * *p.drift, "{:.3f}"),
+                          num(100.0 * *p.bar, "{:.3f}"));
+  }
+  if (d_max < 0.0) return "";
+  if (!most.empty())
+    return "the means were still drifting when the run stopped: the drift still to come is most of the bar "
+           "of " + most;
+  return fmt::format("the drift still to come of the last periods' means, at most {}% ({}), is part of the estimate",
+                     num(100.0 * d_max, "{:.3f}"), largest);
 }
 
 bool above_laminar_range(double reynolds) { return reynolds > kReynolds3D * (1.0 + 1e-9); }

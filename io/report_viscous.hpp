@@ -10,9 +10,8 @@ namespace magnus {
 /// viscous against ideal; torque and spin power; separation; a warning above Re ≈ 200 (real flow is 3D).
 std::string viscous_summary_text(const FlowResult& r, const std::string& output_path);
 
-/// The summary's line on the drift still to come of the means (v.means_drift_rel, which must be set): that
-/// it dominates the estimate when it is more than half the largest bar (then more than half of its own
-/// quantity's bar), else that it is part of it; in %.
+/// The summary's line on the drift still to come of the means (v's *_drift_rel; "" when none is set): the
+/// bars it dominates (more than half of the bar) with drift and bar in %, else that it is part of them.
 std::string drift_text(const ViscousPart& v);
 
 /// Re above which 2D laminar flow past a cylinder is no longer what a real cylinder sees.

@@ -72,9 +72,9 @@ struct ViscousPart {
   std::optional<double> cl_mean_rel_estimate, cd_mean_rel_estimate, strouhal_rel_estimate;
   bool means_converged = true;              ///< the means (or steady values) had converged when it stopped
   std::optional<double> means_spread_rel;   ///< the spread added when they had not (largest of C_L, C_D, St)
-  /// The drift still to come of the last periods' means in the estimate (means_drift; largest of C_L, C_D,
-  /// St, relative; periodic runs only).
-  std::optional<double> means_drift_rel;
+  /// The drift still to come of the last periods' means in each estimate (means_drift, relative; periodic
+  /// runs only).
+  std::optional<double> cl_mean_drift_rel, cd_mean_drift_rel, strouhal_drift_rel;
   int companion_n_theta = 0, companion_n_r = 0;  ///< the companion's grid (0: no companion run)
   std::optional<double> companion_seconds;       ///< the companion's wall time, s
   std::string error_method;                      ///< how the estimate was formed ("" when none was)

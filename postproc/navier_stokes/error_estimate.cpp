@@ -94,7 +94,10 @@ void estimate_from_companion(ViscousPart& v, const UnsteadyResult& fine, const U
   }
   const MeansSpread add = fine.converged ? MeansSpread{} : spread;
   if (!fine.converged) v.means_spread_rel = std::max({add.cl, add.cd, fine.periodic ? add.st : 0.0});
-  if (fine.periodic) v.means_drift_rel = std::max({drift.cl, drift.cd, drift.st});
+  if (fine.periodic) {
+    v.cl_mean_drift_rel = drift.cl, v.cd_mean_drift_rel = drift.cd;
+    v.strouhal_drift_rel = drift.st;
+  }
   std::string note;
   auto one = [&](const char* name, double f_h, double f_2h, double s, std::optional<double>& out) {
     out = relative_estimate(f_h, f_2h, s);

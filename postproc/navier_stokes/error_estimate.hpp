@@ -50,7 +50,7 @@ std::optional<double> relative_estimate(double f_h, double f_2h, double spread);
 /// companion {what} on n_θ × n_r[ (coarser in the rings only)]: |f − f_coarse|, 3× the Richardson estimate".
 void record_companion(ViscousPart& v, const char* what, const NsParams& pc, bool rings_only, double seconds);
 
-/// The estimates of v (cl_mean_rel_estimate, …, means_converged, means_spread_rel, means_drift_rel,
+/// The estimates of v (cl_mean_rel_estimate, …, means_converged, means_spread_rel, the drifts,
 /// error_note) from the run `fine` and its companion `coarse` (U > 0): each bar |f − f_coarse|/|f| + the
 /// spread (when the means had not converged) + the drift still to come (always, when periodic); undefined,
 /// with the reason in error_note, when the companion failed or was stopped before the run's time, or the

@@ -79,7 +79,7 @@ TEST_CASE("remaining_drift: a linear drift counts the horizon's periods at its r
   CHECK(remaining_drift({}) == 0.0);
 }
 
-TEST_CASE("remaining_drift: noise about a level stays at the noise's size; a drift under noise is found",
+TEST_CASE("remaining_drift: noise about a level stays at the noise's size, a drift under noise is found",
           "[drift]") {
   const std::vector<double> e = noise(40);
   // Noise of amplitude 1e-4 about 1.09: the estimate of each window of kDriftPeriods is below horizon × the
@@ -149,18 +149,24 @@ TEST_CASE("estimate: the drift still to come is part of every bar, and the summa
   CHECK(*v.cl_mean_rel_estimate == Approx(0.0005 / 2.5 + 0.0004));
   CHECK(*v.cd_mean_rel_estimate == Approx(0.0011 / 1.1 + 0.002));
   CHECK(*v.strouhal_rel_estimate == Approx(0.00005 / 0.165 + 0.0001));
-  CHECK(*v.means_drift_rel == Approx(0.002));
+  CHECK(*v.cl_mean_drift_rel == 0.0004);
+  CHECK(*v.cd_mean_drift_rel == 0.002);
+  CHECK(*v.strouhal_drift_rel == 0.0001);
   CHECK_FALSE(v.means_spread_rel);  // converged: no spread, the drift still counts
-  CHECK(drift_text(v).find("dominates the estimate") != std::string::npos);
-  CHECK(drift_text(v).find("0.200%") != std::string::npos);
-  // A small drift is part of the bar, not the larger part.
+  // C_L: 0.04% of 0.06%, C_D: 0.2% of 0.3% are most of their bars; St: 0.01% of 0.04% is not.
+  const std::string text = drift_text(v);
+  CHECK(text.find("most of the bar of C_L (0.040% of ±0.060%), C_D (0.200% of ±0.300%)") != std::string::npos);
+  CHECK(text.find("St") == std::string::npos);
+  // A small drift is part of the bars, not most of any.
   ViscousPart small;
-  estimate_from_companion(small, fine, coarse, {}, MeansSpread{1e-5, 1e-5, 1e-5});
-  CHECK(drift_text(small).find("dominates") == std::string::npos);
-  CHECK(drift_text(small).find("is part of the estimate") != std::string::npos);
+  estimate_from_companion(small, fine, coarse, {}, MeansSpread{1e-5, 2e-5, 1e-5});
+  CHECK(drift_text(small).find("most of") == std::string::npos);
+  CHECK(drift_text(small).find("at most 0.002% (C_D), is part of the estimate") != std::string::npos);
   // Not periodic (steady): no drift term at all.
   fine.periodic = false;
   ViscousPart steady;
   estimate_from_companion(steady, fine, coarse, {}, {});
-  CHECK_FALSE(steady.means_drift_rel);
+  CHECK_FALSE(steady.cl_mean_drift_rel);
+  CHECK_FALSE(steady.strouhal_drift_rel);
+  CHECK(drift_text(steady).empty());
 }
