@@ -142,9 +142,32 @@ AttrSpec vtext(const char* group, const char* name, const char* description, std
                              [m](FlowResult& r, const std::string& v) { vis(r).*m = v; })));
 }
 
+/// The rows of the drift still to come in each estimate (means_drift, relative: d·q/(1 − q) for the last
+/// differences d decaying by q a period, else 4 periods at the current rate).
+std::vector<AttrSpec> drift_rows() {
+  struct Drift {
+    const char* name;
+    const char* description;
+    std::optional<double> ViscousPart::*m;
+  };
+  const Drift drifts[] = {
+      {"cl_mean_drift_rel",
+       "the drift still to come of the last periods' means of C_L, in cl_mean_rel_estimate, relative: d·q/(1 − q) "
+       "for the last differences d decaying by q a period, else 4 periods at the current rate",
+       &ViscousPart::cl_mean_drift_rel},
+      {"cd_mean_drift_rel", "the drift still to come of C_D's means, in cd_mean_rel_estimate (as cl_mean_drift_rel)",
+       &ViscousPart::cd_mean_drift_rel},
+      {"strouhal_drift_rel",
+       "the drift still to come of the periods' lengths, in strouhal_rel_estimate (as cl_mean_drift_rel)",
+       &ViscousPart::strouhal_drift_rel}};
+  std::vector<AttrSpec> rows;
+  for (const Drift& d : drifts) rows.push_back(vnum(E, d.name, "1", d.description, d.m));
+  return rows;
+}
+
 /// The viscous rows of /errors: the run's own estimate of its discretisation error.
 std::vector<AttrSpec> viscous_error_rows() {
-  return {
+  std::vector<AttrSpec> rows = {
       vnum(E, "cl_mean_rel_estimate", "1",
            "estimated relative error of cl_mean: |f − f_coarse|/|f| against the grid twice as coarse (3× the "
            "Richardson estimate), plus the means' spread when they had not converged and their drift still to come",
@@ -161,15 +184,6 @@ std::vector<AttrSpec> viscous_error_rows() {
       vnum(E, "means_spread_rel", "1",
            "the spread of the last periods' means (or the last window's drift) in the estimate, relative",
            &ViscousPart::means_spread_rel),
-      vnum(E, "cl_mean_drift_rel", "1",
-           "the drift still to come of the last periods' means of C_L in cl_mean_rel_estimate, relative: "
-           "d·q/(1 − q) for the last differences d decaying by q a period, else 4 periods at the current rate",
-           &ViscousPart::cl_mean_drift_rel),
-      vnum(E, "cd_mean_drift_rel", "1", "the drift still to come in cd_mean_rel_estimate (as cl_mean_drift_rel)",
-           &ViscousPart::cd_mean_drift_rel),
-      vnum(E, "strouhal_drift_rel", "1",
-           "the drift still to come of the periods' lengths in strouhal_rel_estimate (as cl_mean_drift_rel)",
-           &ViscousPart::strouhal_drift_rel),
       vint(E, "companion_n_theta", "points in θ of the companion run's grid", &ViscousPart::companion_n_theta),
       vint(E, "companion_n_r", "rings of the companion run's grid", &ViscousPart::companion_n_r),
       vtext(E, "estimate_method", "how the error estimate was formed", &ViscousPart::error_method),
@@ -187,6 +201,8 @@ std::vector<AttrSpec> viscous_error_rows() {
       vnum(T, "companion_s", "s", "wall clock, the companion run of the error estimate (beside the run)",
            &ViscousPart::companion_seconds),
   };
+  for (AttrSpec& a : drift_rows()) rows.push_back(std::move(a));
+  return rows;
 }
 
 }  // namespace
