@@ -166,6 +166,8 @@ FlowResult march(const Case& c, const NsParams& p, const PolarGrid& g, double un
   o.on_step = [&rec](const NsState& s, const ViscousForces& f) { return rec.step(s, f); };
   UnsteadyResult run =
       run_unsteady(p, o, std::move(start), resume ? resume->history : std::vector<ForceSample>{});
+  if (run.converged && !run.steady && o.mean_tol < c.time.mean_tolerance)
+    run.message += fmt::format(" (to {:g}: a fifth of grid.tolerance)", o.mean_tol);
   FlowResult r = marched_result(c, p, run, rec, choice);
   if (!hooks.error_estimate) return r;
   ViscousPart& v = *r.viscous;
