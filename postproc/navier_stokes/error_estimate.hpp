@@ -41,8 +41,9 @@ MeansSpread means_spread(const UnsteadyResult& run, int periods, double window);
 /// when the run is not periodic.
 MeansSpread means_drift_rel(const UnsteadyResult& run);
 
-/// e = |f_h − f_2h|/|f_h| + spread (relative, 1; spread: the means' spread and drift): Roache's GCI 3·|f_h − f_2h|/(2² − 1) for order 2 on a
-/// grid ratio 2, the safety factor 3 covering an order that is not yet 2. Undefined when |f_h| < kEstimateZero
+/// e = |f_h − f_2h|/|f_h| + spread (relative, 1; spread: what the means' spread and drift add): Roache's
+/// GCI 3·|f_h − f_2h|/(2² − 1) for order 2 on a grid ratio 2, the safety factor 3 covering an order that is
+/// not yet 2. Undefined when |f_h| < kEstimateZero
 /// or either value is not finite.
 std::optional<double> relative_estimate(double f_h, double f_2h, double spread);
 

@@ -4,7 +4,7 @@
 // geometrically with ratio q < 1, the rest of the sequence moves by d_last·q/(1 − q); when they do not
 // decay, the means move on at the current rate, and the drift over the next `horizon` periods is counted.
 // The stop rule of a periodic run asks this to be below the means' tolerance as well as the consecutive
-// agreement, and the error bar of every run adds it.
+// agreement, and every periodic run adds it to its error bars (postproc/navier_stokes/error_estimate.hpp).
 #include <vector>
 
 namespace magnus {
