@@ -264,6 +264,24 @@ void summarise(UnsteadyResult& res, bool go_on, const std::string& warm_note, co
   }
 }
 
+/// One step from cur into nxt, of dt or less to land on t_end (op rebuilt for a shorter step). When the
+/// flow sped up more within the steps between two rate checks than the margin allows (a vortex leaving
+/// the wall at high spin), advance() refuses the step (CflExceeded; cur untouched): magnus's own Δt is then
+/// rebuilt from cur's exact rate and the step taken again. A user's time.dt is the user's: refused.
+void take_step(const NsParams& p, const PolarGrid& g, bool own_dt, double t_end, double& dt,
+               std::unique_ptr<NsOperator>& op, const NsState& cur, NsState& nxt, NsStepTimes* times) {
+  const double step = std::min(dt, t_end - cur.t);
+  if (step < 0.999 * dt) op = std::make_unique<NsOperator>(p, step);  // land on t_end
+  try {
+    advance(*op, cur, nxt, times);
+  } catch (const CflExceeded&) {
+    if (!own_dt) throw;
+    dt = std::min(p.cfl, 0.95 * kNsCflLimit) / step_rate(p, g, cur);
+    op = std::make_unique<NsOperator>(p, std::min(dt, t_end - cur.t));
+    advance(*op, cur, nxt, times);
+  }
+}
+
 }  // namespace
 
 UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState start,
@@ -319,19 +337,7 @@ UnsteadyResult run_unsteady(const NsParams& p, const UnsteadyOptions& o, NsState
           op = std::make_unique<NsOperator>(p, dt);
         }
       }
-      const double step = std::min(dt, o.t_end - cur.t);
-      if (step < 0.999 * dt) op = std::make_unique<NsOperator>(p, step);  // land on t_end
-      try {
-        advance(*op, cur, nxt, &res.times);
-      } catch (const CflExceeded&) {
-        // The flow sped up more within the steps between two checks than the margin allows (a vortex
-        // leaving the wall at high spin): magnus's own Δt is rebuilt from this state's exact rate and the
-        // step taken again (cur is untouched). A user's time.dt is the user's: refused, as advance says.
-        if (!own_dt) throw;
-        dt = std::min(p.cfl, 0.95 * kNsCflLimit) / step_rate(p, g, cur);
-        op = std::make_unique<NsOperator>(p, std::min(dt, o.t_end - cur.t));
-        advance(*op, cur, nxt, &res.times);
-      }
+      take_step(p, g, own_dt, o.t_end, dt, op, cur, nxt, &res.times);
       std::swap(cur, nxt);
       ++res.steps;
       if (o.steps_taken) *o.steps_taken = res.steps;
