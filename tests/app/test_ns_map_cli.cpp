@@ -380,7 +380,7 @@ TEST_CASE("navier-stokes summary of a steady run: values marked steady, no signe
   CHECK(o.out.find("-0.0000") == std::string::npos);
 }
 
-TEST_CASE("map error bars: in the CSV and the file, the same either way; --no-error-bars leaves them out",
+TEST_CASE("map error bars: in the CSV and the file, the same values either way, none with --no-error-bars",
           "[app][sweep]") {
   const std::string dir = temp_dir("ns-map-bars");
   write_case(dir + "/c.toml", 32, 0.0);
