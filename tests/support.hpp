@@ -30,6 +30,15 @@ inline Case make_case(double alpha, int n_theta, Spacing spacing = Spacing::geom
   return c;
 }
 
+/// Navier–Stokes parameters of the cylinder a = 0.5 m in U = 1 m/s (D/U = 1 s): ν = 1/Re, ω = 2α, on
+/// n_θ points with R = R_over_a·a, one thread.
+inline NsParams cylinder_flow(double Re, double alpha, int n_theta, double R_over_a) {
+  NsParams p;
+  p.a = 0.5, p.U = 1.0, p.nu = 1.0 / Re, p.omega = alpha * p.U / p.a;
+  p.n_theta = n_theta, p.outer_over_a = R_over_a, p.threads = 1;
+  return p;
+}
+
 /// Observed order log(e_coarse/e_fine)/log(h_coarse/h_fine) for a refinement ratio.
 inline double observed_order(double e_coarse, double e_fine, double ratio = 2.0) {
   return std::log(e_coarse / e_fine) / std::log(ratio);

@@ -8,6 +8,7 @@
 #include "postproc/navier_stokes/forces.hpp"
 #include "postproc/navier_stokes/orbit.hpp"
 #include "postproc/navier_stokes/periodic.hpp"
+#include "support.hpp"
 
 using namespace magnus;
 
@@ -15,10 +16,7 @@ namespace {
 
 /// Re, α past the cylinder of a = 0.5 m in U = 1 m/s (D/U = 1 s) on n_θ points, R = outer·a.
 NsParams shedding_flow(double Re, double alpha, int n_theta, double outer) {
-  NsParams p;
-  p.a = 0.5, p.U = 1.0, p.nu = 1.0 / Re, p.omega = alpha * p.U / p.a;
-  p.n_theta = n_theta, p.outer_over_a = outer, p.threads = 1;
-  return p;
+  return test::cylinder_flow(Re, alpha, n_theta, outer);
 }
 
 /// Impulsive start with the mirror symmetry broken by a weak vortex behind the body.

@@ -15,12 +15,7 @@ using namespace magnus;
 namespace {
 
 /// D = 1 m, U = 1 m/s (1/s = U/D), ν = 1/Re, no spin; a coarse grid.
-NsParams coarse_wake(double Re, int n_theta) {
-  NsParams p;
-  p.a = 0.5, p.U = 1.0, p.nu = 1.0 / Re, p.omega = 0.0;
-  p.n_theta = n_theta, p.outer_over_a = 40.0, p.threads = 1;
-  return p;
-}
+NsParams coarse_wake(double Re, int n_theta) { return test::cylinder_flow(Re, 0.0, n_theta, 40.0); }
 
 }  // namespace
 

@@ -23,10 +23,7 @@ namespace {
 
 /// D = 1 m, U = 1 m/s: ν = 1/Re, ω = 2α.
 NsParams newton_params(double Re, double alpha, int n_theta, double R_over_a) {
-  NsParams p;
-  p.a = 0.5, p.U = 1.0, p.nu = 1.0 / Re, p.omega = alpha * p.U / p.a;
-  p.n_theta = n_theta, p.outer_over_a = R_over_a, p.threads = 1;
-  return p;
+  return test::cylinder_flow(Re, alpha, n_theta, R_over_a);
 }
 
 double rel_diff(const std::vector<double>& u, const std::vector<double>& v) {

@@ -9,6 +9,7 @@
 
 #include "solver/navier_stokes/newton.hpp"
 #include "solver/navier_stokes/stability.hpp"
+#include "support.hpp"
 
 using namespace magnus;
 
@@ -16,10 +17,7 @@ namespace {
 
 /// D = 1 m, U = 1 m/s (so 1/s = U/D): ν = 1/Re, ω = 2α; a coarse grid.
 NsParams coarse_params(double Re, double alpha, int n_theta = 64) {
-  NsParams p;
-  p.a = 0.5, p.U = 1.0, p.nu = 1.0 / Re, p.omega = alpha * p.U / p.a;
-  p.n_theta = n_theta, p.outer_over_a = 40.0, p.threads = 1;
-  return p;
+  return test::cylinder_flow(Re, alpha, n_theta, 40.0);
 }
 
 NsState newton(const NsParams& p) {
