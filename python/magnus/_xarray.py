@@ -79,7 +79,7 @@ def _history(r, xr, coords, data):
             data[name] = xr.Variable(("t",), np.asarray(values), _attrs(u[name], d[name]))
 
 
-def _per_point(r, xr, group, dim, prefix, coords, data, skip=()):
+def _per_point(r, xr, group, dim, prefix, data, skip=()):
     """The 1-D datasets of a group (surface, stagnation) as prefix+name over dim."""
     values, u, d = getattr(r, group), r.units[group], r.descriptions[group]
     for name, v in (values or {}).items():
@@ -120,8 +120,8 @@ def result_dataset(r):
     surface = r.surface
     if "theta" in surface and not np.array_equal(surface["theta"], r.grid["theta"]):
         raise RuntimeError("magnus: the surface's theta differs from the grid's")  # the format says they agree
-    _per_point(r, xr, "surface", "theta", "surface_", coords, data, skip=("theta",))
-    _per_point(r, xr, "stagnation", "stagnation_point", "stagnation_", coords, data)
+    _per_point(r, xr, "surface", "theta", "surface_", data, skip=("theta",))
+    _per_point(r, xr, "stagnation", "stagnation_point", "stagnation_", data)
     attrs = {k: v for k, v in r.attributes.items() if v is not None}
     for name, v in r.parameters.items():
         if v is not None:

@@ -61,8 +61,7 @@ def test_fields_are_what_h5netcdf_reads_from_the_file(which, request):
 def test_potential_dataset_holds_the_result(potential_file):
     r = magnus.read(potential_file)
     ds = r.to_xarray()
-    xr.testing.assert_identical(ds, magnus.open(potential_file).drop_encoding()
-                                if hasattr(xr.Dataset, "drop_encoding") else magnus.open(potential_file))
+    xr.testing.assert_identical(ds, magnus.open(potential_file))  # the same Dataset from memory and from file
     assert ds.psi.dims == ("r", "theta") and ds.x.dims == ("r", "theta")
     rr, th = np.meshgrid(ds.r.values, ds.theta.values, indexing="ij")
     np.testing.assert_allclose(ds.x.values, rr * np.cos(th), rtol=0, atol=1e-15 * rr.max())
