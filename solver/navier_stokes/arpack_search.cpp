@@ -49,13 +49,13 @@ std::vector<RitzValue> unconverged_ritz_values(const ArpackWork& w, a_int ncv, d
 
 }  // namespace
 
-ShiftSearch shift_invert_arpack(const SteadyJacobian& jac, const std::vector<double>& m, cplx sigma, int want,
-                                int krylov, int max_restarts, double tol, double arpack_tol, void** symbolic,
-                                std::mt19937& rng) {
+ShiftSearch shift_invert_arpack(const EigenProblem& ep, cplx sigma, int want, int krylov, int max_restarts,
+                                double tol, double arpack_tol, void** symbolic, std::mt19937& rng) {
   ShiftSearch out;
   out.sigma = sigma;
-  const ShiftedLu lu(jac, m, sigma, symbolic);
-  const a_int n = a_int(jac.size());
+  const ShiftedLu lu(ep, sigma, symbolic);
+  const a_int n = a_int(ep.n);
+  const std::vector<double>& m = ep.m;
   const size_t nn = size_t(n);
   auto op = [&](const cplx* x, cplx* y) {  // y = (J − σM)⁻¹ M x
     ++out.solves;
@@ -109,7 +109,7 @@ ShiftSearch shift_invert_arpack(const SteadyJacobian& jac, const std::vector<dou
   std::stable_sort(ritz.begin(), ritz.end(),
                    [](const RitzValue& a, const RitzValue& b) { return std::abs(a.mu) > std::abs(b.mu); });
   if (ritz.size() > size_t(nev)) ritz.resize(size_t(nev));
-  accept_ritz_values(jac, m, ritz, want, tol, out);
+  accept_ritz_values(ep, ritz, want, tol, out);
   return out;
 }
 

@@ -94,12 +94,13 @@ bool expand(Krylov& K, int& k, const Op& op) {
 
 }  // namespace
 
-ShiftSearch shift_invert_arnoldi(const SteadyJacobian& jac, const std::vector<double>& m, cplx sigma, int want,
-                                 int krylov, int max_restarts, double tol, void** symbolic, std::mt19937& rng) {
+ShiftSearch shift_invert_arnoldi(const EigenProblem& ep, cplx sigma, int want, int krylov, int max_restarts,
+                                 double tol, void** symbolic, std::mt19937& rng) {
   ShiftSearch out;
   out.sigma = sigma;
-  const ShiftedLu lu(jac, m, sigma, symbolic);
-  const size_t n = size_t(jac.size());
+  const ShiftedLu lu(ep, sigma, symbolic);
+  const size_t n = size_t(ep.n);
+  const std::vector<double>& m = ep.m;
   auto op = [&](const cvec& v) {
     ++out.solves;
     cvec b(n);
@@ -134,7 +135,7 @@ ShiftSearch shift_invert_arnoldi(const SteadyJacobian& jac, const std::vector<do
                             K.V.leftCols(k) * (Q.leftCols(r + 1) * triangular_eigenvector(T, r));
                         return cvec(xv.data(), xv.data() + xv.size());
                       }});
-    accept_ritz_values(jac, m, ritz, want, tol, out);
+    accept_ritz_values(ep, ritz, want, tol, out);
     if (out.converged || !full || out.restarts >= max_restarts) break;
     // Krylov–Schur restart: keep the `keep` nearest Schur vectors, A·(V Q_p) = (V Q_p)·T_p + v_k·(h_k Q_p).
     const Eigen::MatrixXcd Vp = K.V.leftCols(k) * Q.leftCols(keep);

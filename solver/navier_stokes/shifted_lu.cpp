@@ -6,7 +6,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "solver/navier_stokes/arakawa.hpp"
 #include "solver/navier_stokes/lu.hpp"
 
 namespace magnus {
@@ -23,10 +22,10 @@ double norm(const cvec& v) {
 }
 
 /// J x with the real matrix applied to the real and imaginary parts.
-cvec apply_j(const SteadyJacobian& jac, const cvec& x) {
+cvec apply_j(const EigenProblem& ep, const cvec& x) {
   std::vector<double> re(x.size()), im(x.size());
   for (size_t q = 0; q < x.size(); ++q) re[q] = x[q].real(), im[q] = x[q].imag();
-  const std::vector<double> jr = jac.multiply(re), ji = jac.multiply(im);
+  const std::vector<double> jr = ep.multiply(re), ji = ep.multiply(im);
   cvec y(x.size());
   for (size_t q = 0; q < x.size(); ++q) y[q] = {jr[q], ji[q]};
   return y;
@@ -34,10 +33,19 @@ cvec apply_j(const SteadyJacobian& jac, const cvec& x) {
 
 }  // namespace
 
-ShiftedLu::ShiftedLu(const SteadyJacobian& jac, const std::vector<double>& m, cplx sigma, void** symbolic) {
-  const long n = jac.size();
-  const std::vector<long>&Jp = jac.col_ptr(), &Ji = jac.row_index();
-  const std::vector<double>& Jx = jac.values();
+std::vector<double> EigenProblem::multiply(const std::vector<double>& x) const {
+  if (x.size() != size_t(n)) throw std::invalid_argument("EigenProblem::multiply: wrong size");
+  std::vector<double> y(x.size(), 0.0);
+  for (long c = 0; c < n; ++c)
+    for (long t = Ap[size_t(c)]; t < Ap[size_t(c) + 1]; ++t) y[size_t(Ai[size_t(t)])] += Ax[size_t(t)] * x[size_t(c)];
+  return y;
+}
+
+ShiftedLu::ShiftedLu(const EigenProblem& ep, cplx sigma, void** symbolic) {
+  const long n = ep.n;
+  const std::vector<long>&Jp = ep.Ap, &Ji = ep.Ai;
+  const std::vector<double>& Jx = ep.Ax;
+  const std::vector<double>& m = ep.m;
   Ap_.assign(size_t(n) + 1, 0);
   for (long c = 0; c < n; ++c) {
     bool diag = false;
@@ -60,12 +68,10 @@ ShiftedLu::ShiftedLu(const SteadyJacobian& jac, const std::vector<double>& m, cp
   }
   double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
   umfpack_zl_defaults(control);
-  // The grid's nested-dissection order, as for the real Jacobian (J − σM has J's pattern).
+  // The problem's order (the grid's nested dissection, as for the real Jacobian: J − σM has J's pattern).
   if (!*symbolic) {
     const long st = symbolic_in_grid_order(
-        n,
-        grid_order(jac.grid().n_r, jac.grid().n_theta, false, advection_reach(jac.params().advection_order),
-                   advection_reach(jac.params().advection_order_xi)),
+        n, ep.order,
         [&](const double* ctl, const long* q) {
           double inf[UMFPACK_INFO];
           return q ? umfpack_zl_qsymbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), q, symbolic,
@@ -114,8 +120,9 @@ cvec ShiftedLu::solve(const cvec& b) const {
 }
 
 /// ‖Jx − λMx‖/(‖Jx‖ + |λ|‖Mx‖): the relative residual of an eigenpair of J x = λ M x.
-double relative_residual(const SteadyJacobian& jac, const std::vector<double>& m, cplx lambda, const cvec& x) {
-  const cvec jx = apply_j(jac, x);
+double relative_residual(const EigenProblem& ep, cplx lambda, const cvec& x) {
+  const cvec jx = apply_j(ep, x);
+  const std::vector<double>& m = ep.m;
   double r2 = 0.0, mx = 0.0;
   for (size_t q = 0; q < x.size(); ++q) {
     r2 += std::norm(jx[q] - lambda * m[q] * x[q]);
@@ -124,8 +131,8 @@ double relative_residual(const SteadyJacobian& jac, const std::vector<double>& m
   return std::sqrt(r2) / (norm(jx) + std::abs(lambda) * std::sqrt(mx));
 }
 
-void accept_ritz_values(const SteadyJacobian& jac, const std::vector<double>& m, const std::vector<RitzValue>& ritz,
-                        int want, double tol, ShiftSearch& out) {
+void accept_ritz_values(const EigenProblem& ep, const std::vector<RitzValue>& ritz, int want, double tol,
+                        ShiftSearch& out) {
   out.found.clear();
   out.radius = 0.0;
   bool unbroken = true;
@@ -134,7 +141,7 @@ void accept_ritz_values(const SteadyJacobian& jac, const std::vector<double>& m,
     if (std::abs(rv.mu) == 0.0) break;
     cvec x = rv.vector ? rv.vector() : cvec{};
     const cplx lambda = out.sigma + 1.0 / rv.mu;
-    const double rel = x.empty() ? HUGE_VAL : relative_residual(jac, m, lambda, x);
+    const double rel = x.empty() ? HUGE_VAL : relative_residual(ep, lambda, x);
     unbroken = unbroken && rel <= tol;
     if (unbroken) out.radius = 1.0 / std::abs(rv.mu), ++nearest_ok;
     if (rel <= tol) out.found.push_back({lambda, std::move(x), rel});

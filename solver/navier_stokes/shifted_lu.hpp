@@ -6,7 +6,6 @@
 #include <functional>
 #include <vector>
 
-#include "solver/navier_stokes/newton.hpp"
 #include "solver/navier_stokes/shift_invert.hpp"
 
 namespace magnus {
@@ -16,7 +15,7 @@ namespace magnus {
 class ShiftedLu {
  public:
   /// Factors J − σM (σ in 1/s); symbolic: the UMFPACK symbolic analysis, made at the first call and reused.
-  ShiftedLu(const SteadyJacobian& jac, const std::vector<double>& m, std::complex<double> sigma, void** symbolic);
+  ShiftedLu(const EigenProblem& ep, std::complex<double> sigma, void** symbolic);
   ~ShiftedLu();
   ShiftedLu(const ShiftedLu&) = delete;
   ShiftedLu& operator=(const ShiftedLu&) = delete;
@@ -31,7 +30,7 @@ class ShiftedLu {
 };
 
 /// ‖Jx − λMx‖/(‖Jx‖ + |λ|‖Mx‖): the relative residual of an eigenpair of J x = λ M x (λ in 1/s).
-double relative_residual(const SteadyJacobian& jac, const std::vector<double>& m, std::complex<double> lambda,
+double relative_residual(const EigenProblem& ep, std::complex<double> lambda,
                          const std::vector<std::complex<double>>& x);
 
 /// One Ritz value μ of (J − σM)⁻¹M; `vector` gives its Ritz vector, or is empty for a Ritz value the
@@ -50,7 +49,7 @@ inline int krylov_vectors(int krylov, int want) { return krylov > 2 * want + 10 
 /// each with relative residual ≤ tol goes into out.found; every one nearer σ than the first that fails is
 /// accepted, and out.radius = 1/|μ| of the farthest of those (1/s); out.converged when that holds for at
 /// least `want`.
-void accept_ritz_values(const SteadyJacobian& jac, const std::vector<double>& m, const std::vector<RitzValue>& ritz,
-                        int want, double tol, ShiftSearch& out);
+void accept_ritz_values(const EigenProblem& ep, const std::vector<RitzValue>& ritz, int want, double tol,
+                        ShiftSearch& out);
 
 }  // namespace magnus

@@ -10,6 +10,8 @@
 #include <random>
 #include <stdexcept>
 
+#include "solver/navier_stokes/arakawa.hpp"
+#include "solver/navier_stokes/lu.hpp"
 #include "solver/navier_stokes/newton.hpp"
 #include "solver/navier_stokes/shift_invert.hpp"
 
@@ -61,22 +63,24 @@ std::vector<double> mass_matrix(const NsParams& p, const SteadyJacobian& jac, co
   return m;
 }
 
-/// The leading eigenvector x into res's mode fields, normalised to max |ζ| = 1 (real and positive there).
-void set_mode(StabilityResult& res, const std::vector<cplx>& x, size_t nodes) {
+/// The leading eigenvector x into res's mode fields, normalised to max |ζ| = 1 (real and positive there);
+/// node q's ψ and ζ are x[stride·q] and x[stride·q + 1], Γ_R the last unknown.
+void set_mode(StabilityResult& res, const std::vector<cplx>& x, size_t nodes, size_t stride) {
   res.mode_psi.resize(nodes), res.mode_zeta.resize(nodes);
   double zmax = 0.0;
   size_t qmax = 0;
   for (size_t q = 0; q < nodes; ++q)
-    if (std::abs(x[2 * q + 1]) > zmax) zmax = std::abs(x[2 * q + 1]), qmax = q;
-  const cplx scale = zmax > 0.0 ? std::abs(x[2 * qmax + 1]) / x[2 * qmax + 1] / zmax : 1.0;
-  for (size_t q = 0; q < nodes; ++q) res.mode_psi[q] = x[2 * q] * scale, res.mode_zeta[q] = x[2 * q + 1] * scale;
+    if (std::abs(x[stride * q + 1]) > zmax) zmax = std::abs(x[stride * q + 1]), qmax = q;
+  const cplx scale = zmax > 0.0 ? std::abs(x[stride * qmax + 1]) / x[stride * qmax + 1] / zmax : 1.0;
+  for (size_t q = 0; q < nodes; ++q)
+    res.mode_psi[q] = x[stride * q] * scale, res.mode_zeta[q] = x[stride * q + 1] * scale;
   res.mode_Gamma_R = x.back() * scale;
 }
 
 /// The searches' eigenpairs into res (λ in U/D): each shift with its disk, the reach of the nearest
 /// search, the eigenvalues without repeats, rightmost first, a complex one followed by its conjugate (at
 /// most count), their residuals, and the leading eigenvector as the mode.
-void gather_eigenpairs(std::vector<ShiftSearch>& searches, double unit, int count, size_t nodes,
+void gather_eigenpairs(std::vector<ShiftSearch>& searches, double unit, int count, size_t nodes, size_t stride,
                        StabilityResult& res) {
   std::vector<Eigenpair> all;
   double reach = -1.0;
@@ -114,7 +118,7 @@ void gather_eigenpairs(std::vector<ShiftSearch>& searches, double unit, int coun
   }
   if (res.eigenvalues.size() > size_t(count)) res.eigenvalues.resize(size_t(count)), res.residuals.resize(size_t(count));
   res.reach = std::max(reach, 0.0);
-  if (!uniq.empty()) set_mode(res, uniq.front().x, nodes);
+  if (!uniq.empty()) set_mode(res, uniq.front().x, nodes, stride);
 }
 
 /// One line: stable or not, the leading eigenvalue, its growth rate and St, and whether the strip right of
@@ -159,21 +163,40 @@ StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, in
   return leading_eigenvalues(p, steady, count, StabilityOptions{});
 }
 
+EigenProblem stability_problem(const NsParams& p, const NsState& steady) {
+  SteadyJacobian jac(p);
+  jac.factor(jac.pack(steady));  // assembles J at the state (its real LU is not used)
+  EigenProblem ep;
+  ep.n = jac.size();
+  ep.Ap = jac.col_ptr(), ep.Ai = jac.row_index(), ep.Ax = jac.values();
+  ep.m = mass_matrix(p, jac, steady);
+  ep.order = grid_order(jac.grid().n_r, jac.grid().n_theta, false, advection_reach(p.advection_order),
+                        advection_reach(p.advection_order_xi));
+  return ep;
+}
+
 StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, int count,
                                     const StabilityOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
+  check_stability_options(count, o);
+  const EigenProblem ep = stability_problem(p, steady);
+  const double unit = stability_speed(p) / (2.0 * p.a);  // U/D in 1/s
+  StabilityResult res = search_eigenvalues(ep, unit, count, o, size_t(steady.psi.size()), 2);
+  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return res;
+}
+
+void check_stability_options(int count, const StabilityOptions& o) {
   if (count < 1) throw std::invalid_argument("leading_eigenvalues: count must be ≥ 1");
   if (o.shifts.empty()) throw std::invalid_argument("leading_eigenvalues: no shifts");
   if (!known_eigensolver(o.eigensolver))
     throw std::invalid_argument("leading_eigenvalues: unknown eigensolver \"" + o.eigensolver + "\" (expected " +
                                 eigensolver_names() + ")");
-  SteadyJacobian jac(p);
-  const std::vector<double> x0 = jac.pack(steady);
-  jac.factor(x0);  // assembles J at the state (its real LU is not used)
-  const PolarGrid& g = jac.grid();
-  const std::vector<double> m = mass_matrix(p, jac, steady);
-  const double unit = stability_speed(p) / (2.0 * p.a);  // U/D in 1/s
+}
 
+StabilityResult search_eigenvalues(const EigenProblem& ep, double unit, int count, const StabilityOptions& o,
+                                   size_t nodes, size_t stride) {
+  const auto t0 = std::chrono::steady_clock::now();
   StabilityResult res;
   void* symbolic = nullptr;
   std::mt19937 rng(o.seed);
@@ -181,9 +204,9 @@ StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, in
   const bool arpack = o.eigensolver == "arpack";
   auto search = [&](cplx s_unit) {
     const int krylov = std::max(o.krylov, count + 10);
-    searches.push_back(arpack ? shift_invert_arpack(jac, m, s_unit * unit, o.want, krylov, o.restarts, o.tol,
+    searches.push_back(arpack ? shift_invert_arpack(ep, s_unit * unit, o.want, krylov, o.restarts, o.tol,
                                                     o.arpack_tol, &symbolic, rng)
-                              : shift_invert_arnoldi(jac, m, s_unit * unit, o.want, krylov, o.restarts, o.tol,
+                              : shift_invert_arnoldi(ep, s_unit * unit, o.want, krylov, o.restarts, o.tol,
                                                      &symbolic, rng));
     res.solves += searches.back().solves;
   };
@@ -216,7 +239,7 @@ StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, in
     throw;
   }
   if (symbolic) umfpack_zl_free_symbolic(&symbolic);
-  gather_eigenpairs(searches, unit, count, size_t(g.nodes()), res);
+  gather_eigenpairs(searches, unit, count, nodes, stride, res);
   res.stable = !res.eigenvalues.empty() && res.eigenvalues.front().real() < 0.0;
   res.message = verdict_message(res);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

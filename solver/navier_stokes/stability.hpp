@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "solver/navier_stokes/operator.hpp"
+#include "solver/navier_stokes/shift_invert.hpp"
 
 namespace magnus {
 
@@ -120,6 +121,19 @@ StabilityOptions quick_stability_options();
 StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, int count = 6);
 StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, int count,
                                     const StabilityOptions& o);
+
+/// The 2D problem J x = λ M x at a steady state of p: SteadyJacobian's J, the stepper's dynamic rows in M
+/// (see above), the grid's nested-dissection order.
+EigenProblem stability_problem(const NsParams& p, const NsState& steady);
+
+/// Throws std::invalid_argument for count < 1, no shifts or an unknown eigensolver.
+void check_stability_options(int count, const StabilityOptions& o);
+
+/// The search of leading_eigenvalues on any problem: the options' shifts (in units of `unit`, 1/s), the
+/// strip check and its extra shifts, the eigenvalues rightmost first in units of `unit`, and the leading
+/// eigenvector's ψ and ζ (unknowns stride·q and stride·q + 1 of node q < nodes; Γ_R the last unknown).
+StabilityResult search_eigenvalues(const EigenProblem& ep, double unit, int count, const StabilityOptions& o,
+                                   size_t nodes, size_t stride);
 
 /// The speed the eigenvalues are made dimensionless with: U, or a|ω| when U = 0, or ν/a (m/s).
 double stability_speed(const NsParams& p);
