@@ -71,6 +71,42 @@ inline double advection_12(int p_theta, int p_xi, const double* psi, const doubl
   return J;
 }
 
+/// Arakawa's Jacobian (J++ + J+× + J×+)/3 as 24 bilinear terms c·ψ(i+pi, j+pj)·ζ(i+zi, j+zj), times
+/// 1/(12ΔθΔξ) (offsets times a stride's s_xi, s_theta): the same sums as arakawa_12 (j1, j2, j3 there, in
+/// that order), written out so that each term's two derivatives are its two factors. The linearised
+/// operators (the steady Jacobian, the spanwise problem) take their entries from it.
+struct ArakawaTerm {
+  int c, pi, pj, zi, zj;
+};
+inline constexpr ArakawaTerm kArakawa[24] = {
+    // j1 = (ψ_0e − ψ_0w)(ζ_pj − ζ_mj) − (ψ_pj − ψ_mj)(ζ_0e − ζ_0w)
+    {+1, 0, +1, +1, 0},
+    {-1, 0, +1, -1, 0},
+    {-1, 0, -1, +1, 0},
+    {+1, 0, -1, -1, 0},
+    {-1, +1, 0, 0, +1},
+    {+1, +1, 0, 0, -1},
+    {+1, -1, 0, 0, +1},
+    {-1, -1, 0, 0, -1},
+    // j2 = ψ_0e(ζ_pe − ζ_me) − ψ_0w(ζ_pw − ζ_mw) − ψ_pj(ζ_pe − ζ_pw) + ψ_mj(ζ_me − ζ_mw)
+    {+1, 0, +1, +1, +1},
+    {-1, 0, +1, -1, +1},
+    {-1, 0, -1, +1, -1},
+    {+1, 0, -1, -1, -1},
+    {-1, +1, 0, +1, +1},
+    {+1, +1, 0, +1, -1},
+    {+1, -1, 0, -1, +1},
+    {-1, -1, 0, -1, -1},
+    // j3 = ζ_pj(ψ_pe − ψ_pw) − ζ_mj(ψ_me − ψ_mw) − ζ_0e(ψ_pe − ψ_me) + ζ_0w(ψ_pw − ψ_mw)
+    {+1, +1, +1, +1, 0},
+    {-1, +1, -1, +1, 0},
+    {-1, -1, +1, -1, 0},
+    {+1, -1, -1, -1, 0},
+    {-1, +1, +1, 0, +1},
+    {+1, -1, +1, 0, +1},
+    {+1, +1, -1, 0, -1},
+    {-1, -1, -1, 0, -1}};
+
 /// The largest modified wavenumber of the difference of advection order 2 or 4, times the spacing: 1, and
 /// max_x[(4/3)sin x − (1/6)sin 2x] = 1.3722 (x = 1.797). The CFL number's θ and ξ parts are scaled by the
 /// factor of their direction's order, so that one limit holds for every order.

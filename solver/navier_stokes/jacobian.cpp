@@ -17,41 +17,6 @@ namespace magnus {
 
 namespace {
 
-/// Arakawa's Jacobian (J++ + J+× + J×+)/3 as 24 bilinear terms c·ψ(i+pi, j+pj)·ζ(i+zi, j+zj), times
-/// 1/(12ΔθΔξ): the same sums as arakawa_12 (j1, j2, j3 there, in that order), written out so
-/// that each term's two derivatives are its two factors.
-struct ArakawaTerm {
-  int c, pi, pj, zi, zj;
-};
-constexpr ArakawaTerm kArakawa[24] = {
-    // j1 = (ψ_0e − ψ_0w)(ζ_pj − ζ_mj) − (ψ_pj − ψ_mj)(ζ_0e − ζ_0w)
-    {+1, 0, +1, +1, 0},
-    {-1, 0, +1, -1, 0},
-    {-1, 0, -1, +1, 0},
-    {+1, 0, -1, -1, 0},
-    {-1, +1, 0, 0, +1},
-    {+1, +1, 0, 0, -1},
-    {+1, -1, 0, 0, +1},
-    {-1, -1, 0, 0, -1},
-    // j2 = ψ_0e(ζ_pe − ζ_me) − ψ_0w(ζ_pw − ζ_mw) − ψ_pj(ζ_pe − ζ_pw) + ψ_mj(ζ_me − ζ_mw)
-    {+1, 0, +1, +1, +1},
-    {-1, 0, +1, -1, +1},
-    {-1, 0, -1, +1, -1},
-    {+1, 0, -1, -1, -1},
-    {-1, +1, 0, +1, +1},
-    {+1, +1, 0, +1, -1},
-    {+1, -1, 0, -1, +1},
-    {-1, -1, 0, -1, -1},
-    // j3 = ζ_pj(ψ_pe − ψ_pw) − ζ_mj(ψ_me − ψ_mw) − ζ_0e(ψ_pe − ψ_me) + ζ_0w(ψ_pw − ψ_mw)
-    {+1, +1, +1, +1, 0},
-    {-1, +1, -1, +1, 0},
-    {-1, -1, +1, -1, 0},
-    {+1, -1, -1, -1, 0},
-    {-1, +1, +1, 0, +1},
-    {+1, -1, +1, 0, +1},
-    {+1, +1, -1, 0, -1},
-    {-1, -1, -1, 0, -1}};
-
 /// Where assemble() puts its entries: the first assembly merges the entries of each run of one row into
 /// distinct triplets (the k-th add → slot[k]), so the compressed columns are built from 2.5–3 times fewer
 /// triplets; the later ones only add into the values. Mirror: only the rows of the nodes 0 < θ_j < π enter
