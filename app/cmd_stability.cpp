@@ -1,7 +1,8 @@
 // magnus stability CASE [--set k=v]… [--critical-spin A:B | --critical-reynolds A:B] [--tolerance T]
-//                  [--eigensolver NAME] [--json]
-// The steady state's leading eigenvalues (growth rate, St; stable or not), or the onset of shedding: the
-// critical spin ratio or Reynolds number where the wake's pair crosses the axis.
+//                  [--spanwise [--beta A:B:STEP]] [--eigensolver NAME] [--json]
+// The steady state's leading eigenvalues (growth rate, St; stable or not) and, with --spanwise, those of
+// three-dimensional disturbances per spanwise wavenumber; or the onset of shedding: the critical spin ratio
+// or Reynolds number where the wake's pair crosses the axis.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "app/spanwise_report.hpp"
 #include "io/case_file.hpp"
 #include "io/case_keys.hpp"
 #include "io/json_output.hpp"
@@ -30,6 +32,8 @@ namespace {
 
 struct StabilityCliOptions {
   std::string case_path, critical, critical_re, tolerance, curve_re, curve_alpha;
+  std::string beta = "0.5:4:0.5";  ///< --beta: the spanwise wavenumbers β·D, A:B:STEP
+  bool spanwise = false, beta_given = false;
   std::string eigensolver = StabilityOptions{}.eigensolver;
   std::vector<std::string> sets;
   bool json = false;
@@ -232,6 +236,14 @@ void command_stability(const StabilityCliOptions& o) {
                                 ": an onset curve needs --critical-spin A:B (with --reynolds) or --critical-reynolds A:B "
                                 "(with --spin-ratio)");
   const CriticalRange range = critical ? parse_critical(o) : CriticalRange{};
+  if (critical && o.spanwise)
+    throw std::invalid_argument("--spanwise: the 3D scan is of one steady state; not with --critical-spin or --critical-reynolds");
+  if (o.beta_given && !o.spanwise) throw std::invalid_argument("--beta: only used with --spanwise");
+  std::vector<double> beta_D;
+  if (o.spanwise) {
+    beta_D = parse_sweep_range(o.beta, "--beta").values;
+    if (!(beta_D.front() >= 0.0)) throw std::invalid_argument("--beta " + o.beta + ": wavenumbers β·D must be ≥ 0");
+  }
   if (!known_eigensolver(o.eigensolver))
     throw std::invalid_argument(fmt::format("--eigensolver {}: unknown eigensolver (expected {})",
                                             cut_input(o.eigensolver), eigensolver_names()));
@@ -272,6 +284,7 @@ void command_stability(const StabilityCliOptions& o) {
     j = {{"reynolds", p.reynolds()}, {"spin_ratio", alpha}, {"stable", st.stable}, {"eigenvalues", eig_json(st)},
          {"seconds", s.newton_seconds + st.seconds}, {"solves", st.solves}, {"eigensolver", so.eigensolver},
          {"search", search_json(st)}};
+    if (o.spanwise) j["spanwise"] = spanwise_report(p, s.state, beta_D, o.eigensolver, o.json, text);
   } else if (range.others.empty()) {
     critical_report(p, range, o.eigensolver, o.json, text, j);
   } else {
@@ -301,6 +314,11 @@ void add_stability_command(CLI::App& app) {
                   "with --critical-reynolds: the curve Re_c(α) over spin ratios A:B:STEP");
   cmd->add_option("--tolerance", o->tolerance,
                   "how closely the crossing is found: the secant root's last move, or the bracket (default 0.01)");
+  cmd->add_flag("--spanwise", o->spanwise,
+                "also the 3D stability: the leading eigenvalue for disturbances ∝ e^{iβz} per wavenumber, the most "
+                "unstable wavelength and whether the spanwise-uniform (2D) flow is stable");
+  cmd->add_option("--beta", o->beta, "with --spanwise: the wavenumbers β·D as A:B:STEP (default 0.5:4:0.5)")
+      ->each([o](const std::string&) { o->beta_given = true; });
   cmd->add_option("--eigensolver", o->eigensolver,
                   "each shift's search: arnoldi (hand-written Krylov–Schur) or arpack (ARPACK-ng); default " +
                       StabilityOptions{}.eigensolver);

@@ -1,0 +1,53 @@
+#include "app/spanwise_report.hpp"
+
+#include <fmt/core.h>
+
+#include <cstdio>
+
+#include "io/text_format.hpp"
+#include "postproc/navier_stokes/spanwise_scan.hpp"
+
+namespace magnus {
+
+Json spanwise_report(const NsParams& p, const NsState& steady, const std::vector<double>& beta_D,
+                     const std::string& eigensolver, bool json, std::string& text) {
+  StabilityOptions o = quick_stability_options();  // per wavenumber: the default shifts, no extra ones
+  o.eigensolver = eigensolver;
+  auto line = [](const SpanwisePoint& pt) {
+    if (!pt.found) return fmt::format("{:>8.4g}  {:>9}  undefined: no eigenvalue converged", pt.beta_D, "");
+    return fmt::format("{:>8.4g}  {:>9}  {:>+10.5f}  {:>+10.5f}  {:>7}  {:>7.1f}{}", pt.beta_D,
+                       pt.beta_D > 0.0 ? fmt::format("{:.4g}", 2.0 * M_PI / pt.beta_D) : "∞", pt.lambda.real(),
+                       pt.lambda.imag(), pt.solves, pt.seconds, pt.covered ? "" : "  (strip not covered)");
+  };
+  const std::string head = fmt::format("{:>8}  {:>9}  {:>10}  {:>10}  {:>7}  {:>7}", "β·D", "λ_z/D", "growth",
+                                       "frequency", "solves", "time s");
+  if (!json) std::fprintf(stderr, "spanwise scan (λ·D/U of the leading eigenvalue per wavenumber)\n%s\n", head.c_str());
+  const SpanwiseScan s = spanwise_scan(p, steady, beta_D, o, [&](const SpanwisePoint& pt) {
+    if (!json) std::fprintf(stderr, "%s\n", line(pt).c_str());
+  });
+  text += "spanwise       the leading eigenvalue λ·D/U for disturbances ∝ e^{iβz}, per wavenumber\n" + head + "\n";
+  Json rows = Json::array();
+  for (const SpanwisePoint& pt : s.points) {
+    text += line(pt) + "\n";
+    rows.push_back(pt.found ? Json{{"beta_D", pt.beta_D},
+                                   {"wavelength_D", pt.beta_D > 0.0 ? Json(2.0 * M_PI / pt.beta_D) : Json()},
+                                   {"growth_rate", pt.lambda.real()},
+                                   {"frequency", pt.lambda.imag()},
+                                   {"covered", pt.covered},
+                                   {"solves", pt.solves},
+                                   {"seconds", pt.seconds}}
+                            : Json{{"beta_D", pt.beta_D}, {"undefined", "no eigenvalue converged"}});
+  }
+  text += "3D verdict     " + s.verdict + "\n";
+  Json j = {{"points", rows}, {"stable", s.stable}, {"verdict", s.verdict}};
+  if (!s.points.empty() && s.beta_D > 0.0) {
+    j["most_unstable_beta_D"] = s.beta_D;
+    j["most_unstable_wavelength_D"] = s.wavelength_D();
+    j["most_unstable_growth_rate"] = s.growth;
+    j["stationary"] = s.stationary;
+    j["inside_scan"] = s.interior;
+  }
+  return j;
+}
+
+}  // namespace magnus

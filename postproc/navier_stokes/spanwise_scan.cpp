@@ -1,0 +1,86 @@
+#include "postproc/navier_stokes/spanwise_scan.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <tuple>
+
+namespace magnus {
+
+double SpanwiseScan::wavelength_D() const { return beta_D > 0.0 ? 2.0 * M_PI / beta_D : 0.0; }
+
+std::pair<double, double> parabola_vertex(const double x[3], const double y[3]) {
+  // Divided differences: y = y0 + d1 (x − x0) + d2 (x − x0)(x − x1).
+  const double d01 = (y[1] - y[0]) / (x[1] - x[0]), d12 = (y[2] - y[1]) / (x[2] - x[1]);
+  const double d2 = (d12 - d01) / (x[2] - x[0]);
+  if (!(d2 < 0.0)) return {x[1], y[1]};  // not a maximum
+  const double xv = 0.5 * (x[0] + x[1]) - d01 / (2.0 * d2);
+  if (!(xv >= x[0] && xv <= x[2])) return {x[1], y[1]};
+  return {xv, y[0] + d01 * (xv - x[0]) + d2 * (xv - x[0]) * (xv - x[1])};
+}
+
+namespace {
+
+/// The most unstable wavenumber of the scan's points (sorted by β), the verdict.
+void read_scan(SpanwiseScan& s) {
+  std::vector<const SpanwisePoint*> found;
+  for (const auto& pt : s.points)
+    if (pt.found) found.push_back(&pt);
+  if (found.empty()) {
+    s.verdict = "undefined: no eigenvalue converged at any wavenumber";
+    return;
+  }
+  std::sort(found.begin(), found.end(), [](auto* a, auto* b) { return a->beta_D < b->beta_D; });
+  size_t k = 0;
+  for (size_t q = 1; q < found.size(); ++q)
+    if (found[q]->growth() > found[k]->growth()) k = q;
+  s.beta_D = found[k]->beta_D, s.growth = found[k]->growth();
+  s.stationary = found[k]->lambda.imag() == 0.0;
+  s.interior = k > 0 && k + 1 < found.size();
+  if (s.interior) {
+    const double x[3] = {found[k - 1]->beta_D, found[k]->beta_D, found[k + 1]->beta_D};
+    const double y[3] = {found[k - 1]->growth(), found[k]->growth(), found[k + 1]->growth()};
+    std::tie(s.beta_D, s.growth) = parabola_vertex(x, y);
+  }
+  s.stable = true;
+  for (auto* pt : found) s.stable = s.stable && pt->growth() < 0.0;
+  const std::string where =
+      s.beta_D > 0.0 ? fmt::format("λ_z = {:.3g} D (β·D = {:.3g})", s.wavelength_D(), s.beta_D) : "β = 0 (2D)";
+  const std::string edge = s.interior ? "" : ", at the end of the wavenumbers scanned";
+  if (s.stable)
+    s.verdict = fmt::format("spanwise-uniform flow is stable to 3D disturbances at the wavenumbers scanned "
+                            "(least stable {}, growth rate {:+.4f} U/D{})",
+                            where, s.growth, edge);
+  else if (s.beta_D > 0.0)
+    s.verdict = fmt::format("spanwise-uniform flow is unstable to a {} 3D mode at {}, growth rate {:+.4f} U/D{}",
+                            s.stationary ? "stationary" : "oscillating", where, s.growth, edge);
+  else
+    s.verdict = fmt::format("unstable to 2D disturbances first (β = 0, growth rate {:+.4f} U/D)", s.growth);
+}
+
+}  // namespace
+
+SpanwiseScan spanwise_scan(const NsParams& p, const NsState& steady, const std::vector<double>& beta_D,
+                           const StabilityOptions& o, const std::function<void(const SpanwisePoint&)>& on_point) {
+  if (beta_D.empty()) throw std::invalid_argument("spanwise_scan: no wavenumbers");
+  for (double b : beta_D)
+    if (!(b >= 0.0) || !std::isfinite(b))
+      throw std::invalid_argument(fmt::format("spanwise_scan: β·D must be finite and ≥ 0 (got {})", b));
+  SpanwiseScan s;
+  const double D = 2.0 * p.a;
+  for (double b : beta_D) {
+    const StabilityResult r = spanwise_eigenvalues(p, steady, b / D, 6, o);
+    SpanwisePoint pt;
+    pt.beta_D = b, pt.found = !r.eigenvalues.empty(), pt.covered = r.covered;
+    if (pt.found) pt.lambda = r.eigenvalues.front();
+    pt.seconds = r.seconds, pt.solves = r.solves;
+    s.points.push_back(pt);
+    if (on_point) on_point(pt);
+  }
+  read_scan(s);
+  return s;
+}
+
+}  // namespace magnus

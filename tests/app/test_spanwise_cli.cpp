@@ -1,0 +1,49 @@
+// magnus stability --spanwise: the 3D scan per wavenumber, its verdict in the JSON, refusals before solving.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "support.hpp"
+
+using namespace magnus::test;
+
+namespace {
+const std::string s_map = std::string(MAGNUS_SOURCE_DIR) + "/cases/s_map.toml";
+}
+
+TEST_CASE("magnus stability --spanwise: the growth rate per wavenumber and the verdict", "[app][stability]") {
+  const std::string dir = temp_dir("ns-spanwise-cli");
+  // Re 40 without spin on the map's grid: the steady wake, β·D = 0 and 1.
+  Outcome o = magnus_cmd({"stability", s_map, "--set", "flow.reynolds=40", "--spanwise", "--beta", "0:1:1", "--json"}, dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  const auto j = nlohmann::json::parse(o.out);
+  const auto& sp = j["spanwise"];
+  REQUIRE(sp["points"].size() == 2);
+  // β = 0 is the 2D problem: its leading eigenvalue is the 2D one.
+  CHECK(sp["points"][0]["beta_D"].get<double>() == 0.0);
+  CHECK(sp["points"][0]["wavelength_D"].is_null());
+  CHECK(sp["points"][0]["growth_rate"].get<double>() ==
+        Approx(j["eigenvalues"][0]["growth_rate"].get<double>()).margin(1e-9));
+  CHECK(sp["points"][1]["wavelength_D"].get<double>() == Approx(2.0 * M_PI));
+  // Spanwise variation damps this wake: β·D = 1 decays faster than the 2D far-field modes.
+  CHECK(sp["points"][1]["growth_rate"].get<double>() < sp["points"][0]["growth_rate"].get<double>());
+  CHECK(sp["stable"].get<bool>() == (sp["points"][0]["growth_rate"].get<double>() < 0.0));
+  CHECK(sp["verdict"].get<std::string>().find("spanwise-uniform flow is stable") != std::string::npos);
+
+  for (auto [args, expect] :
+       {std::pair{std::vector<std::string>{"--beta", "0:1:1"}, "only used with --spanwise"},
+        {std::vector<std::string>{"--spanwise", "--beta", "-1:1:1"}, "must be ≥ 0"},
+        {std::vector<std::string>{"--spanwise", "--critical-spin", "1:2"}, "not with --critical-spin"}}) {
+    std::vector<std::string> a = {"stability", s_map};
+    a.insert(a.end(), args.begin(), args.end());
+    const Outcome b = magnus_cmd(a, dir);
+    INFO(b.err);
+    CHECK(b.status != 0);
+    CHECK(one_line(b.err));
+    CHECK(b.err.find(expect) != std::string::npos);
+  }
+}
