@@ -284,7 +284,8 @@ void command_stability(const StabilityCliOptions& o) {
     j = {{"reynolds", p.reynolds()}, {"spin_ratio", alpha}, {"stable", st.stable}, {"eigenvalues", eig_json(st)},
          {"seconds", s.newton_seconds + st.seconds}, {"solves", st.solves}, {"eigensolver", so.eigensolver},
          {"search", search_json(st)}};
-    if (o.spanwise) j["spanwise"] = spanwise_report(p, s.state, beta_D, o.eigensolver, o.json, text);
+    // The 3D stability of the flow that is there: the steady state when it is stable, else the shedding orbit.
+    if (o.spanwise) j["spanwise"] = spanwise_report(p, st.stable ? &s.state : nullptr, beta_D, o.eigensolver, o.json, text);
   } else if (range.others.empty()) {
     critical_report(p, range, o.eigensolver, o.json, text, j);
   } else {

@@ -9,7 +9,7 @@
 
 namespace magnus {
 
-Json spanwise_report(const NsParams& p, const NsState& steady, const std::vector<double>& beta_D,
+Json spanwise_report(const NsParams& p, const NsState* steady, const std::vector<double>& beta_D,
                      const std::string& eigensolver, bool json, std::string& text) {
   StabilityOptions o = quick_stability_options();  // per wavenumber: the default shifts, no extra ones
   o.eigensolver = eigensolver;
@@ -20,26 +20,42 @@ Json spanwise_report(const NsParams& p, const NsState& steady, const std::vector
                        pt.lambda.imag(), pt.solves, pt.seconds, pt.covered ? "" : "  (strip not covered)");
   };
   const std::string head = fmt::format("{:>8}  {:>9}  {:>10}  {:>10}  {:>7}  {:>7}", "β·D", "λ_z/D", "growth",
-                                       "frequency", "solves", "time s");
-  if (!json) std::fprintf(stderr, "spanwise scan (λ·D/U of the leading eigenvalue per wavenumber)\n%s\n", head.c_str());
-  const SpanwiseScan s = spanwise_scan(p, steady, beta_D, o, [&](const SpanwisePoint& pt) {
+                                       "frequency", steady ? "solves" : "steps", "time s");
+  const char* what = steady ? "the leading eigenvalue λ·D/U of the steady state"
+                            : "the shedding orbit's Floquet exponent ln(μ)·D/(U T) of the leading multiplier μ";
+  if (!json) std::fprintf(stderr, "spanwise scan: %s per wavenumber\n%s\n", what, head.c_str());
+  auto progress = [&](const SpanwisePoint& pt) {
     if (!json) std::fprintf(stderr, "%s\n", line(pt).c_str());
-  });
-  text += "spanwise       the leading eigenvalue λ·D/U for disturbances ∝ e^{iβz}, per wavenumber\n" + head + "\n";
+  };
+  const SpanwiseScan s = steady ? spanwise_scan(p, *steady, beta_D, o, progress)
+                                : floquet_scan(p, beta_D, 300.0 * 2.0 * p.a / p.U, progress);
+  text += fmt::format("spanwise       {} for disturbances ∝ e^{{iβz}}, per wavenumber{}\n", what,
+                      steady ? "" : fmt::format(" (period T = {:.4f} D/U)", s.T)) +
+          head + "\n";
   Json rows = Json::array();
   for (const SpanwisePoint& pt : s.points) {
     text += line(pt) + "\n";
-    rows.push_back(pt.found ? Json{{"beta_D", pt.beta_D},
+    Json row = pt.found ? Json{{"beta_D", pt.beta_D},
                                    {"wavelength_D", pt.beta_D > 0.0 ? Json(2.0 * M_PI / pt.beta_D) : Json()},
                                    {"growth_rate", pt.lambda.real()},
                                    {"frequency", pt.lambda.imag()},
                                    {"covered", pt.covered},
                                    {"solves", pt.solves},
                                    {"seconds", pt.seconds}}
-                            : Json{{"beta_D", pt.beta_D}, {"undefined", "no eigenvalue converged"}});
+                            : Json{{"beta_D", pt.beta_D}, {"undefined", "no eigenvalue converged"}};
+    if (pt.found && !steady) row["multiplier_real"] = pt.multiplier.real(), row["multiplier_imag"] = pt.multiplier.imag();
+    rows.push_back(row);
   }
   text += "3D verdict     " + s.verdict + "\n";
-  Json j = {{"points", rows}, {"stable", s.stable}, {"verdict", s.verdict}};
+  // Below n_θ 96 the pressure's source has given spurious 3D growth (README: three-dimensional stability).
+  const bool coarse = p.n_theta < kSpanwiseTrustedNTheta;
+  if (coarse)
+    text += fmt::format("caution        n_θ {} is below {}: on such grids the scan has shown spurious 3D growth; "
+                        "check the verdict on a finer grid\n",
+                        p.n_theta, kSpanwiseTrustedNTheta);
+  Json j = {{"base", steady ? "steady" : "periodic"}, {"points", rows}, {"stable", s.stable}, {"verdict", s.verdict}};
+  if (!steady) j["period_D_over_U"] = s.T;
+  if (coarse) j["caution"] = fmt::format("n_theta {} is below {}: spurious 3D growth seen on such grids", p.n_theta, kSpanwiseTrustedNTheta);
   if (!s.points.empty() && s.beta_D > 0.0) {
     j["most_unstable_beta_D"] = s.beta_D;
     j["most_unstable_wavelength_D"] = s.wavelength_D();

@@ -7,6 +7,10 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "postproc/navier_stokes/orbit.hpp"
+#include "postproc/navier_stokes/run_paths.hpp"
+#include "solver/navier_stokes/floquet.hpp"
+
 namespace magnus {
 
 double SpanwiseScan::wavelength_D() const { return beta_D > 0.0 ? 2.0 * M_PI / beta_D : 0.0; }
@@ -37,7 +41,8 @@ void read_scan(SpanwiseScan& s) {
   for (size_t q = 1; q < found.size(); ++q)
     if (found[q]->growth() > found[k]->growth()) k = q;
   s.beta_D = found[k]->beta_D, s.growth = found[k]->growth();
-  s.stationary = found[k]->lambda.imag() == 0.0;
+  s.stationary = s.periodic ? found[k]->multiplier.imag() == 0.0 && found[k]->multiplier.real() > 0.0
+                             : found[k]->lambda.imag() == 0.0;
   s.interior = k > 0 && k + 1 < found.size();
   if (s.interior) {
     const double x[3] = {found[k - 1]->beta_D, found[k]->beta_D, found[k + 1]->beta_D};
@@ -55,7 +60,9 @@ void read_scan(SpanwiseScan& s) {
                             where, s.growth, edge);
   else if (s.beta_D > 0.0)
     s.verdict = fmt::format("spanwise-uniform flow is unstable to a {} 3D mode at {}, growth rate {:+.4f} U/D{}",
-                            s.stationary ? "stationary" : "oscillating", where, s.growth, edge);
+                            s.periodic ? (s.stationary ? "synchronous" : "non-synchronous")
+                                       : (s.stationary ? "stationary" : "oscillating"),
+                            where, s.growth, edge);
   else
     s.verdict = fmt::format("unstable to 2D disturbances first (β = 0, growth rate {:+.4f} U/D)", s.growth);
 }
@@ -76,6 +83,46 @@ SpanwiseScan spanwise_scan(const NsParams& p, const NsState& steady, const std::
     pt.beta_D = b, pt.found = !r.eigenvalues.empty(), pt.covered = r.covered;
     if (pt.found) pt.lambda = r.eigenvalues.front();
     pt.seconds = r.seconds, pt.solves = r.solves;
+    s.points.push_back(pt);
+    if (on_point) on_point(pt);
+  }
+  read_scan(s);
+  return s;
+}
+
+}  // namespace magnus
+
+namespace magnus {
+
+SpanwiseScan floquet_scan(const NsParams& p, const std::vector<double>& beta_D, double t_end,
+                          const std::function<void(const SpanwisePoint&)>& on_point) {
+  if (beta_D.empty()) throw std::invalid_argument("floquet_scan: no wavenumbers");
+  const PolarGrid g = ns_grid(p);
+  NsState start = impulsive_start(p, g);
+  break_symmetry(p, g, start);
+  OrbitRunOptions ro;
+  ro.t_end = t_end;
+  const OrbitRun run = periodic_orbit_run(p, ro, std::move(start));
+  if (!run.orbit.converged)
+    throw std::runtime_error("the shedding orbit did not converge (" + run.orbit.message + ")");
+  const double T = run.orbit.T, unit = stability_speed(p) / (2.0 * p.a);  // U/D in 1/s
+  const NsOperator op(p, T / run.orbit.steps);
+  std::vector<NsState> samples{run.orbit.state};
+  period_map(op, run.orbit.state, run.orbit.steps - 1, [&](const NsState& s) { samples.push_back(s); });
+  SpanwiseScan s;
+  s.periodic = true, s.T = T * unit;
+  FloquetOptions fo;
+  fo.krylov = 30;
+  for (double b : beta_D) {
+    const FloquetResult r = floquet_multipliers(p, samples, T, b / (2.0 * p.a), fo);
+    SpanwisePoint pt;
+    pt.beta_D = b, pt.found = !r.multipliers.empty() && r.multipliers.front() != 0.0;
+    if (pt.found) {
+      pt.multiplier = r.multipliers.front();
+      pt.lambda = std::log(pt.multiplier) / (T * unit);
+      pt.covered = r.residuals.front() < 1e-3;  // the Ritz estimate of the leading multiplier
+    }
+    pt.seconds = r.seconds, pt.solves = r.periods * r.steps;
     s.points.push_back(pt);
     if (on_point) on_point(pt);
   }

@@ -1,7 +1,8 @@
 #pragma once
-// Where the 2D answer is real: the leading eigenvalue of a steady state's spanwise problem (spanwise.hpp)
-// over a set of wavenumbers β, the most unstable one (a parabola through the three around the largest
-// growth rate) and its wavelength λ_z = 2π/β, and the verdict in words.
+// Where the 2D answer is real: the leading eigenvalue of a steady state's spanwise problem (spanwise.hpp),
+// or the leading Floquet multiplier μ of a shedding orbit (floquet.hpp; exponent ln μ/T), over a set of
+// wavenumbers β, the most unstable one (a parabola through the three around the largest growth rate) and
+// its wavelength λ_z = 2π/β, and the verdict in words.
 #include <complex>
 #include <functional>
 #include <string>
@@ -14,7 +15,10 @@ namespace magnus {
 /// One wavenumber of the scan.
 struct SpanwisePoint {
   double beta_D = 0.0;           ///< β·D, dimensionless (λ_z/D = 2π/(β·D))
-  std::complex<double> lambda;   ///< the leading eigenvalue, U/D (0 when none converged)
+  /// The leading eigenvalue, U/D (0 when none converged); of an orbit the Floquet exponent ln(μ)/T
+  /// (its imaginary part arg μ/T: 0 for a synchronous mode, π/T for period doubling).
+  std::complex<double> lambda;
+  std::complex<double> multiplier;  ///< of an orbit: the leading Floquet multiplier μ (1: neutral); else 0
   bool found = false;            ///< an eigenvalue converged
   bool covered = false;          ///< the shifts' disks covered the strip right of it (StabilityResult::covered)
   double seconds = 0.0;          ///< wall time of this wavenumber, s
@@ -29,7 +33,11 @@ struct SpanwiseScan {
   /// neighbours when it lies inside the scan (interior = true), and the growth rate there, U/D.
   double beta_D = 0.0, growth = 0.0;
   bool interior = false;
-  bool stationary = false;  ///< the leading eigenvalue at that wavenumber is real
+  bool periodic = false;    ///< the base is a shedding orbit (Floquet), not a steady state
+  double T = 0.0;           ///< the orbit's period, D/U (periodic only)
+  /// Steady base: the leading eigenvalue at that wavenumber is real (a stationary mode). Orbit: the leading
+  /// multiplier is real and positive (a synchronous mode, as modes A and B of the cylinder wake).
+  bool stationary = false;
   bool stable = false;      ///< every growth rate found is < 0 (false when none was found)
   /// Spanwise wavelength λ_z/D = 2π/(β·D) of the most unstable wavenumber; 0 (undefined) at β = 0.
   double wavelength_D() const;
@@ -41,6 +49,12 @@ struct SpanwiseScan {
 SpanwiseScan spanwise_scan(const NsParams& p, const NsState& steady, const std::vector<double>& beta_D,
                            const StabilityOptions& o,
                            const std::function<void(const SpanwisePoint&)>& on_point = {});
+
+/// The shedding orbit of p (a short march from rest, then Newton–GMRES shooting; t_end: the march gives up
+/// there, s) and the leading Floquet multiplier at each β·D of beta_D; on_point after each one. Throws
+/// std::runtime_error when the flow does not shed or the orbit does not converge.
+SpanwiseScan floquet_scan(const NsParams& p, const std::vector<double>& beta_D, double t_end,
+                          const std::function<void(const SpanwisePoint&)>& on_point = {});
 
 /// The vertex (x, y) of the parabola through three points (x_k distinct); the middle point when they are
 /// collinear or the vertex leaves [x_0, x_2].

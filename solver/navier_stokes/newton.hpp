@@ -88,6 +88,8 @@ class SteadyJacobian {
   /// Assemble ∂F/∂x at x and factor it (the symbolic analysis once, on the first call). Throws
   /// std::runtime_error when UMFPACK fails or finds the matrix singular.
   void factor(const std::vector<double>& x);
+  /// Assemble ∂F/∂x at x without factoring it (the linear stability problems take the matrix alone).
+  void assemble(const std::vector<double>& x);
   /// Whether the factors are of the mirror-symmetric half (see the constructor).
   bool mirror() const { return mirror_; }
   /// Solve J·y = b (transpose: Jᵀ·y = b) with the last factors; throws std::logic_error before factor().
@@ -107,7 +109,6 @@ class SteadyJacobian {
   long lu_nonzeros() const { return lu_nnz_; }
 
  private:
-  void assemble(const std::vector<double>& x);
   void build_half();  ///< the half system's pattern from the whole one's (mirror, first factor)
   /// The system UMFPACK factors: the whole (Ap_, Ai_, Ax_) or, with mirror, the half (Hp_, Hi_, Hx_).
   const long* fp() const { return mirror_ ? Hp_.data() : Ap_.data(); }

@@ -41,31 +41,38 @@ std::vector<double> EigenProblem::multiply(const std::vector<double>& x) const {
   return y;
 }
 
-ShiftedLu::ShiftedLu(const EigenProblem& ep, cplx sigma, void** symbolic) {
+void shifted_matrix(const EigenProblem& ep, cplx sigma, std::vector<long>& Ap, std::vector<long>& Ai,
+                    std::vector<double>& Ax, std::vector<double>& Az) {
   const long n = ep.n;
   const std::vector<long>&Jp = ep.Ap, &Ji = ep.Ai;
   const std::vector<double>& Jx = ep.Ax;
   const std::vector<double>& m = ep.m;
-  Ap_.assign(size_t(n) + 1, 0);
+  Ap.assign(size_t(n) + 1, 0);
+  Ai.clear(), Ax.clear(), Az.clear();
   for (long c = 0; c < n; ++c) {
     bool diag = false;
     for (long t = Jp[size_t(c)]; t < Jp[size_t(c) + 1]; ++t) {
       const long r = Ji[size_t(t)];
       if (!diag && m[size_t(c)] != 0.0 && r >= c) {
-        if (r > c) Ai_.push_back(c), Ax_.push_back(0.0), Az_.push_back(0.0);
+        if (r > c) Ai.push_back(c), Ax.push_back(0.0), Az.push_back(0.0);
         diag = true;
       }
-      Ai_.push_back(r), Ax_.push_back(Jx[size_t(t)]), Az_.push_back(0.0);
+      Ai.push_back(r), Ax.push_back(Jx[size_t(t)]), Az.push_back(0.0);
     }
-    if (!diag && m[size_t(c)] != 0.0) Ai_.push_back(c), Ax_.push_back(0.0), Az_.push_back(0.0);
-    Ap_[size_t(c) + 1] = long(Ai_.size());
+    if (!diag && m[size_t(c)] != 0.0) Ai.push_back(c), Ax.push_back(0.0), Az.push_back(0.0);
+    Ap[size_t(c) + 1] = long(Ai.size());
     if (m[size_t(c)] == 0.0) continue;
-    for (long t = Ap_[size_t(c)]; t < Ap_[size_t(c) + 1]; ++t)
-      if (Ai_[size_t(t)] == c) {
-        Ax_[size_t(t)] -= sigma.real() * m[size_t(c)];
-        Az_[size_t(t)] -= sigma.imag() * m[size_t(c)];
+    for (long t = Ap[size_t(c)]; t < Ap[size_t(c) + 1]; ++t)
+      if (Ai[size_t(t)] == c) {
+        Ax[size_t(t)] -= sigma.real() * m[size_t(c)];
+        Az[size_t(t)] -= sigma.imag() * m[size_t(c)];
       }
   }
+}
+
+ShiftedLu::ShiftedLu(const EigenProblem& ep, cplx sigma, void** symbolic) {
+  const long n = ep.n;
+  shifted_matrix(ep, sigma, Ap_, Ai_, Ax_, Az_);
   double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
   umfpack_zl_defaults(control);
   // The problem's order (the grid's nested dissection, as for the real Jacobian: J − σM has J's pattern).

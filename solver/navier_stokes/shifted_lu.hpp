@@ -29,6 +29,11 @@ class ShiftedLu {
   void* numeric_ = nullptr;
 };
 
+/// J − σM of ep in UMFPACK's split complex form (Az: the imaginary parts; all zero for a real σ): J's pattern
+/// with a diagonal entry in every column that M touches.
+void shifted_matrix(const EigenProblem& ep, std::complex<double> sigma, std::vector<long>& Ap, std::vector<long>& Ai,
+                    std::vector<double>& Ax, std::vector<double>& Az);
+
 /// ‖Jx − λMx‖/(‖Jx‖ + |λ|‖Mx‖): the relative residual of an eigenpair of J x = λ M x (λ in 1/s).
 double relative_residual(const EigenProblem& ep, std::complex<double> lambda,
                          const std::vector<std::complex<double>>& x);

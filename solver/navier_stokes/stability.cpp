@@ -165,7 +165,7 @@ StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, in
 
 EigenProblem stability_problem(const NsParams& p, const NsState& steady) {
   SteadyJacobian jac(p);
-  jac.factor(jac.pack(steady));  // assembles J at the state (its real LU is not used)
+  jac.assemble(jac.pack(steady));
   EigenProblem ep;
   ep.n = jac.size();
   ep.Ap = jac.col_ptr(), ep.Ai = jac.row_index(), ep.Ax = jac.values();

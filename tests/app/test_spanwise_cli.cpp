@@ -33,6 +33,27 @@ TEST_CASE("magnus stability --spanwise: the growth rate per wavenumber and the v
   CHECK(sp["points"][1]["growth_rate"].get<double>() < sp["points"][0]["growth_rate"].get<double>());
   CHECK(sp["stable"].get<bool>() == (sp["points"][0]["growth_rate"].get<double>() < 0.0));
   CHECK(sp["verdict"].get<std::string>().find("spanwise-uniform flow is stable") != std::string::npos);
+  CHECK(sp["base"] == "steady");
+  // The map's grid (n_θ 48) is below the resolution at which no spurious growth has been seen: it says so.
+  CHECK(sp["caution"].get<std::string>().find("spurious") != std::string::npos);
+
+  // Re 100 sheds: the scan is of its orbit (Floquet). n_θ 32, R = 20a: the exponent is ln(μ)/T in U/D.
+  o = magnus_cmd({"stability", s_map, "--set", "flow.reynolds=100", "--set", "grid.n_theta=32", "--spanwise",
+                  "--beta", "1.6:1.6:1", "--json"},
+                 dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  const auto k = nlohmann::json::parse(o.out);
+  CHECK(k["stable"] == false);
+  const auto& fl = k["spanwise"];
+  CHECK(fl["base"] == "periodic");
+  const double T = fl["period_D_over_U"];
+  CHECK(T > 5.0);  // St = 1/T between 0.12 and 0.2
+  CHECK(T < 8.5);
+  REQUIRE(fl["points"].size() == 1);
+  const auto& pt = fl["points"][0];
+  const double mu = std::hypot(pt["multiplier_real"].get<double>(), pt["multiplier_imag"].get<double>());
+  CHECK(pt["growth_rate"].get<double>() == Approx(std::log(mu) / T).margin(1e-12));
 
   for (auto [args, expect] :
        {std::pair{std::vector<std::string>{"--beta", "0:1:1"}, "only used with --spanwise"},

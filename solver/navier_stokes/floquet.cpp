@@ -1,0 +1,301 @@
+// Floquet multipliers of a periodic base to spanwise disturbances (floquet.hpp): the base's harmonics, the
+// spanwise matrices of each, the IMEX linear stepper over one period, and Arnoldi on that period map.
+#include "solver/navier_stokes/floquet.hpp"
+
+#include <umfpack.h>
+
+#include <Eigen/Dense>
+#include <chrono>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include "solver/navier_stokes/lu.hpp"
+#include "solver/navier_stokes/shifted_lu.hpp"
+#include "solver/navier_stokes/spanwise.hpp"
+#include "solver/navier_stokes/stages.hpp"
+
+namespace magnus {
+
+namespace {
+
+/// The base's mean and its harmonics k = 1…K (cos and sin parts) over the N samples, fields ψ and ζ.
+struct BaseSeries {
+  NsState mean;
+  std::vector<NsState> cos_part, sin_part;
+};
+
+BaseSeries fourier_series(const std::vector<NsState>& samples, int K) {
+  const size_t N = samples.size(), nodes = samples.front().psi.size();
+  BaseSeries b;
+  auto zero = [&] {
+    NsState s;
+    s.psi.assign(nodes, 0.0), s.zeta.assign(nodes, 0.0);
+    return s;
+  };
+  b.mean = zero();
+  b.cos_part.assign(size_t(K), zero()), b.sin_part.assign(size_t(K), zero());
+  for (size_t n = 0; n < N; ++n) {
+    const NsState& s = samples[n];
+    for (size_t q = 0; q < nodes; ++q) b.mean.psi[q] += s.psi[q] / double(N), b.mean.zeta[q] += s.zeta[q] / double(N);
+    b.mean.Gamma_R += s.Gamma_R / double(N);
+    for (int k = 1; k <= K; ++k) {
+      const double c = 2.0 * std::cos(2.0 * M_PI * k * double(n) / double(N)) / double(N);
+      const double d = 2.0 * std::sin(2.0 * M_PI * k * double(n) / double(N)) / double(N);
+      NsState &C = b.cos_part[size_t(k - 1)], &S = b.sin_part[size_t(k - 1)];
+      for (size_t q = 0; q < nodes; ++q) {
+        C.psi[q] += c * s.psi[q], C.zeta[q] += c * s.zeta[q];
+        S.psi[q] += d * s.psi[q], S.zeta[q] += d * s.zeta[q];
+      }
+    }
+  }
+  return b;
+}
+
+double norm2(const std::vector<double>& v) {
+  double s = 0.0;
+  for (double x : v) s += x * x;
+  return std::sqrt(s);
+}
+
+/// The rows of the outflow ζ and w̃ unknowns on R (their mass −s h R²/Ψ_θ depends on the base): 1 where the
+/// base b lets the wake out there.
+std::vector<char> outflow_rows(const NsParams& p, const PolarGrid& g, const NsState& b) {
+  const int n = g.n_theta, N = g.n_r - 1;
+  std::vector<char> out(size_t(kSpanwiseFields) * g.nodes() + 1, 0);
+  for (int j = 0; j < n; ++j)
+    if (outflow(p, psi_theta(b.psi.data() + size_t(N) * n, j, n, g.d_theta))) {
+      const size_t q = size_t(N) * n + j;
+      out[kSpanwiseFields * q + 1] = out[kSpanwiseFields * q + 3] = 1;
+    }
+  return out;
+}
+
+/// The spanwise problem of base b with its outflow rows multiplied by s/m_r (s: the row's constant mass,
+/// a/U for ζ and 1/U for w̃), so that M is the same for every base and J is affine in the base.
+EigenProblem constant_mass_problem(const NsParams& p, const NsState& b, double beta, const std::vector<char>& out) {
+  EigenProblem ep = spanwise_problem(p, b, beta);
+  const double speed = stability_speed(p);
+  std::vector<double> f(size_t(ep.n), 1.0);
+  for (size_t r = 0; r < f.size(); ++r)
+    if (out[r] && ep.m[r] != 0.0) {
+      const double s = r % kSpanwiseFields == 1 ? p.a / speed : 1.0 / speed;
+      f[r] = s / ep.m[r], ep.m[r] = s;
+    }
+  for (size_t t = 0; t < ep.Ai.size(); ++t) ep.Ax[t] *= f[size_t(ep.Ai[t])];
+  // The outflow row's term of the disturbance's ψ_θ carrying the base's ζ_ξ, −(ψ_θ/R²)(Ω_N − Ω_{N−1})/h: it
+  // vanishes at a steady state (there Ω_N = Ω_{N−1} on outflow) but not along an orbit.
+  const PolarGrid g = ns_grid(p);
+  const int n = g.n_theta, N = g.n_r - 1;
+  const double R = g.outer_radius(), h = g.d_xi(N - 1), s = p.a / speed;
+  std::vector<long> ti, tj;
+  std::vector<double> tx;
+  for (long c = 0; c < ep.n; ++c)
+    for (long t = ep.Ap[size_t(c)]; t < ep.Ap[size_t(c) + 1]; ++t) ti.push_back(ep.Ai[size_t(t)]), tj.push_back(c), tx.push_back(ep.Ax[size_t(t)]);
+  for (int j = 0; j < n; ++j) {
+    const size_t q = size_t(N) * n + size_t(j);
+    if (!out[kSpanwiseFields * q + 1]) continue;
+    const double c = -s * (b.zeta[q] - b.zeta[q - size_t(n)]) / (h * R * R) / (2.0 * g.d_theta);
+    const long row = long(kSpanwiseFields * q + 1);
+    ti.push_back(row), tj.push_back(long(kSpanwiseFields * (size_t(N) * n + size_t((j + 1) % n)))), tx.push_back(c);
+    ti.push_back(row), tj.push_back(long(kSpanwiseFields * (size_t(N) * n + size_t((j + n - 1) % n)))), tx.push_back(-c);
+  }
+  std::vector<long> map;
+  triplet_pattern(ep.n, ti, tj, ep.Ap, ep.Ai, map);
+  ep.Ax.assign(ep.Ai.size(), 0.0);
+  for (size_t t = 0; t < tx.size(); ++t) ep.Ax[size_t(map[t])] += tx[t];
+  return ep;
+}
+
+/// (A − B)/eps on the union of their patterns; rows in `drop` are left out (the outflow choice flipped).
+EigenProblem difference(const EigenProblem& A, const EigenProblem& B, double eps, const std::vector<char>& drop) {
+  std::vector<long> ti, tj;
+  std::vector<double> tx;
+  for (const auto* M : {&A, &B}) {
+    const double sign = M == &A ? 1.0 / eps : -1.0 / eps;
+    for (long c = 0; c < M->n; ++c)
+      for (long t = M->Ap[size_t(c)]; t < M->Ap[size_t(c) + 1]; ++t)
+        if (!drop[size_t(M->Ai[size_t(t)])]) ti.push_back(M->Ai[size_t(t)]), tj.push_back(c), tx.push_back(sign * M->Ax[size_t(t)]);
+  }
+  EigenProblem D;
+  D.n = A.n;
+  std::vector<long> map;
+  triplet_pattern(D.n, ti, tj, D.Ap, D.Ai, map);
+  D.Ax.assign(D.Ai.size(), 0.0);
+  for (size_t t = 0; t < tx.size(); ++t) D.Ax[size_t(map[t])] += tx[t];
+  return D;
+}
+
+/// y += c·A x.
+void add_product(const EigenProblem& A, const std::vector<double>& x, double c, std::vector<double>& y) {
+  for (long col = 0; col < A.n; ++col) {
+    const double xc = c * x[size_t(col)];
+    if (xc == 0.0) continue;
+    for (long t = A.Ap[size_t(col)]; t < A.Ap[size_t(col) + 1]; ++t) y[size_t(A.Ai[size_t(t)])] += A.Ax[size_t(t)] * xc;
+  }
+}
+
+/// The real LU of J_0 − σM (UMFPACK, the problem's order).
+class RealLu {
+ public:
+  RealLu(const EigenProblem& ep, double sigma) {
+    std::vector<double> Az;
+    shifted_matrix(ep, sigma, Ap_, Ai_, Ax_, Az);
+    const long n = ep.n;
+    void* symbolic = nullptr;
+    const long st = symbolic_in_grid_order(n, ep.order, [&](const double* ctl, const long* q) {
+      double inf[UMFPACK_INFO];
+      return q ? umfpack_dl_qsymbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(), q, &symbolic, ctl, inf)
+               : umfpack_dl_symbolic(n, n, Ap_.data(), Ai_.data(), Ax_.data(), &symbolic, ctl, inf);
+    });
+    if (st != UMFPACK_OK) throw std::runtime_error(umfpack_error("symbolic analysis (Floquet stepper)", st));
+    double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
+    umfpack_dl_defaults(control);
+    const SingleThreadBlas one_thread;
+    const long sn = umfpack_dl_numeric(Ap_.data(), Ai_.data(), Ax_.data(), symbolic, &numeric_, control, info);
+    umfpack_dl_free_symbolic(&symbolic);
+    if (sn != UMFPACK_OK) throw std::runtime_error(umfpack_error("factorisation (Floquet stepper)", sn));
+  }
+  ~RealLu() {
+    if (numeric_) umfpack_dl_free_numeric(&numeric_);
+  }
+  RealLu(const RealLu&) = delete;
+  RealLu& operator=(const RealLu&) = delete;
+  void solve(const std::vector<double>& b, std::vector<double>& x) const {
+    double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
+    umfpack_dl_defaults(control);
+    control[UMFPACK_IRSTEP] = 0;
+    const long st = umfpack_dl_solve(UMFPACK_A, Ap_.data(), Ai_.data(), Ax_.data(), x.data(), b.data(), numeric_,
+                                     control, info);
+    if (st != UMFPACK_OK) throw std::runtime_error(umfpack_error("solve (Floquet stepper)", st));
+  }
+
+ private:
+  std::vector<long> Ap_, Ai_;
+  std::vector<double> Ax_;
+  void* numeric_ = nullptr;
+};
+
+/// The linear stepper over one period (floquet.hpp's scheme).
+struct PeriodMap {
+  const EigenProblem& J0;
+  const std::vector<EigenProblem>& B;  ///< cos and sin parts of harmonic k at 2(k − 1) and 2(k − 1) + 1
+  const RealLu& lu;
+  double T, dt;
+  int steps;
+  /// B(t) x = Σ_k cos(kωt) B_k^c x + sin(kωt) B_k^s x into y.
+  void periodic_part(double t, const std::vector<double>& x, std::vector<double>& y) const {
+    std::fill(y.begin(), y.end(), 0.0);
+    for (size_t k = 0; 2 * k < B.size(); ++k) {
+      const double w = 2.0 * M_PI * double(k + 1) / T;
+      add_product(B[2 * k], x, std::cos(w * t), y);
+      add_product(B[2 * k + 1], x, std::sin(w * t), y);
+    }
+  }
+  std::vector<double> operator()(std::vector<double> x) const {
+    const size_t n = x.size();
+    std::vector<double> Bx(n), Bx_prev(n), rhs(n), next(n);
+    for (int s = 0; s < steps; ++s) {
+      periodic_part(s * dt, x, Bx);
+      std::fill(rhs.begin(), rhs.end(), 0.0);
+      add_product(J0, x, 0.5, rhs);
+      for (size_t r = 0; r < n; ++r) {
+        const double b = s == 0 ? Bx[r] : 1.5 * Bx[r] - 0.5 * Bx_prev[r];
+        const double e = s == 0 ? Bx[r] : 2.0 * Bx[r] - Bx_prev[r];
+        // (J_0 − (2/Δt)M) x^{n+1} = −2[(M/Δt) x^n + ½J_0 x^n + b] on rows with mass, −e on constraints.
+        rhs[r] = J0.m[r] != 0.0 ? -2.0 * (J0.m[r] / dt * x[r] + rhs[r] + b) : -e;
+      }
+      lu.solve(rhs, next);
+      x.swap(next);
+      Bx_prev.swap(Bx);
+    }
+    return x;
+  }
+};
+
+}  // namespace
+
+double FloquetResult::exponent() const {
+  return multipliers.empty() || !(T > 0.0) ? 0.0 : std::log(std::abs(multipliers.front())) / T;
+}
+
+FloquetResult floquet_multipliers(const NsParams& p, const std::vector<NsState>& samples, double T, double beta,
+                                  const FloquetOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (samples.size() < 4) throw std::invalid_argument("floquet_multipliers: needs at least 4 samples of the base");
+  if (!(T > 0.0) || !std::isfinite(T)) throw std::invalid_argument("floquet_multipliers: the period must be > 0");
+  if (!(beta >= 0.0) || !std::isfinite(beta))
+    throw std::invalid_argument("floquet_multipliers: the wavenumber β must be finite and ≥ 0");
+  const PolarGrid g = ns_grid(p);
+  for (const NsState& s : samples)
+    if (s.psi.size() != size_t(g.nodes()) || s.zeta.size() != size_t(g.nodes()))
+      throw std::invalid_argument("floquet_multipliers: a sample does not match the grid");
+  FloquetResult res;
+  res.T = T;
+  res.harmonics = std::max(1, std::min(o.harmonics, int(samples.size()) / 2 - 1));
+  res.steps = o.steps > 0 ? o.steps : int(samples.size());
+  const BaseSeries base = fourier_series(samples, res.harmonics);
+  res.truncation = norm2(base.cos_part.back().zeta) + norm2(base.sin_part.back().zeta);
+  res.truncation /= std::max(1e-300, norm2(base.cos_part.front().zeta) + norm2(base.sin_part.front().zeta));
+
+  const std::vector<char> out = outflow_rows(p, g, base.mean);
+  const EigenProblem J0 = constant_mass_problem(p, base.mean, beta, out);
+  std::vector<EigenProblem> B;
+  const double eps = 1e-3;
+  for (int k = 0; k < res.harmonics; ++k)
+    for (const NsState* part : {&base.cos_part[size_t(k)], &base.sin_part[size_t(k)]}) {
+      NsState b = base.mean;
+      for (size_t q = 0; q < b.psi.size(); ++q) b.psi[q] += eps * part->psi[q], b.zeta[q] += eps * part->zeta[q];
+      const std::vector<char> out_b = outflow_rows(p, g, b);
+      std::vector<char> flipped(out.size());
+      for (size_t r = 0; r < out.size(); ++r) flipped[r] = out[r] != out_b[r];
+      B.push_back(difference(constant_mass_problem(p, b, beta, out), J0, eps, flipped));
+    }
+  const double dt = T / res.steps;
+  const RealLu lu(J0, 2.0 / dt);
+  const PeriodMap P{J0, B, lu, T, dt, res.steps};
+
+  // Arnoldi on P (classical Gram–Schmidt twice), from a random vector mapped once (consistent constraints).
+  const int m = std::max(o.krylov, o.count + 2);
+  const size_t n = size_t(J0.n);
+  Eigen::MatrixXd V(Eigen::Index(n), m + 1), H = Eigen::MatrixXd::Zero(m + 1, m);
+  std::mt19937 rng(o.seed);
+  std::normal_distribution<double> gauss;
+  std::vector<double> v(n);
+  for (double& z : v) z = gauss(rng);
+  v = P(v), ++res.periods;
+  Eigen::Map<Eigen::VectorXd> vm(v.data(), Eigen::Index(n));
+  V.col(0) = vm / vm.norm();
+  int k = 0;
+  for (; k < m; ++k) {
+    std::vector<double> x(V.col(k).data(), V.col(k).data() + n);
+    std::vector<double> w = P(x);
+    ++res.periods;
+    Eigen::Map<Eigen::VectorXd> wm(w.data(), Eigen::Index(n));
+    for (int pass = 0; pass < 2; ++pass) {
+      const Eigen::VectorXd h = V.leftCols(k + 1).transpose() * wm;
+      wm -= V.leftCols(k + 1) * h;
+      H.col(k).head(k + 1) += h;
+    }
+    H(k + 1, k) = wm.norm();
+    if (!(H(k + 1, k) > 1e-14 * H.col(k).head(k + 1).norm())) {
+      ++k;
+      break;
+    }
+    V.col(k + 1) = wm / H(k + 1, k);
+  }
+  Eigen::EigenSolver<Eigen::MatrixXd> es(H.topLeftCorner(k, k));
+  std::vector<std::pair<std::complex<double>, double>> ritz;
+  for (int r = 0; r < k; ++r) {
+    const Eigen::VectorXcd y = es.eigenvectors().col(r);
+    ritz.push_back({es.eigenvalues()(r), std::abs(H(k, k - 1) * y(k - 1)) / y.norm()});
+  }
+  std::sort(ritz.begin(), ritz.end(), [](const auto& a, const auto& b) { return std::abs(a.first) > std::abs(b.first); });
+  for (int r = 0; r < std::min(o.count, int(ritz.size())); ++r)
+    res.multipliers.push_back(ritz[size_t(r)].first), res.residuals.push_back(ritz[size_t(r)].second);
+  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return res;
+}
+
+}  // namespace magnus
