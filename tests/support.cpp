@@ -22,6 +22,15 @@ std::string line_of(const std::string& text, const std::string& label) {
 
 bool one_line(const std::string& s) { return !s.empty() && s.find('\n') == s.size() - 1; }
 
+Outcome magnus_cmd(std::vector<std::string> head, const std::vector<std::string>& tail, const std::string& dir) {
+  head.insert(head.end(), tail.begin(), tail.end());
+  return magnus_cmd(head, dir);
+}
+
+bool refused(const Outcome& o, const std::string& expect) {
+  return o.status != 0 && one_line(o.err) && o.err.find(expect) != std::string::npos;
+}
+
 std::string temp_dir(const std::string& name) {
   namespace fs = std::filesystem;
   const fs::path p = fs::temp_directory_path() / ("magnus-test-" + std::to_string(::getpid())) / name;

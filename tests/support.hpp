@@ -104,4 +104,10 @@ std::string line_of(const std::string& text, const std::string& label);
 /// True when s is exactly one line (non-empty, one newline, at its end): a refusal's message.
 bool one_line(const std::string& s);
 
+/// magnus_cmd with the arguments head, then tail.
+Outcome magnus_cmd(std::vector<std::string> head, const std::vector<std::string>& tail, const std::string& dir);
+
+/// A refusal as the house wants it: a non-zero status and one line on standard error that holds `expect`.
+bool refused(const Outcome& o, const std::string& expect);
+
 }  // namespace magnus::test

@@ -85,6 +85,11 @@ struct Builder {
     add(row, at(i, j, field), coef * (-xf.c_m - xf.c_p - 2.0 * q2));
     add(row, at(i, j + 1, field), coef * q2), add(row, at(i, j - 1, field), coef * q2);
   }
+  /// h_i² J_i of ring i (its rows are scaled by h_i², ring_width) times coef: the shift −β²J, the couplings.
+  double h2J(int i, double coef) const {
+    const double h = g.ring_width(i);
+    return coef * h * h * g.r[size_t(i)] * g.r[size_t(i)];
+  }
   /// The same on the wall ring with the Neumann condition's mirror ghost f_{−1} = f_1 (its data apart),
   /// times h_0²: 2(f_1 − f_0) + (h_0/Δθ)²(f_e − 2f_0 + f_w).
   void add_wall_laplacian(long row, int j, int field, double coef) {
@@ -132,19 +137,15 @@ void vorticity_terms(Builder& b, const Base& base) {
 
 /// φ: ∇²φ = −βw̃ inside, φ_ξ = 0 on the wall, φ = 0 on R (rows times s_ψ).
 void potential_rows(Builder& b) {
-  const PolarGrid& g = b.g;
   for (int j = 0; j < b.n; ++j) {
     b.add_wall_laplacian(b.at(0, j, kPhi), j, kPhi, b.s_psi);
     b.add(b.at(b.N, j, kPhi), b.at(b.N, j, kPhi), b.s_psi);
   }
-  for (int i = 1; i < b.N; ++i) {
-    const double h = g.ring_width(i), J = g.r[size_t(i)] * g.r[size_t(i)];
+  for (int i = 1; i < b.N; ++i)
     for (int j = 0; j < b.n; ++j) {
-      const long row = b.at(i, j, kPhi);
-      b.add_laplacian(row, i, j, kPhi, b.s_psi);
-      b.add(row, b.at(i, j, kW), h * h * b.beta * J * b.s_psi);
+      b.add_laplacian(b.at(i, j, kPhi), i, j, kPhi, b.s_psi);
+      b.add(b.at(i, j, kPhi), b.at(i, j, kW), b.h2J(i, b.beta * b.s_psi));
     }
-  }
 }
 
 /// w̃: J w̃_t = −{Ψ, w̃} + βJp + ν(∇²w̃ − β²Jw̃) inside (rows (h²/ν)·(…)·s_w, mass s_w h² J/ν); 0 on the wall;
@@ -218,15 +219,13 @@ void pressure_rows(Builder& b, const Base& base) {
     b.add_xi(row, 0, j, kW, 2.0 * h0 * b.p.nu * b.beta * b.s_p);
     b.add(b.at(b.N, j, kP), b.at(b.N, j, kP), b.s_p);
   }
-  for (int i = 1; i < b.N; ++i) {
-    const double h = g.ring_width(i), J = g.r[size_t(i)] * g.r[size_t(i)];
+  for (int i = 1; i < b.N; ++i)
     for (int j = 0; j < b.n; ++j) {
       const long row = b.at(i, j, kP);
       b.add_laplacian(row, i, j, kP, b.s_p);
-      b.add(row, row, -h * h * b.beta * b.beta * J * b.s_p);
-      add_strain_product(b, base, row, i, j, h * h * b.s_p);
+      b.add(row, row, -b.h2J(i, b.beta * b.beta * b.s_p));
+      add_strain_product(b, base, row, i, j, g.ring_width(i) * g.ring_width(i) * b.s_p);
     }
-  }
 }
 
 /// The grid's nested-dissection order (grid_order: ψ, ζ pairs per node, then Γ_R) with each node's five
