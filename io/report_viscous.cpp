@@ -230,7 +230,8 @@ std::string findings_text(const FlowResult& r) {
   if (v.reynolds && above_laminar_range(*v.reynolds))
     line("note",
          fmt::format("Re = {:.6g} > {:.0f}: real flow past a cylinder is three-dimensional there; this is "
-                     "the 2D laminar answer, not the real one",
+                     "the 2D laminar answer, not the real one (this run did not compute its 3D stability: "
+                     "magnus stability CASE --spanwise does)",
                      *v.reynolds, kReynolds3D));
   // The viscous (Oseen) length D/Re: beyond R the outer boundary cuts into it, and the forces depend on R.
   if (v.reynolds && viscous_length_beyond_grid(g, *v.reynolds))

@@ -58,8 +58,8 @@ TEST_CASE("navier-stokes summary: Re = 200 as given is not above 200, and is sto
   REQUIRE(h.status == 0);
   CHECK(test::line_of(h.out, "note") ==
         "note           Re = 200.001 > 200: real flow past a cylinder is three-dimensional there; this is "
-        "the 2D "
-        "laminar answer, not the real one");
+        "the 2D laminar answer, not the real one (this run did not compute its 3D stability: magnus stability "
+        "CASE --spanwise does)");
 }
 
 TEST_CASE("navier-stokes run: a refused time step names the limit as the impulsive start's",
