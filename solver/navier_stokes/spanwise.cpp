@@ -55,17 +55,21 @@ struct Builder {
     add(row, at(i, j + 1, field), coef / (2.0 * g.d_theta));
     add(row, at(i, j - 1, field), -coef / (2.0 * g.d_theta));
   }
-  /// coef·u_r = coef·(ψ_θ + φ_ξ)/r and coef·u_θ = coef·(φ_θ − ψ_ξ)/r at (i, j); nothing on the wall
-  /// (no slip: u = 0 there).
-  void add_u_r(long row, int i, int j, double coef) {
-    if (i == 0) return;
-    add_theta(row, i, j, kPsi, coef / g.r[size_t(i)]);
-    add_xi(row, i, j, kPhi, coef / g.r[size_t(i)]);
+  /// coef·∂²f/∂ξ² at ring 1 ≤ i ≤ N − 1 (compact: the Laplacian's flux form over h_i²) and coef·∂²f/∂θ²
+  /// (compact), coef·∂²f/∂ξ∂θ (centred in both).
+  void add_xi_xi(long row, int i, int j, int field, double coef) {
+    const XiFlux xf = xi_flux(g, i);
+    const double c = coef / (xf.h * xf.h);
+    add(row, at(i + 1, j, field), c * xf.c_p), add(row, at(i - 1, j, field), c * xf.c_m);
+    add(row, at(i, j, field), -c * (xf.c_m + xf.c_p));
   }
-  void add_u_theta(long row, int i, int j, double coef) {
-    if (i == 0) return;
-    add_theta(row, i, j, kPhi, coef / g.r[size_t(i)]);
-    add_xi(row, i, j, kPsi, -coef / g.r[size_t(i)]);
+  void add_theta_theta(long row, int i, int j, int field, double coef) {
+    const double c = coef / (g.d_theta * g.d_theta);
+    add(row, at(i, j + 1, field), c), add(row, at(i, j - 1, field), c), add(row, at(i, j, field), -2.0 * c);
+  }
+  void add_xi_theta(long row, int i, int j, int field, double coef) {
+    add_xi(row, i, j + 1, field, coef / (2.0 * g.d_theta));
+    add_xi(row, i, j - 1, field, -coef / (2.0 * g.d_theta));
   }
   /// ∂f/∂ξ and ∂f/∂θ of a base field at (i, j).
   double xi_of(const std::vector<double>& f, int i, int j) const {
@@ -185,23 +189,27 @@ void spanwise_velocity_rows(Builder& b, const Base& base, std::vector<double>& m
   }
 }
 
-/// 2S = 2J tr(∇U·∇u) at (i, j) times coef into row (the perturbation velocities' stencils).
+/// 2S = 2J tr(∇U·∇u) at (i, j) times coef into row. With u_r = (ψ_θ + φ_ξ)/r, u_θ = (φ_θ − ψ_ξ)/r:
+///     r u_r,ξ = ψ_ξθ + φ_ξξ − ψ_θ − φ_ξ,        r u_θ,ξ = φ_ξθ − ψ_ξξ − φ_θ + ψ_ξ,
+///     r (u_r,θ − u_θ) = ψ_θθ + φ_ξθ − φ_θ + ψ_ξ, r (u_θ,θ + u_r) = φ_θθ − ψ_ξθ + ψ_θ + φ_ξ,
+/// the pure second derivatives compact, as in the Laplacians (the differences of centred differences
+/// skip every other node: on n_θ 48 they let a spurious stationary mode grow in the Re 40 wake). On the
+/// wall (u = 0, ψ_ξ = φ_θ, φ_ξ = 0, ψ_ξξ = −a²ζ_w) only r u_θ,ξ = a²ζ_w is left.
 void add_strain_product(Builder& b, const Base& base, long row, int i, int j, double coef) {
   const double Ur_xi = b.xi_of(base.U_r, i, j), Ur_th = b.theta_of(base.U_r, i, j);
   const double Ut_xi = b.xi_of(base.U_theta, i, j), Ut_th = b.theta_of(base.U_theta, i, j);
   const double Ur = base.U_r[b.node(i, j)], Ut = base.U_theta[b.node(i, j)];
-  const double A[4] = {Ur_xi, Ur_th - Ut, Ut_xi, Ut_th + Ur};
-  const std::vector<double>& w = b.d.weights[size_t(i)];
-  for (size_t k = 0; k < w.size(); ++k) {  // A_0 u_r,ξ + A_1 u_θ,ξ
-    const int ik = b.d.first[size_t(i)] + int(k);
-    b.add_u_r(row, ik, j, 2.0 * coef * A[0] * w[k]);
-    b.add_u_theta(row, ik, j, 2.0 * coef * A[1] * w[k]);
+  const double r = b.g.r[size_t(i)], c = 2.0 * coef / r;
+  const double A[4] = {c * Ur_xi, c * (Ur_th - Ut), c * Ut_xi, c * (Ut_th + Ur)};
+  if (i == 0) {
+    b.add(row, b.at(0, j, kZeta), A[1] * r * r);
+    return;
   }
-  const double c = 2.0 * coef / (2.0 * b.g.d_theta);
-  b.add_u_r(row, i, j + 1, c * A[2]), b.add_u_r(row, i, j - 1, -c * A[2]);  // A_2 (u_r,θ − u_θ)
-  b.add_u_theta(row, i, j, -2.0 * coef * A[2]);
-  b.add_u_theta(row, i, j + 1, c * A[3]), b.add_u_theta(row, i, j - 1, -c * A[3]);  // A_3 (u_θ,θ + u_r)
-  b.add_u_r(row, i, j, 2.0 * coef * A[3]);
+  b.add_xi_theta(row, i, j, kPsi, A[0] - A[3]), b.add_xi_xi(row, i, j, kPhi, A[0]);
+  b.add_theta(row, i, j, kPsi, A[3] - A[0]), b.add_xi(row, i, j, kPhi, A[3] - A[0]);
+  b.add_xi_theta(row, i, j, kPhi, A[1] + A[2]), b.add_xi_xi(row, i, j, kPsi, -A[1]);
+  b.add_theta(row, i, j, kPhi, -A[1] - A[2]), b.add_xi(row, i, j, kPsi, A[1] + A[2]);
+  b.add_theta_theta(row, i, j, kPsi, A[2]), b.add_theta_theta(row, i, j, kPhi, A[3]);
 }
 
 /// p: ∇²p − β²Jp = −2S inside; on the wall p_ξ = −ν(ζ_θ + βw̃_ξ) through the mirror ghost; 0 on R
@@ -269,9 +277,8 @@ EigenProblem spanwise_problem(const NsParams& p, const NsState& steady, double b
   triplet_pattern(ep.n, b.ti, b.tj, ep.Ap, ep.Ai, map);
   ep.Ax.assign(ep.Ai.size(), 0.0);
   for (size_t t = 0; t < b.tx.size(); ++t) ep.Ax[size_t(map[t])] += b.tx[t];
-  // The pressure rows reach two rings and two columns (S from the velocities' differences): cuts one
-  // column or ring wide would not separate, and the factors of n_θ 64 took four times as long.
-  ep.order = five_field_order(grid_order(g.n_r, g.n_theta, false, 2, 2), nodes);
+  // Every row reaches one ring and one column (the advection of order 4 two): the 2D problem's cuts.
+  ep.order = five_field_order(two.order, nodes);
   return ep;
 }
 

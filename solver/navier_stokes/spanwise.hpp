@@ -27,7 +27,7 @@
 namespace magnus {
 
 /// The coarsest n_θ at which no spurious 3D growth has been seen: the steady Re 40 wake (stable) showed a
-/// stationary mode growing at +0.066, +0.037, +0.013 U/D on n_θ 32, 48, 64 (β·D = 1, R = 40a), none on 96.
+/// stationary mode growing at +0.066, +0.032, +0.006 U/D on n_θ 32, 48, 64 (β·D = 1, R = 40a), none on 96.
 constexpr int kSpanwiseTrustedNTheta = 96;
 
 /// Unknowns per node of the spanwise problem: ψ, ζ, φ, w̃, p (in that order).

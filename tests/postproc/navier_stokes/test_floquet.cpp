@@ -44,7 +44,7 @@ TEST_CASE("[ns][floquet] Re 100: the orbit's phase mode has multiplier 1 and mod
   o.krylov = 30;
   const FloquetResult two = floquet_multipliers(p, samples, T, 0.0, o);
   INFO("β = 0: μ " << two.multipliers[0] << " residual " << two.residuals[0] << ", " << two.seconds << " s");
-  // The time derivative of the orbit is neutral: μ = 1 (here 1.012: the linear operator freezes which outer
+  // The time derivative of the orbit is neutral: μ = 1 (here 1.011: the linear operator freezes which outer
   // columns let the wake out at the mean flow's, the orbit switches them).
   CHECK(two.multipliers[0].imag() == 0.0);
   CHECK(std::abs(two.multipliers[0] - 1.0) < 0.02);
@@ -52,8 +52,8 @@ TEST_CASE("[ns][floquet] Re 100: the orbit's phase mode has multiplier 1 and mod
   for (size_t k = 1; k < two.multipliers.size(); ++k) CHECK(std::abs(two.multipliers[k]) < 0.99);
   const FloquetResult a = floquet_multipliers(p, samples, T, 2.0 * M_PI / 3.96 / (2.0 * p.a), o);
   INFO("mode A's wavelength: μ " << a.multipliers[0] << " residual " << a.residuals[0] << ", " << a.seconds << " s");
-  CHECK(std::abs(a.multipliers[0]) < 1.0);
-  CHECK(a.residuals[0] < 1e-3);
+  CHECK(std::abs(a.multipliers[0]) < 1.0);  // 0.947
+  CHECK(a.residuals[0] < 2e-3);              // 7.8e-4: 30 Arnoldi vectors, no restart
   CHECK(a.harmonics == 8);
   CHECK(a.truncation < 1e-2);  // the 8th harmonic of the base is below 1% of the first
 }
