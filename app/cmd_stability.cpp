@@ -25,6 +25,7 @@
 #include "postproc/navier_stokes/onset_curve.hpp"
 #include "postproc/navier_stokes/resolution.hpp"
 #include "postproc/navier_stokes/run.hpp"
+#include "postproc/navier_stokes/spanwise_scan.hpp"
 
 namespace magnus {
 
@@ -258,19 +259,16 @@ void command_stability(const StabilityCliOptions& o) {
   std::string text;
   Json j;
   if (!critical) {
-    HopfOptions honest;  // the converged search: every shift to convergence, shifts added for gaps
-    honest.full = StabilityOptions{};
-    honest.full.eigensolver = o.eigensolver;
-    const StabilityOptions& so = honest.full;
-    const HopfEvaluation s = hopf_evaluation(p, HopfParameter::spin_ratio, alpha, nullptr, std::nullopt, honest);
-    if (!s.converged)
-      throw std::runtime_error(fmt::format("{}: Newton's method found no steady state (Re {:.4g}, α {:g})",
-                                           o.case_path, p.reynolds(), alpha));
+    HopfEvaluation s;
+    try {
+      s = steady_stability(p, o.eigensolver);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(o.case_path + ": " + e.what());
+    }
     const StabilityResult& st = s.stability;
-    if (st.eigenvalues.empty()) throw std::runtime_error(o.case_path + ": " + st.message);
     text += fmt::format("steady state   Re {:.4g}, α {:g}: Newton {:.2f} s, eigenvalues {:.2f} s ({} shifted "
                         "solves, {})\n",
-                        p.reynolds(), alpha, s.newton_seconds, st.seconds, st.solves, so.eigensolver);
+                        p.reynolds(), alpha, s.newton_seconds, st.seconds, st.solves, o.eigensolver);
     text += "eigenvalues    λ·D/U (growth rate, frequency), rightmost first; residual ‖Jx − λMx‖/(‖Jx‖ + |λ|‖Mx‖)\n";
     for (size_t k = 0; k < st.eigenvalues.size(); ++k)
       text += "               " + eig_text(st.eigenvalues[k]) +
@@ -282,10 +280,10 @@ void command_stability(const StabilityCliOptions& o) {
                         st.eigenvalues.front().imag() != 0.0 ? fmt::format(", St {:.4f}", st.strouhal()) : "",
                         st.covered ? "" : "; not verified: see the coverage line");
     j = {{"reynolds", p.reynolds()}, {"spin_ratio", alpha}, {"stable", st.stable}, {"eigenvalues", eig_json(st)},
-         {"seconds", s.newton_seconds + st.seconds}, {"solves", st.solves}, {"eigensolver", so.eigensolver},
+         {"seconds", s.newton_seconds + st.seconds}, {"solves", st.solves}, {"eigensolver", o.eigensolver},
          {"search", search_json(st)}};
     // The 3D stability of the flow that is there: the steady state when it is stable, else the shedding orbit.
-    if (o.spanwise) j["spanwise"] = spanwise_report(p, st.stable ? &s.state : nullptr, beta_D, o.eigensolver, o.json, text);
+    if (o.spanwise) j["spanwise"] = spanwise_report(p, s, beta_D, o.eigensolver, o.json, text);
   } else if (range.others.empty()) {
     critical_report(p, range, o.eigensolver, o.json, text, j);
   } else {

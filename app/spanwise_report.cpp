@@ -9,10 +9,9 @@
 
 namespace magnus {
 
-Json spanwise_report(const NsParams& p, const NsState* steady, const std::vector<double>& beta_D,
+Json spanwise_report(const NsParams& p, const HopfEvaluation& ss, const std::vector<double>& beta_D,
                      const std::string& eigensolver, bool json, std::string& text) {
-  StabilityOptions o = quick_stability_options();  // per wavenumber: the default shifts, no extra ones
-  o.eigensolver = eigensolver;
+  const bool steady = ss.stability.stable;
   auto line = [](const SpanwisePoint& pt) {
     if (!pt.found) return fmt::format("{:>8.4g}  {:>9}  undefined: no eigenvalue converged", pt.beta_D, "");
     return fmt::format("{:>8.4g}  {:>9}  {:>+10.5f}  {:>+10.5f}  {:>7}  {:>7.1f}{}", pt.beta_D,
@@ -27,8 +26,7 @@ Json spanwise_report(const NsParams& p, const NsState* steady, const std::vector
   auto progress = [&](const SpanwisePoint& pt) {
     if (!json) std::fprintf(stderr, "%s\n", line(pt).c_str());
   };
-  const SpanwiseScan s = steady ? spanwise_scan(p, *steady, beta_D, o, progress)
-                                : floquet_scan(p, beta_D, 300.0 * 2.0 * p.a / p.U, progress);
+  const SpanwiseScan s = spanwise_stability(p, ss, beta_D, eigensolver, progress);
   text += fmt::format("spanwise       {} for disturbances ∝ e^{{iβz}}, per wavenumber{}\n", what,
                       steady ? "" : fmt::format(" (period T = {:.4f} D/U)", s.T)) +
           head + "\n";

@@ -5,14 +5,14 @@
 #include <vector>
 
 #include "io/json_output.hpp"
-#include "solver/navier_stokes/operator.hpp"
+#include "postproc/navier_stokes/critical.hpp"
 
 namespace magnus {
 
-/// The scan at each β·D of beta_D about the steady state of p (steady non-null: the spanwise eigenvalues
-/// with eigensolver) or about its shedding orbit (null: the Floquet multipliers); its table and verdict are
-/// appended to text and its JSON object returned. Progress lines go to stderr unless json.
-Json spanwise_report(const NsParams& p, const NsState* steady, const std::vector<double>& beta_D,
+/// The scan at each β·D of beta_D (spanwise_stability: about the steady state s when it is stable, else
+/// about the shedding orbit); its table and verdict are appended to text and its JSON object returned.
+/// Progress lines go to stderr unless json.
+Json spanwise_report(const NsParams& p, const HopfEvaluation& s, const std::vector<double>& beta_D,
                      const std::string& eigensolver, bool json, std::string& text);
 
 }  // namespace magnus

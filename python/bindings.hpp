@@ -33,6 +33,9 @@ void bind_result(py::module_& m);
 /// _magnus._sweep: the potential flow's spin-ratio (or circulation) sweep as columns.
 void bind_sweep(py::module_& m);
 
+/// _magnus._stability: a navier-stokes steady state's eigenvalues and its spanwise (3D) stability.
+void bind_stability(py::module_& m);
+
 /// The case of a run or sweep: from a file (is_path) or from TOML text (origin "<dict>"), with overrides
 /// "section.key=value". Throws CaseError with the command line's one-line message.
 Case case_of(const std::string& source, bool is_path, const std::vector<std::string>& overrides);

@@ -117,6 +117,7 @@ PYBIND11_MODULE(_magnus, m) {
   });
   bind_result(m);
   bind_sweep(m);
+  bind_stability(m);
   m.def("_run", &run, "solve a case (path or TOML text) with overrides; write `output` if not empty",
         py::arg("source"), py::arg("is_path"), py::arg("overrides"), py::arg("threads"), py::arg("output"),
         py::arg("force") = false);

@@ -130,4 +130,25 @@ SpanwiseScan floquet_scan(const NsParams& p, const std::vector<double>& beta_D, 
   return s;
 }
 
+HopfEvaluation steady_stability(const NsParams& p, const std::string& eigensolver) {
+  HopfOptions honest;  // the converged search: every shift to convergence, shifts added for gaps
+  honest.full = StabilityOptions{};
+  honest.full.eigensolver = eigensolver;
+  const double alpha = p.a * p.omega / p.U;
+  HopfEvaluation s = hopf_evaluation(p, HopfParameter::spin_ratio, alpha, nullptr, std::nullopt, honest);
+  if (!s.converged)
+    throw std::runtime_error(
+        fmt::format("Newton's method found no steady state (Re {:.4g}, α {:g})", p.reynolds(), alpha));
+  if (s.stability.eigenvalues.empty()) throw std::runtime_error(s.stability.message);
+  return s;
+}
+
+SpanwiseScan spanwise_stability(const NsParams& p, const HopfEvaluation& steady, const std::vector<double>& beta_D,
+                                const std::string& eigensolver, const std::function<void(const SpanwisePoint&)>& on_point) {
+  if (!steady.stability.stable) return floquet_scan(p, beta_D, 300.0 * 2.0 * p.a / p.U, on_point);
+  StabilityOptions o = quick_stability_options();  // per wavenumber: the default shifts, no extra ones
+  o.eigensolver = eigensolver;
+  return spanwise_scan(p, steady.state, beta_D, o, on_point);
+}
+
 }  // namespace magnus

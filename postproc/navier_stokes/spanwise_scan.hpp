@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "postproc/navier_stokes/critical.hpp"
 #include "solver/navier_stokes/spanwise.hpp"
 
 namespace magnus {
@@ -55,6 +56,18 @@ SpanwiseScan spanwise_scan(const NsParams& p, const NsState& steady, const std::
 /// std::runtime_error when the flow does not shed or the orbit does not converge.
 SpanwiseScan floquet_scan(const NsParams& p, const std::vector<double>& beta_D, double t_end,
                           const std::function<void(const SpanwisePoint&)>& on_point = {});
+
+/// The steady state of p (Newton, as hopf_evaluation finds it) and its 2D eigenvalues by the converged
+/// search (every shift to convergence, shifts added for gaps) with `eigensolver`. Throws std::runtime_error
+/// (one line naming Re and α) when no steady state is found or no eigenvalue converged.
+HopfEvaluation steady_stability(const NsParams& p, const std::string& eigensolver);
+
+/// The 3D stability of the flow that is there: the spanwise eigenvalues of the steady state when it is
+/// stable (spanwise_scan with quick_stability_options and `eigensolver`), else the Floquet multipliers of
+/// the shedding orbit (floquet_scan, its short march giving up at 300 D/U).
+SpanwiseScan spanwise_stability(const NsParams& p, const HopfEvaluation& steady, const std::vector<double>& beta_D,
+                                const std::string& eigensolver,
+                                const std::function<void(const SpanwisePoint&)>& on_point = {});
 
 /// The vertex (x, y) of the parabola through three points (x_k distinct); the middle point when they are
 /// collinear or the vertex leaves [x_0, x_2].

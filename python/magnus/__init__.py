@@ -25,7 +25,7 @@ from ._magnus import Result
 
 __version__ = _magnus.__version__
 Result.__module__ = __name__
-__all__ = ["run", "sweep", "read", "open", "Result", "Sweep", "case_toml"]
+__all__ = ["run", "sweep", "stability", "read", "open", "Result", "Sweep", "case_toml"]
 
 _MAX_THREADS = 64
 _MAX_SWEEP_POINTS = 100000  # as `magnus sweep`
@@ -215,3 +215,23 @@ def sweep(case, /, spin_ratio=None, *, circulation=None, set=None, threads=1, **
     source, is_path = _source(case)
     raw = _magnus._sweep(source, is_path, variable, values, _overrides(overrides, set), _threads(threads))
     return Sweep(raw, variable)
+
+
+def stability(case, /, *, spanwise=None, eigensolver="arnoldi", set=None, **overrides):
+    """Linear stability of a navier-stokes case, as `magnus stability CASE [--spanwise]`. Returns a dict:
+    reynolds, spin_ratio, stable (the steady state's 2D verdict), eigenvalues (complex array, λ·D/U,
+    rightmost first) and covered. With spanwise = wavenumbers β·D (an iterable of numbers ≥ 0) it adds
+    "spanwise": the 3D stability of the steady state (base "steady") or, when the wake sheds, of its
+    periodic orbit (base "periodic", with the multipliers and period_D_over_U): beta_D, growth_rate and
+    frequency arrays (U/D; an eigenvalue that did not converge is masked), stable, verdict and the most
+    unstable wavenumber and wavelength (in D)."""
+    beta = [] if spanwise is None else [float(b) for b in _sweep_values(spanwise, "spanwise")]
+    source, is_path = _source(case)
+    raw = _magnus._stability(source, is_path, _overrides(overrides, set), beta, str(eigensolver))
+    if "spanwise" in raw:
+        sp = raw["spanwise"]
+        for key in ("growth_rate", "frequency", "multiplier"):
+            if key in sp:
+                sp[key] = np.ma.masked_invalid(sp[key])
+    return raw
+

@@ -1,0 +1,92 @@
+// _magnus._stability: the navier-stokes steady state's leading eigenvalues and, given spanwise wavenumbers,
+// its three-dimensional stability (magnus stability CASE --spanwise): numpy arrays and plain values.
+#include <pybind11/complex.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <complex>
+#include <stdexcept>
+
+#include "postproc/navier_stokes/resolution.hpp"
+#include "postproc/navier_stokes/run.hpp"
+#include "postproc/navier_stokes/spanwise_scan.hpp"
+#include "bindings.hpp"
+
+namespace magnus::python {
+
+namespace {
+
+py::array_t<std::complex<double>> complex_array(const std::vector<std::complex<double>>& v) {
+  py::array_t<std::complex<double>> a(py::ssize_t(v.size()));
+  auto m = a.mutable_unchecked<1>();
+  for (size_t k = 0; k < v.size(); ++k) m(py::ssize_t(k)) = v[k];
+  return a;
+}
+
+/// The scan as columns over β·D; a wavenumber whose eigenvalue did not converge is NaN on its way to
+/// python/magnus/__init__.py, which masks it.
+py::dict scan_dict(const SpanwiseScan& s) {
+  std::vector<double> beta, growth, frequency;
+  std::vector<std::complex<double>> mu;
+  for (const SpanwisePoint& pt : s.points) {
+    beta.push_back(pt.beta_D);
+    growth.push_back(pt.found ? pt.lambda.real() : NAN);
+    frequency.push_back(pt.found ? pt.lambda.imag() : NAN);
+    mu.push_back(pt.found ? pt.multiplier : std::complex<double>(NAN, NAN));
+  }
+  py::dict d;
+  d["base"] = s.periodic ? "periodic" : "steady";
+  const py::ssize_t n = py::ssize_t(beta.size());
+  d["beta_D"] = owned_array(std::move(beta), {n});
+  d["growth_rate"] = owned_array(std::move(growth), {n});
+  d["frequency"] = owned_array(std::move(frequency), {n});
+  if (s.periodic) d["multiplier"] = complex_array(mu), d["period_D_over_U"] = s.T;
+  d["stable"] = s.stable;
+  d["verdict"] = s.verdict;
+  if (s.beta_D > 0.0) {
+    d["most_unstable_beta_D"] = s.beta_D;
+    d["most_unstable_wavelength_D"] = s.wavelength_D();
+    d["most_unstable_growth_rate"] = s.growth;
+  }
+  return d;
+}
+
+py::dict stability(const std::string& source, bool is_path, const std::vector<std::string>& overrides,
+                   const std::vector<double>& beta_D, const std::string& eigensolver) {
+  HopfEvaluation s;
+  SpanwiseScan scan;
+  NsParams p;
+  {
+    py::gil_scoped_release nogil;
+    const Case c = case_of(source, is_path, overrides);
+    if (c.model != FlowModel::navier_stokes)
+      throw std::invalid_argument("magnus.stability needs model.flow = \"navier-stokes\"");
+    check_resolvable(c);
+    p = ns_params(c);
+    if (!(p.U > 0.0)) throw std::invalid_argument("flow.speed must be > 0 (eigenvalues in U/D)");
+    for (double b : beta_D)
+      if (!(b >= 0.0) || !std::isfinite(b)) throw std::invalid_argument("spanwise: wavenumbers β·D must be finite and ≥ 0");
+    if (!known_eigensolver(eigensolver))
+      throw std::invalid_argument("eigensolver \"" + eigensolver + "\": expected " + eigensolver_names());
+    s = steady_stability(p, eigensolver);
+    if (!beta_D.empty()) scan = spanwise_stability(p, s, beta_D, eigensolver);
+  }
+  py::dict d;
+  d["reynolds"] = p.reynolds();
+  d["spin_ratio"] = p.a * p.omega / p.U;
+  d["stable"] = s.stability.stable;
+  d["eigenvalues"] = complex_array(s.stability.eigenvalues);
+  d["covered"] = s.stability.covered;
+  if (!beta_D.empty()) d["spanwise"] = scan_dict(scan);
+  return d;
+}
+
+}  // namespace
+
+void bind_stability(py::module_& m) {
+  m.def("_stability", &stability,
+        "the steady state's leading eigenvalues (U/D) and, with wavenumbers β·D, its 3D stability",
+        py::arg("source"), py::arg("is_path"), py::arg("overrides"), py::arg("beta_D"), py::arg("eigensolver"));
+}
+
+}  // namespace magnus::python
