@@ -45,15 +45,9 @@ Json spanwise_report(const NsParams& p, const HopfEvaluation& ss, const std::vec
     rows.push_back(row);
   }
   text += "3D verdict     " + s.verdict + "\n";
-  // Below n_θ 96 the pressure's source has given spurious 3D growth (README: three-dimensional stability).
-  const bool coarse = p.n_theta < kSpanwiseTrustedNTheta;
-  if (coarse)
-    text += fmt::format("caution        n_θ {} is below {}: on such grids the scan has shown spurious 3D growth; "
-                        "check the verdict on a finer grid\n",
-                        p.n_theta, kSpanwiseTrustedNTheta);
+
   Json j = {{"base", steady ? "steady" : "periodic"}, {"points", rows}, {"stable", s.stable}, {"verdict", s.verdict}};
   if (!steady) j["period_D_over_U"] = s.T;
-  if (coarse) j["caution"] = fmt::format("n_theta {} is below {}: spurious 3D growth seen on such grids", p.n_theta, kSpanwiseTrustedNTheta);
   if (!s.points.empty() && s.beta_D > 0.0) {
     j["most_unstable_beta_D"] = s.beta_D;
     j["most_unstable_wavelength_D"] = s.wavelength_D();

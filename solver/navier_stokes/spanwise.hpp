@@ -6,6 +6,7 @@
 //     u_r = (ψ_θ + φ_ξ)/r,   u_θ = (φ_θ − ψ_ξ)/r,   ζ = ω_z = −∇²ψ,   ∇²φ = −βw̃   (continuity, exactly).
 // On the log-polar grid (ξ = ln r/a, J = r², {f, g} = f_θ g_ξ − f_ξ g_θ, Arakawa's Jacobian as in 2D):
 //     J ζ_t = −{Ψ, ζ} − {ψ, Ω} − (φ_ξ Ω_ξ + φ_θ Ω_θ) + β J Ω w̃ + ν(ζ_ξξ + ζ_θθ − β² J ζ)
+//           = −{Ψ, ζ} − {ψ, Ω} − [(Ω φ_ξ)_ξ + (Ω φ_θ)_θ] + ν(ζ_ξξ + ζ_θθ − β² J ζ)   (discretised so)
 //     ψ_ξξ + ψ_θθ = −J ζ,            φ_ξξ + φ_θθ = −β J w̃
 //     J w̃_t = −{Ψ, w̃} + β J p + ν(w̃_ξξ + w̃_θθ − β² J w̃)
 //     p_ξξ + p_θθ − β² J p = −2 S,   S = J tr(∇U·∇u) = U_r,ξ u_r,ξ + (U_r,θ − U_θ) u_θ,ξ
@@ -25,10 +26,6 @@
 #include "solver/navier_stokes/stability.hpp"
 
 namespace magnus {
-
-/// The coarsest n_θ at which no spurious 3D growth has been seen: the steady Re 40 wake (stable) showed a
-/// stationary mode growing at +0.066, +0.032, +0.006 U/D on n_θ 32, 48, 64 (β·D = 1, R = 40a), none on 96.
-constexpr int kSpanwiseTrustedNTheta = 96;
 
 /// Unknowns per node of the spanwise problem: ψ, ζ, φ, w̃, p (in that order).
 constexpr int kSpanwiseFields = 5;
