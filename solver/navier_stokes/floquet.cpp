@@ -5,6 +5,7 @@
 #include <umfpack.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <random>

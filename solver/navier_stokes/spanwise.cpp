@@ -4,8 +4,6 @@
 // ring's rows times h_i² as the 2D ones).
 #include "solver/navier_stokes/spanwise.hpp"
 
-#include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
