@@ -73,6 +73,21 @@ std::vector<char> outflow_rows(const NsParams& p, const PolarGrid& g, const NsSt
   return out;
 }
 
+/// Triplets of matrices summed with weights (compressed by compress_triplets).
+struct Triplets {
+  std::vector<long> ti, tj;
+  std::vector<double> tx;
+  /// scale·A, leaving out the rows marked in drop (null: none).
+  void add(const EigenProblem& A, double scale, const std::vector<char>* drop = nullptr) {
+    for (long c = 0; c < A.n; ++c)
+      for (long t = A.Ap[size_t(c)]; t < A.Ap[size_t(c) + 1]; ++t) {
+        const long r = A.Ai[size_t(t)];
+        if (!drop || !(*drop)[size_t(r)]) ti.push_back(r), tj.push_back(c), tx.push_back(scale * A.Ax[size_t(t)]);
+      }
+  }
+  void compress(EigenProblem& out) const { compress_triplets(out.n, ti, tj, tx, out.Ap, out.Ai, out.Ax); }
+};
+
 /// The spanwise problem of base b with its outflow rows multiplied by s/m_r (s: the row's constant mass,
 /// a/U for ζ and 1/U for w̃), so that M is the same for every base and J is affine in the base.
 EigenProblem constant_mass_problem(const NsParams& p, const NsState& b, double beta, const std::vector<char>& out) {
@@ -90,41 +105,28 @@ EigenProblem constant_mass_problem(const NsParams& p, const NsState& b, double b
   const PolarGrid g = ns_grid(p);
   const int n = g.n_theta, N = g.n_r - 1;
   const double R = g.outer_radius(), h = g.d_xi(N - 1), s = p.a / speed;
-  std::vector<long> ti, tj;
-  std::vector<double> tx;
-  for (long c = 0; c < ep.n; ++c)
-    for (long t = ep.Ap[size_t(c)]; t < ep.Ap[size_t(c) + 1]; ++t) ti.push_back(ep.Ai[size_t(t)]), tj.push_back(c), tx.push_back(ep.Ax[size_t(t)]);
+  Triplets t;
+  t.add(ep, 1.0);
+  auto psi_at = [&](int j) { return long(kSpanwiseFields * (size_t(N) * n + size_t((j + n) % n))); };
   for (int j = 0; j < n; ++j) {
     const size_t q = size_t(N) * n + size_t(j);
     if (!out[kSpanwiseFields * q + 1]) continue;
     const double c = -s * (b.zeta[q] - b.zeta[q - size_t(n)]) / (h * R * R) / (2.0 * g.d_theta);
     const long row = long(kSpanwiseFields * q + 1);
-    ti.push_back(row), tj.push_back(long(kSpanwiseFields * (size_t(N) * n + size_t((j + 1) % n)))), tx.push_back(c);
-    ti.push_back(row), tj.push_back(long(kSpanwiseFields * (size_t(N) * n + size_t((j + n - 1) % n)))), tx.push_back(-c);
+    t.ti.push_back(row), t.tj.push_back(psi_at(j + 1)), t.tx.push_back(c);
+    t.ti.push_back(row), t.tj.push_back(psi_at(j - 1)), t.tx.push_back(-c);
   }
-  std::vector<long> map;
-  triplet_pattern(ep.n, ti, tj, ep.Ap, ep.Ai, map);
-  ep.Ax.assign(ep.Ai.size(), 0.0);
-  for (size_t t = 0; t < tx.size(); ++t) ep.Ax[size_t(map[t])] += tx[t];
+  t.compress(ep);
   return ep;
 }
 
 /// (A − B)/eps on the union of their patterns; rows in `drop` are left out (the outflow choice flipped).
 EigenProblem difference(const EigenProblem& A, const EigenProblem& B, double eps, const std::vector<char>& drop) {
-  std::vector<long> ti, tj;
-  std::vector<double> tx;
-  for (const auto* M : {&A, &B}) {
-    const double sign = M == &A ? 1.0 / eps : -1.0 / eps;
-    for (long c = 0; c < M->n; ++c)
-      for (long t = M->Ap[size_t(c)]; t < M->Ap[size_t(c) + 1]; ++t)
-        if (!drop[size_t(M->Ai[size_t(t)])]) ti.push_back(M->Ai[size_t(t)]), tj.push_back(c), tx.push_back(sign * M->Ax[size_t(t)]);
-  }
+  Triplets t;
+  t.add(A, 1.0 / eps, &drop), t.add(B, -1.0 / eps, &drop);
   EigenProblem D;
   D.n = A.n;
-  std::vector<long> map;
-  triplet_pattern(D.n, ti, tj, D.Ap, D.Ai, map);
-  D.Ax.assign(D.Ai.size(), 0.0);
-  for (size_t t = 0; t < tx.size(); ++t) D.Ax[size_t(map[t])] += tx[t];
+  t.compress(D);
   return D;
 }
 
@@ -216,10 +218,6 @@ struct PeriodMap {
 };
 
 }  // namespace
-
-double FloquetResult::exponent() const {
-  return multipliers.empty() || !(T > 0.0) ? 0.0 : std::log(std::abs(multipliers.front())) / T;
-}
 
 FloquetResult floquet_multipliers(const NsParams& p, const std::vector<NsState>& samples, double T, double beta,
                                   const FloquetOptions& o) {

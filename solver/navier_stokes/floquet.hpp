@@ -45,8 +45,6 @@ struct FloquetResult {
   /// leaves out.
   double truncation = 0.0;
   double seconds = 0.0;           ///< wall time, s
-  /// ln|μ|/T of the leading multiplier, in 1/s.
-  double exponent() const;
 };
 
 /// The leading Floquet multipliers at spanwise wavenumber β (1/m, ≥ 0) of the periodic base sampled at

@@ -76,6 +76,14 @@ void triplet_pattern(long n, const std::vector<long>& ti, const std::vector<long
   Ai.resize(size_t(Ap.back()));
 }
 
+void compress_triplets(long n, const std::vector<long>& ti, const std::vector<long>& tj, const std::vector<double>& tx,
+                       std::vector<long>& Ap, std::vector<long>& Ai, std::vector<double>& Ax) {
+  std::vector<long> map;
+  triplet_pattern(n, ti, tj, Ap, Ai, map);
+  Ax.assign(Ai.size(), 0.0);
+  for (size_t t = 0; t < tx.size(); ++t) Ax[size_t(map[t])] += tx[t];
+}
+
 std::string umfpack_error(const char* what, long status) {
   std::string s =
       std::string("SteadyJacobian: UMFPACK ") + what + " failed (status " + std::to_string(status);

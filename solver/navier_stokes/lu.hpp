@@ -16,6 +16,11 @@ std::string umfpack_error(const char* what, long status);
 void triplet_pattern(long n, const std::vector<long>& ti, const std::vector<long>& tj, std::vector<long>& Ap,
                      std::vector<long>& Ai, std::vector<long>& map);
 
+/// The n × n compressed columns (Ap, Ai, Ax) of the triplets (ti, tj, tx), duplicates summed (the
+/// linear-stability problems, assembled once).
+void compress_triplets(long n, const std::vector<long>& ti, const std::vector<long>& tj, const std::vector<double>& tx,
+                       std::vector<long>& Ap, std::vector<long>& Ai, std::vector<double>& Ax);
+
 /// A fill-reducing order of the Jacobian's unknowns, given to UMFPACK: nested dissection of the grid's
 /// nodes, each node's (ψ, ζ) pair kept together. The whole grid (periodic in θ) is first cut along the
 /// rays θ = 0 and θ = π, which come last, then Γ_R; the mirror half, the nodes 0 < θ_j < π, is a plain

@@ -81,11 +81,8 @@ struct Builder {
   }
   /// The 5-point Laplacian of the field at ring 1 ≤ i ≤ N − 1, times h_i² (flux form) and coef.
   void add_laplacian(long row, int i, int j, int field, double coef) {
-    const XiFlux xf = xi_flux(g, i);
-    const double q2 = (xf.h / g.d_theta) * (xf.h / g.d_theta);
-    add(row, at(i + 1, j, field), coef * xf.c_p), add(row, at(i - 1, j, field), coef * xf.c_m);
-    add(row, at(i, j, field), coef * (-xf.c_m - xf.c_p - 2.0 * q2));
-    add(row, at(i, j + 1, field), coef * q2), add(row, at(i, j - 1, field), coef * q2);
+    const double h = g.ring_width(i);
+    add_xi_xi(row, i, j, field, coef * h * h), add_theta_theta(row, i, j, field, coef * h * h);
   }
   /// h_i² J_i of ring i (its rows are scaled by h_i², ring_width) times coef: the shift −β²J, the couplings.
   double h2J(int i, double coef) const {
@@ -281,10 +278,7 @@ EigenProblem spanwise_problem(const NsParams& p, const NsState& steady, double b
   potential_rows(b);
   spanwise_velocity_rows(b, base, ep.m);
   pressure_rows(b, base);
-  std::vector<long> map;
-  triplet_pattern(ep.n, b.ti, b.tj, ep.Ap, ep.Ai, map);
-  ep.Ax.assign(ep.Ai.size(), 0.0);
-  for (size_t t = 0; t < b.tx.size(); ++t) ep.Ax[size_t(map[t])] += b.tx[t];
+  compress_triplets(ep.n, b.ti, b.tj, b.tx, ep.Ap, ep.Ai, ep.Ax);
   // Every row reaches one ring and one column (the advection of order 4 two): the 2D problem's cuts.
   ep.order = five_field_order(two.order, nodes);
   return ep;
