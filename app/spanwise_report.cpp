@@ -12,11 +12,11 @@ namespace magnus {
 Json spanwise_report(const NsParams& p, const HopfEvaluation& ss, const std::vector<double>& beta_D,
                      const std::string& eigensolver, bool json, std::string& text) {
   const bool steady = ss.stability.stable;
-  auto line = [](const SpanwisePoint& pt) {
+  auto line = [steady](const SpanwisePoint& pt) {
     if (!pt.found) return fmt::format("{:>8.4g}  {:>9}  undefined: no eigenvalue converged", pt.beta_D, "");
     return fmt::format("{:>8.4g}  {:>9}  {:>+10.5f}  {:>+10.5f}  {:>7}  {:>7.1f}{}", pt.beta_D,
                        pt.beta_D > 0.0 ? fmt::format("{:.4g}", 2.0 * M_PI / pt.beta_D) : "∞", pt.lambda.real(),
-                       pt.lambda.imag(), pt.solves, pt.seconds, pt.covered ? "" : "  (strip not covered)");
+                       pt.lambda.imag(), pt.solves, pt.seconds, pt.covered ? "" : steady ? "  (strip not covered)" : "  (multiplier not converged)");
   };
   const std::string head = fmt::format("{:>8}  {:>9}  {:>10}  {:>10}  {:>7}  {:>7}", "β·D", "λ_z/D", "growth",
                                        "frequency", steady ? "solves" : "steps", "time s");

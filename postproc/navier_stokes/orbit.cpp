@@ -148,4 +148,11 @@ OrbitRun periodic_orbit_run(const NsParams& p, const OrbitRunOptions& o, NsState
   return run;
 }
 
+std::vector<NsState> orbit_samples(const NsParams& p, const OrbitResult& orbit) {
+  const NsOperator op(p, orbit.T / orbit.steps);
+  std::vector<NsState> samples{orbit.state};
+  period_map(op, orbit.state, orbit.steps - 1, [&](const NsState& s) { samples.push_back(s); });
+  return samples;
+}
+
 }  // namespace magnus

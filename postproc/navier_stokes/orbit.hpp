@@ -54,6 +54,10 @@ OrbitRun periodic_orbit_run(const NsParams& p, const OrbitRunOptions& o, NsState
 /// and seconds of the march and the solve).
 UnsteadyResult orbit_summary(const NsParams& p, const OrbitResult& orbit, double rho);
 
+/// The orbit's N states over one period, t = nT/N for n = 0…N−1 (its own time step; the base of a Floquet
+/// analysis).
+std::vector<NsState> orbit_samples(const NsParams& p, const OrbitResult& orbit);
+
 /// Extremes of periodic samples y (uniform in time): max and min, each refined by the parabola through it
 /// and its two neighbours (cyclic), in y's units.
 void periodic_extremes(const std::vector<double>& y, double& lo, double& hi);

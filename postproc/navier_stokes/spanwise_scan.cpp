@@ -90,10 +90,6 @@ SpanwiseScan spanwise_scan(const NsParams& p, const NsState& steady, const std::
   return s;
 }
 
-}  // namespace magnus
-
-namespace magnus {
-
 SpanwiseScan floquet_scan(const NsParams& p, const std::vector<double>& beta_D, double t_end,
                           const std::function<void(const SpanwisePoint&)>& on_point) {
   if (beta_D.empty()) throw std::invalid_argument("floquet_scan: no wavenumbers");
@@ -106,9 +102,7 @@ SpanwiseScan floquet_scan(const NsParams& p, const std::vector<double>& beta_D, 
   if (!run.orbit.converged)
     throw std::runtime_error("the shedding orbit did not converge (" + run.orbit.message + ")");
   const double T = run.orbit.T, unit = stability_speed(p) / (2.0 * p.a);  // U/D in 1/s
-  const NsOperator op(p, T / run.orbit.steps);
-  std::vector<NsState> samples{run.orbit.state};
-  period_map(op, run.orbit.state, run.orbit.steps - 1, [&](const NsState& s) { samples.push_back(s); });
+  const std::vector<NsState> samples = orbit_samples(p, run.orbit);
   SpanwiseScan s;
   s.periodic = true, s.T = T * unit;
   FloquetOptions fo;

@@ -21,7 +21,9 @@ struct SpanwisePoint {
   std::complex<double> lambda;
   std::complex<double> multiplier;  ///< of an orbit: the leading Floquet multiplier μ (1: neutral); else 0
   bool found = false;            ///< an eigenvalue converged
-  bool covered = false;          ///< the shifts' disks covered the strip right of it (StabilityResult::covered)
+  /// Steady base: the shifts' disks covered the strip right of it (StabilityResult::covered). Orbit: the
+  /// leading multiplier's Ritz estimate is below 1e-3 (converged).
+  bool covered = false;
   double seconds = 0.0;          ///< wall time of this wavenumber, s
   int solves = 0;                ///< shifted solves
   double growth() const { return lambda.real(); }

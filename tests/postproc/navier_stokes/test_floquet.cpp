@@ -1,9 +1,9 @@
 // Floquet stability of shedding orbits to spanwise disturbances (solver/navier_stokes/floquet.hpp).
 #include <catch2/catch.hpp>
-#include <chrono>
 #include <cmath>
 
 #include "postproc/navier_stokes/orbit.hpp"
+#include "postproc/navier_stokes/run_paths.hpp"
 #include "solver/navier_stokes/floquet.hpp"
 #include "support.hpp"
 
@@ -11,25 +11,18 @@ using namespace magnus;
 
 namespace {
 
-NsState broken_start(const NsParams& p) {
-  const PolarGrid g = ns_grid(p);
-  NsState s = impulsive_start(p, g);
-  add_vortex_blob(g, s, 3.0 * p.a, 0.6 * p.a, 0.5 * p.a, 1e-3 * p.U * 2.0 * p.a);
-  return s;
-}
-
-/// The orbit of p and its N states over one period (t = nT/N, n = 0…N−1).
-std::vector<NsState> orbit_samples(const NsParams& p, double& T) {
+/// The orbit of p (from rest, the symmetry broken as a run breaks it) and its states over one period.
+std::vector<NsState> shedding_orbit_samples(const NsParams& p, double& T) {
   OrbitRunOptions o;
   o.t_end = 400.0;
   o.orbit.tol = 1e-8;
-  const OrbitRun run = periodic_orbit_run(p, o, broken_start(p));
+  const PolarGrid g = ns_grid(p);
+  NsState start = impulsive_start(p, g);
+  break_symmetry(p, g, start);
+  const OrbitRun run = periodic_orbit_run(p, o, std::move(start));
   REQUIRE(run.orbit.converged);
   T = run.orbit.T;
-  const NsOperator op(p, T / run.orbit.steps);
-  std::vector<NsState> samples{run.orbit.state};
-  period_map(op, run.orbit.state, run.orbit.steps - 1, [&](const NsState& s) { samples.push_back(s); });
-  return samples;
+  return orbit_samples(p, run.orbit);
 }
 
 }  // namespace
@@ -39,7 +32,7 @@ TEST_CASE("[ns][floquet] Re 100: the orbit's phase mode has multiplier 1 and mod
   // wavelength λ_z = 3.96 D (β·D = 1.59), which sets in only near Re 189 (Barkley & Henderson 1996).
   const NsParams p = test::cylinder_flow(100.0, 0.0, 48, 30.0);
   double T = 0.0;
-  const std::vector<NsState> samples = orbit_samples(p, T);
+  const std::vector<NsState> samples = shedding_orbit_samples(p, T);
   FloquetOptions o;
   o.krylov = 30;
   const FloquetResult two = floquet_multipliers(p, samples, T, 0.0, o);
