@@ -148,11 +148,13 @@ OrbitRun periodic_orbit_run(const NsParams& p, const OrbitRunOptions& o, NsState
   return run;
 }
 
-std::vector<NsState> orbit_samples(const NsParams& p, const OrbitResult& orbit) {
+PeriodicBase orbit_series(const NsParams& p, const OrbitResult& orbit, int K) {
   const NsOperator op(p, orbit.T / orbit.steps);
-  std::vector<NsState> samples{orbit.state};
-  period_map(op, orbit.state, orbit.steps - 1, [&](const NsState& s) { samples.push_back(s); });
-  return samples;
+  FourierAccumulator acc(orbit.state.psi.size(), orbit.steps, K, orbit.T);
+  acc.add(0, orbit.state);
+  int n = 0;
+  period_map(op, orbit.state, orbit.steps - 1, [&](const NsState& s) { acc.add(++n, s); });
+  return acc.base();
 }
 
 }  // namespace magnus

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "postproc/navier_stokes/unsteady.hpp"
+#include "solver/navier_stokes/floquet.hpp"
 #include "solver/navier_stokes/periodic_orbit.hpp"
 
 namespace magnus {
@@ -54,9 +55,9 @@ OrbitRun periodic_orbit_run(const NsParams& p, const OrbitRunOptions& o, NsState
 /// and seconds of the march and the solve).
 UnsteadyResult orbit_summary(const NsParams& p, const OrbitResult& orbit, double rho);
 
-/// The orbit's N states over one period, t = nT/N for n = 0…N−1 (its own time step; the base of a Floquet
-/// analysis).
-std::vector<NsState> orbit_samples(const NsParams& p, const OrbitResult& orbit);
+/// The orbit as the base of a Floquet analysis: its Fourier series with K harmonics, summed over its own N
+/// steps of one period (t = nT/N, n = 0…N−1) without keeping the states.
+PeriodicBase orbit_series(const NsParams& p, const OrbitResult& orbit, int K = 8);
 
 /// Extremes of periodic samples y (uniform in time): max and min, each refined by the parabola through it
 /// and its two neighbours (cyclic), in y's units.

@@ -102,13 +102,13 @@ SpanwiseScan floquet_scan(const NsParams& p, const std::vector<double>& beta_D, 
   if (!run.orbit.converged)
     throw std::runtime_error("the shedding orbit did not converge (" + run.orbit.message + ")");
   const double T = run.orbit.T, unit = stability_speed(p) / (2.0 * p.a);  // U/D in 1/s
-  const std::vector<NsState> samples = orbit_samples(p, run.orbit);
+  const PeriodicBase base = orbit_series(p, run.orbit);
   SpanwiseScan s;
   s.periodic = true, s.T = T * unit;
   FloquetOptions fo;
   fo.krylov = 30;
   for (double b : beta_D) {
-    const FloquetResult r = floquet_multipliers(p, samples, T, b / (2.0 * p.a), fo);
+    const FloquetResult r = floquet_multipliers(p, base, b / (2.0 * p.a), fo);
     SpanwisePoint pt;
     pt.beta_D = b, pt.found = !r.multipliers.empty() && r.multipliers.front() != 0.0;
     if (pt.found) {

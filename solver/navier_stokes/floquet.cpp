@@ -21,39 +21,6 @@ namespace magnus {
 
 namespace {
 
-/// The base's mean and its harmonics k = 1…K (cos and sin parts) over the N samples, fields ψ and ζ.
-struct BaseSeries {
-  NsState mean;
-  std::vector<NsState> cos_part, sin_part;
-};
-
-BaseSeries fourier_series(const std::vector<NsState>& samples, int K) {
-  const size_t N = samples.size(), nodes = samples.front().psi.size();
-  BaseSeries b;
-  auto zero = [&] {
-    NsState s;
-    s.psi.assign(nodes, 0.0), s.zeta.assign(nodes, 0.0);
-    return s;
-  };
-  b.mean = zero();
-  b.cos_part.assign(size_t(K), zero()), b.sin_part.assign(size_t(K), zero());
-  for (size_t n = 0; n < N; ++n) {
-    const NsState& s = samples[n];
-    for (size_t q = 0; q < nodes; ++q) b.mean.psi[q] += s.psi[q] / double(N), b.mean.zeta[q] += s.zeta[q] / double(N);
-    b.mean.Gamma_R += s.Gamma_R / double(N);
-    for (int k = 1; k <= K; ++k) {
-      const double c = 2.0 * std::cos(2.0 * M_PI * k * double(n) / double(N)) / double(N);
-      const double d = 2.0 * std::sin(2.0 * M_PI * k * double(n) / double(N)) / double(N);
-      NsState &C = b.cos_part[size_t(k - 1)], &S = b.sin_part[size_t(k - 1)];
-      for (size_t q = 0; q < nodes; ++q) {
-        C.psi[q] += c * s.psi[q], C.zeta[q] += c * s.zeta[q];
-        S.psi[q] += d * s.psi[q], S.zeta[q] += d * s.zeta[q];
-      }
-    }
-  }
-  return b;
-}
-
 double norm2(const std::vector<double>& v) {
   double s = 0.0;
   for (double x : v) s += x * x;
@@ -219,24 +186,55 @@ struct PeriodMap {
 
 }  // namespace
 
-FloquetResult floquet_multipliers(const NsParams& p, const std::vector<NsState>& samples, double T, double beta,
-                                  const FloquetOptions& o) {
+FourierAccumulator::FourierAccumulator(size_t nodes, int N, int K, double T) : N_(N) {
+  if (N < 4 || K < 1 || K > N / 2 - 1)
+    throw std::invalid_argument("FourierAccumulator: needs N ≥ 4 samples and 1 ≤ K ≤ N/2 − 1 harmonics");
+  NsState zero;
+  zero.psi.assign(nodes, 0.0), zero.zeta.assign(nodes, 0.0);
+  b_.mean = zero, b_.T = T;
+  b_.cos_part.assign(size_t(K), zero), b_.sin_part.assign(size_t(K), zero);
+}
+
+void FourierAccumulator::add(int n, const NsState& s) {
+  const double N = double(N_);
+  const size_t nodes = b_.mean.psi.size();
+  for (size_t q = 0; q < nodes; ++q) b_.mean.psi[q] += s.psi[q] / N, b_.mean.zeta[q] += s.zeta[q] / N;
+  b_.mean.Gamma_R += s.Gamma_R / N;
+  for (size_t k = 1; k <= b_.cos_part.size(); ++k) {
+    const double c = 2.0 * std::cos(2.0 * M_PI * double(k) * n / N) / N;
+    const double d = 2.0 * std::sin(2.0 * M_PI * double(k) * n / N) / N;
+    NsState &C = b_.cos_part[k - 1], &S = b_.sin_part[k - 1];
+    for (size_t q = 0; q < nodes; ++q) {
+      C.psi[q] += c * s.psi[q], C.zeta[q] += c * s.zeta[q];
+      S.psi[q] += d * s.psi[q], S.zeta[q] += d * s.zeta[q];
+    }
+  }
+}
+
+double PeriodicBase::truncation() const {
+  if (cos_part.empty()) return 0.0;
+  const double last = norm2(cos_part.back().zeta) + norm2(sin_part.back().zeta);
+  return last / std::max(1e-300, norm2(cos_part.front().zeta) + norm2(sin_part.front().zeta));
+}
+
+FloquetResult floquet_multipliers(const NsParams& p, const PeriodicBase& base, double beta, const FloquetOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
-  if (samples.size() < 4) throw std::invalid_argument("floquet_multipliers: needs at least 4 samples of the base");
+  const double T = base.T;
   if (!(T > 0.0) || !std::isfinite(T)) throw std::invalid_argument("floquet_multipliers: the period must be > 0");
   if (!(beta >= 0.0) || !std::isfinite(beta))
     throw std::invalid_argument("floquet_multipliers: the wavenumber β must be finite and ≥ 0");
+  if (base.cos_part.empty() || base.sin_part.size() != base.cos_part.size())
+    throw std::invalid_argument("floquet_multipliers: the base has no harmonic");
+  if (o.steps < 4) throw std::invalid_argument("floquet_multipliers: needs at least 4 steps per period");
   const PolarGrid g = ns_grid(p);
-  for (const NsState& s : samples)
-    if (s.psi.size() != size_t(g.nodes()) || s.zeta.size() != size_t(g.nodes()))
-      throw std::invalid_argument("floquet_multipliers: a sample does not match the grid");
+  for (const NsState* s : {&base.mean, &base.cos_part.front()})
+    if (s->psi.size() != size_t(g.nodes()) || s->zeta.size() != size_t(g.nodes()))
+      throw std::invalid_argument("floquet_multipliers: the base does not match the grid");
   FloquetResult res;
   res.T = T;
-  res.harmonics = std::max(1, std::min(o.harmonics, int(samples.size()) / 2 - 1));
-  res.steps = o.steps > 0 ? o.steps : int(samples.size());
-  const BaseSeries base = fourier_series(samples, res.harmonics);
-  res.truncation = norm2(base.cos_part.back().zeta) + norm2(base.sin_part.back().zeta);
-  res.truncation /= std::max(1e-300, norm2(base.cos_part.front().zeta) + norm2(base.sin_part.front().zeta));
+  res.harmonics = int(base.cos_part.size());
+  res.steps = o.steps;
+  res.truncation = base.truncation();
 
   const std::vector<char> out = outflow_rows(p, g, base.mean);
   const EigenProblem J0 = constant_mass_problem(p, base.mean, beta, out);

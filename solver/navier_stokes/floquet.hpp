@@ -24,10 +24,35 @@
 
 namespace magnus {
 
+/// A time-periodic base state by its Fourier series over the period T (ω = 2π/T):
+///     b(t) = mean + Σ_{k=1..K} (cos_part[k−1] cos kωt + sin_part[k−1] sin kωt),   fields ψ (m²/s), ζ (1/s).
+struct PeriodicBase {
+  NsState mean;
+  std::vector<NsState> cos_part, sin_part;
+  double T = 0.0;  ///< the period, s
+  /// ‖ζ_K‖/‖ζ_1‖, the last harmonic kept relative to the first: how much the truncation leaves out.
+  double truncation() const;
+};
+
+/// The series of N states sampled uniformly over a period, t_n = nT/N, built one sample at a time (the
+/// discrete Fourier sums, so the samples need not be kept); K ≤ N/2 − 1 harmonics.
+class FourierAccumulator {
+ public:
+  FourierAccumulator(size_t nodes, int N, int K, double T);
+  /// Sample n (0 ≤ n < N) of the period.
+  void add(int n, const NsState& s);
+  const PeriodicBase& base() const { return b_; }
+
+ private:
+  PeriodicBase b_;
+  int N_;
+};
+
 /// How the multipliers are sought.
 struct FloquetOptions {
-  int steps = 0;        ///< time steps of the linear stepper per period (0: as many as the base has samples)
-  int harmonics = 8;    ///< K, Fourier harmonics of the base kept (at most samples/2 − 1)
+  /// Time steps of the linear stepper per period. The stepper is second order and implicit in the stiff
+  /// part: at Re 100 on n_θ 48 the multiplier moves 4e-4 from 250 steps to 2000 and 2e-5 from 1000.
+  int steps = 400;
   int krylov = 20;      ///< Arnoldi vectors (one period of the stepper each)
   int count = 6;        ///< multipliers reported, largest |μ| first
   unsigned seed = 12345;
@@ -41,16 +66,14 @@ struct FloquetResult {
   int steps = 0;                  ///< time steps per period
   int periods = 0;                ///< periods of the stepper run (products with the period map)
   int harmonics = 0;              ///< harmonics of the base kept
-  /// Largest relative amplitude ‖b_K‖/‖b_1‖ of the last harmonic kept (of ζ): how much the truncation
-  /// leaves out.
-  double truncation = 0.0;
+  double truncation = 0.0;        ///< the base's PeriodicBase::truncation
   double seconds = 0.0;           ///< wall time, s
 };
 
-/// The leading Floquet multipliers at spanwise wavenumber β (1/m, ≥ 0) of the periodic base sampled at
-/// t_n = nT/N, n = 0…N−1 (samples: states on ns_grid(p), ψ and ζ; N ≥ 4). Throws std::invalid_argument for
-/// β < 0, T ≤ 0, too few samples or samples of the wrong size; std::runtime_error when a factorisation fails.
-FloquetResult floquet_multipliers(const NsParams& p, const std::vector<NsState>& samples, double T, double beta,
+/// The leading Floquet multipliers at spanwise wavenumber β (1/m, ≥ 0) of the periodic base (states on
+/// ns_grid(p), at least one harmonic). Throws std::invalid_argument for β < 0, T ≤ 0, no harmonic, a base
+/// of the wrong size or steps < 4; std::runtime_error when a factorisation fails.
+FloquetResult floquet_multipliers(const NsParams& p, const PeriodicBase& base, double beta,
                                   const FloquetOptions& o = {});
 
 }  // namespace magnus
