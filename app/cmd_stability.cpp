@@ -2,7 +2,8 @@
 //                  [--spanwise [--beta A:B:STEP]] [--eigensolver NAME] [--json]
 // The steady state's leading eigenvalues (growth rate, St; stable or not) and, with --spanwise, those of
 // three-dimensional disturbances per spanwise wavenumber; or the onset of shedding: the critical spin ratio
-// or Reynolds number where the wake's pair crosses the axis.
+// or Reynolds number where the wake's pair crosses the axis; with --spanwise --critical-reynolds, the
+// Reynolds number where the flow turns three-dimensional and its spanwise wavelength.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -237,8 +238,9 @@ void command_stability(const StabilityCliOptions& o) {
                                 ": an onset curve needs --critical-spin A:B (with --reynolds) or --critical-reynolds A:B "
                                 "(with --spin-ratio)");
   const CriticalRange range = critical ? parse_critical(o) : CriticalRange{};
-  if (critical && o.spanwise)
-    throw std::invalid_argument("--spanwise: the 3D scan is of one steady state; not with --critical-spin or --critical-reynolds");
+  if (critical && o.spanwise && (range.which != HopfParameter::reynolds || !range.others.empty()))
+    throw std::invalid_argument("--spanwise: the 3D onset is searched in Re only: with --critical-reynolds A:B, "
+                                "not --critical-spin or an onset curve");
   if (o.beta_given && !o.spanwise) throw std::invalid_argument("--beta: only used with --spanwise");
   std::vector<double> beta_D;
   if (o.spanwise) {
@@ -284,6 +286,8 @@ void command_stability(const StabilityCliOptions& o) {
          {"search", search_json(st)}};
     // The 3D stability of the flow that is there: the steady state when it is stable, else the shedding orbit.
     if (o.spanwise) j["spanwise"] = spanwise_report(p, s, beta_D, o.eigensolver, o.json, text);
+  } else if (o.spanwise) {
+    j = spanwise_critical_report(p, beta_D, range.A, range.B, range.tolerance, o.eigensolver, o.json, text);
   } else if (range.others.empty()) {
     critical_report(p, range, o.eigensolver, o.json, text, j);
   } else {
@@ -306,7 +310,8 @@ void add_stability_command(CLI::App& app) {
   cmd->add_option("--critical-spin", o->critical,
                   "the spin ratio in A:B where shedding stops (the wake's pair crosses the axis; secant search)");
   cmd->add_option("--critical-reynolds", o->critical_re,
-                  "the Reynolds number in A:B where shedding starts, at the case's spin ratio");
+                  "the Reynolds number in A:B where shedding starts, at the case's spin ratio (with --spanwise: where the "
+                  "flow turns three-dimensional)");
   cmd->add_option("--reynolds", o->curve_re,
                   "with --critical-spin: the curve α_L(Re) over Reynolds numbers A:B:STEP, each point continued from the last");
   cmd->add_option("--spin-ratio", o->curve_alpha,

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "io/text_format.hpp"
+#include "postproc/navier_stokes/spanwise_critical.hpp"
 #include "postproc/navier_stokes/spanwise_scan.hpp"
 
 namespace magnus {
@@ -54,6 +55,49 @@ Json spanwise_report(const NsParams& p, const HopfEvaluation& ss, const std::vec
     j["most_unstable_growth_rate"] = s.growth;
     j["stationary"] = s.stationary;
     j["inside_scan"] = s.interior;
+  }
+  return j;
+}
+
+Json spanwise_critical_report(const NsParams& p, const std::vector<double>& beta_D, double Re_a, double Re_b,
+                              double tol, const std::string& eigensolver, bool json, std::string& text) {
+  auto line = [](const SpanwiseEvaluation& e) {
+    const SpanwiseScan& s = e.scan;
+    return fmt::format("{:>9.5g}  {:>8}  {:>10}  {:>9}  {:>8}  {:>7.1f}", e.Re, s.periodic ? "orbit" : "steady",
+                       figure(s.growth, "{:+.5f}"), figure(s.beta_D, "{:.4g}"),
+                       s.beta_D > 0.0 ? fmt::format("{:.4g}", s.wavelength_D()) : "∞", e.seconds);
+  };
+  const std::string head = fmt::format("{:>9}  {:>8}  {:>10}  {:>9}  {:>8}  {:>7}", "Re", "base", "growth", "β·D",
+                                       "λ_z/D", "time s");
+  if (!json) std::fprintf(stderr, "3D onset: the most unstable growth rate (U/D) per Reynolds number\n%s\n", head.c_str());
+  const SpanwiseCritical c = spanwise_critical(p, beta_D, Re_a, Re_b, tol, eigensolver, 10, [&](const SpanwiseEvaluation& e) {
+    if (!json) std::fprintf(stderr, "%s\n", line(e).c_str());
+  });
+  const double alpha = p.a * p.omega / p.U;
+  text += fmt::format("3D onset       the most unstable spanwise growth rate per Reynolds number, α {:g}\n", alpha) +
+          head + "\n";
+  Json rows = Json::array();
+  for (const SpanwiseEvaluation& e : c.evaluations) {
+    text += line(e) + "\n";
+    rows.push_back({{"reynolds", e.Re},
+                    {"base", e.scan.periodic ? "periodic" : "steady"},
+                    {"growth_rate", e.scan.growth},
+                    {"beta_D", e.scan.beta_D},
+                    {"inside_scan", e.scan.interior},
+                    {"seconds", e.seconds}});
+  }
+  Json j = {{"spin_ratio", alpha}, {"evaluations", rows}, {"seconds", c.seconds}, {"found", c.found}};
+  if (c.found) {
+    const std::string mode = c.beta_D > 0.0 ? fmt::format("3D mode at λ_z = {:.3g} D (β·D = {:.3g})", c.wavelength_D(), c.beta_D)
+                                            : std::string("β = 0: a 2D mode");
+    text += fmt::format("critical Re    {:.2f} ± {:.2g} (bracket [{:.2f}, {:.2f}]): {}; the 2D flow is real below "
+                        "it ({} scans, {:.1f} s)\n",
+                        c.Re_c, c.change, c.lo, c.hi, mode, c.evaluations.size(), c.seconds);
+    j["critical_reynolds"] = c.Re_c, j["change"] = c.change, j["bracket"] = {c.lo, c.hi};
+    j["beta_D"] = c.beta_D, j["wavelength_D"] = c.beta_D > 0.0 ? Json(c.wavelength_D()) : Json();
+  } else {
+    text += "critical Re    undefined: " + c.message + "\n";
+    j["undefined"] = c.message;
   }
   return j;
 }

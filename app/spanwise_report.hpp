@@ -1,6 +1,6 @@
 #pragma once
 // The spanwise part of `magnus stability CASE --spanwise`: the β-scan of the steady state (postproc's
-// spanwise_scan) as a table, a verdict and a JSON object.
+// spanwise_scan) as a table, a verdict and a JSON object; and the search for the 3D onset in Re.
 #include <string>
 #include <vector>
 
@@ -14,5 +14,11 @@ namespace magnus {
 /// Progress lines go to stderr unless json.
 Json spanwise_report(const NsParams& p, const HopfEvaluation& s, const std::vector<double>& beta_D,
                      const std::string& eigensolver, bool json, std::string& text);
+
+/// The 3D onset in [Re_a, Re_b] to within tol (spanwise_critical at the wavenumbers beta_D): one line per
+/// Reynolds number searched (to stderr as it goes unless json), the crossing and its wavelength appended to
+/// text; its JSON object returned.
+Json spanwise_critical_report(const NsParams& p, const std::vector<double>& beta_D, double Re_a, double Re_b,
+                              double tol, const std::string& eigensolver, bool json, std::string& text);
 
 }  // namespace magnus

@@ -56,9 +56,34 @@ TEST_CASE("magnus stability --spanwise: the growth rate per wavenumber and the v
   for (auto [args, expect] :
        {std::pair{std::vector<std::string>{"--beta", "0:1:1"}, "only used with --spanwise"},
         {std::vector<std::string>{"--spanwise", "--beta", "-1:1:1"}, "must be ≥ 0"},
-        {std::vector<std::string>{"--spanwise", "--critical-spin", "1:2"}, "not with --critical-spin"}}) {
+        {std::vector<std::string>{"--spanwise", "--critical-spin", "1:2"}, "not --critical-spin or an onset curve"},
+        {std::vector<std::string>{"--spanwise", "--critical-reynolds", "40:60", "--spin-ratio", "0:1:1"},
+         "not --critical-spin or an onset curve"}}) {
     const Outcome b = magnus_cmd({"stability", s_map}, args, dir);
     INFO(b.err);
     CHECK(refused(b, expect));
   }
+}
+
+TEST_CASE("magnus stability --spanwise --critical-reynolds: a range with no 3D onset is undefined",
+          "[app][stability]") {
+  const std::string dir = temp_dir("ns-spanwise-critical");
+  // α 3 on n_θ 32, R = 20a: the steady state is stable to every wavenumber at both ends of Re 30…60, so the
+  // search has no crossing to find and says so; each end is one scan.
+  const Outcome o = magnus_cmd({"stability", s_map, "--set", "grid.n_theta=32", "--set", "cylinder.spin_ratio=3",
+                                "--spanwise", "--beta", "1:2:1", "--critical-reynolds", "30:60", "--json"},
+                               dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  const auto j = nlohmann::json::parse(o.out);
+  CHECK(j["found"] == false);
+  CHECK(j["undefined"].get<std::string>().find("does not cross zero in [30, 60]") != std::string::npos);
+  CHECK(!j.contains("critical_reynolds"));
+  REQUIRE(j["evaluations"].size() == 2);
+  for (const auto& e : j["evaluations"]) {
+    CHECK(e["base"] == "steady");
+    CHECK(e["growth_rate"].get<double>() < 0.0);
+  }
+  CHECK(j["evaluations"][0]["reynolds"].get<double>() == 30.0);
+  CHECK(j["evaluations"][1]["reynolds"].get<double>() == 60.0);
 }

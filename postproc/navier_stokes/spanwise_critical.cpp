@@ -1,0 +1,104 @@
+#include "postproc/navier_stokes/spanwise_critical.hpp"
+
+#include <fmt/core.h>
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace magnus {
+
+double SpanwiseCritical::wavelength_D() const { return beta_D > 0.0 ? 2.0 * M_PI / beta_D : 0.0; }
+
+namespace {
+
+/// The scan at Reynolds number Re (the steady state and its 2D eigenvalues first, as the CLI does).
+SpanwiseEvaluation evaluate(const NsParams& p, const std::vector<double>& beta_D, double Re,
+                            const std::string& eigensolver) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const NsParams q = with_parameter(p, HopfParameter::reynolds, Re);
+  SpanwiseEvaluation e;
+  e.Re = Re;
+  e.scan = spanwise_stability(q, steady_stability(q, eigensolver), beta_D, eigensolver);
+  e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return e;
+}
+
+bool defined(const SpanwiseScan& s) {
+  for (const SpanwisePoint& pt : s.points)
+    if (pt.found) return true;
+  return false;
+}
+
+}  // namespace
+
+SpanwiseCritical spanwise_critical(const NsParams& p, const std::vector<double>& beta_D, double Re_a, double Re_b,
+                                   double tol, const std::string& eigensolver, int max_evaluations,
+                                   const std::function<void(const SpanwiseEvaluation&)>& on_evaluation) {
+  if (!(Re_a > 0.0) || !(Re_a < Re_b) || !std::isfinite(Re_b))
+    throw std::invalid_argument(fmt::format("spanwise_critical: needs 0 < Re_a < Re_b (got {}, {})", Re_a, Re_b));
+  if (!(tol > 0.0)) throw std::invalid_argument("spanwise_critical: the tolerance must be > 0");
+  const auto t0 = std::chrono::steady_clock::now();
+  SpanwiseCritical c;
+  // A scan that fails (no steady state, an orbit not found) ends the search, naming its Reynolds number.
+  auto run = [&](double Re) -> const SpanwiseEvaluation& {
+    try {
+      c.evaluations.push_back(evaluate(p, beta_D, Re, eigensolver));
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(fmt::format("the 3D onset search at Re {:.5g}: {}", Re, e.what()));
+    }
+    if (on_evaluation) on_evaluation(c.evaluations.back());
+    return c.evaluations.back();
+  };
+  auto finish = [&] {
+    c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return c;
+  };
+  SpanwiseEvaluation a = run(Re_a), b = run(Re_b);
+  if (!defined(a.scan) || !defined(b.scan)) {
+    c.message = "no growth rate converged at an end of the range";
+    return finish();
+  }
+  if (!(a.scan.growth < 0.0 && b.scan.growth > 0.0)) {
+    c.message = fmt::format("the most unstable growth rate does not cross zero in [{:g}, {:g}] ({:+.4f} and "
+                            "{:+.4f} U/D at the ends)",
+                            Re_a, Re_b, a.scan.growth, b.scan.growth);
+    return finish();
+  }
+  // Illinois regula falsi: the end kept twice in a row has its growth rate halved.
+  double fa = a.scan.growth, fb = b.scan.growth, root = Re_a;
+  int kept = 0;
+  for (int k = 2; k < max_evaluations; ++k) {
+    const double next = (a.Re * fb - b.Re * fa) / (fb - fa);
+    c.change = std::min(std::fabs(next - root), b.Re - a.Re);
+    root = next;
+    if (k > 2 && c.change < tol) break;
+    const SpanwiseEvaluation m = run(next);
+    if (!defined(m.scan)) {
+      c.message = fmt::format("no growth rate converged at Re {:.5g}", next);
+      return finish();
+    }
+    if (m.scan.growth < 0.0) {
+      a = m, fa = m.scan.growth;
+      if (kept == -1) fb *= 0.5;
+      kept = -1;
+    } else {
+      b = m, fb = m.scan.growth;
+      if (kept == 1) fa *= 0.5;
+      kept = 1;
+    }
+    if (b.Re - a.Re < tol) {
+      c.change = b.Re - a.Re;
+      root = (a.Re * b.scan.growth - b.Re * a.scan.growth) / (b.scan.growth - a.scan.growth);
+      break;
+    }
+  }
+  c.lo = a.Re, c.hi = b.Re, c.Re_c = root;
+  const double w = (root - a.Re) / (b.Re - a.Re);
+  c.beta_D = (1.0 - w) * a.scan.beta_D + w * b.scan.beta_D;
+  c.found = c.change < tol;
+  if (!c.found) c.message = fmt::format("not converged to ±{:g} in {} scans", tol, max_evaluations);
+  return finish();
+}
+
+}  // namespace magnus

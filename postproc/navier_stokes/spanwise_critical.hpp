@@ -1,0 +1,40 @@
+#pragma once
+// The onset of three-dimensionality: the Reynolds number, at the case's spin ratio, where the most unstable
+// spanwise wavenumber's growth rate crosses zero (the spanwise-uniform flow stops being real), and that
+// wavenumber. Each Reynolds number is one spanwise_stability scan: of the steady state when it is stable,
+// else of the shedding orbit. The crossing is found by regula falsi (Illinois) on the scan's growth rate.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "postproc/navier_stokes/spanwise_scan.hpp"
+
+namespace magnus {
+
+/// One Reynolds number of the search and its scan.
+struct SpanwiseEvaluation {
+  double Re = 0.0;
+  SpanwiseScan scan;
+  double seconds = 0.0;  ///< wall time of the steady state, its 2D eigenvalues and the scan, s
+};
+
+/// The crossing.
+struct SpanwiseCritical {
+  bool found = false;        ///< the growth rate changed sign inside [Re_a, Re_b] and the search converged
+  std::string message;       ///< why not, when !found
+  double Re_c = 0.0;         ///< the critical Reynolds number (the last regula falsi root)
+  double change = 0.0;       ///< |last move of the root|, or the bracket when that is smaller
+  double lo = 0.0, hi = 0.0; ///< the last bracket (growth rate < 0 at lo, > 0 at hi)
+  double beta_D = 0.0;       ///< the most unstable β·D at the crossing (linear in Re between lo and hi)
+  double wavelength_D() const;  ///< 2π/(β·D): the critical spanwise wavelength in D (0: undefined)
+  std::vector<SpanwiseEvaluation> evaluations;  ///< in the order solved
+  double seconds = 0.0;
+};
+
+/// The crossing in [Re_a, Re_b] (0 < Re_a < Re_b) to within tol (> 0, in Re) at the wavenumbers beta_D;
+/// at most max_evaluations scans. on_evaluation after each. Throws std::invalid_argument for a bad range.
+SpanwiseCritical spanwise_critical(const NsParams& p, const std::vector<double>& beta_D, double Re_a, double Re_b,
+                                   double tol, const std::string& eigensolver, int max_evaluations = 10,
+                                   const std::function<void(const SpanwiseEvaluation&)>& on_evaluation = {});
+
+}  // namespace magnus
