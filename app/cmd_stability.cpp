@@ -1,5 +1,5 @@
 // magnus stability CASE [--set k=v]… [--critical-spin A:B | --critical-reynolds A:B] [--tolerance T]
-//                  [--spanwise [--beta A:B:STEP]] [--eigensolver NAME] [--json]
+//                  [--spanwise [--beta A:B:STEP]] [--eigensolver NAME] [--output FILE.h5] [--json]
 // The steady state's leading eigenvalues (growth rate, St; stable or not) and, with --spanwise, those of
 // three-dimensional disturbances per spanwise wavenumber; or the onset of shedding: the critical spin ratio
 // or Reynolds number where the wake's pair crosses the axis; with --spanwise --critical-reynolds, the
@@ -17,9 +17,11 @@
 
 #include "app/commands.hpp"
 #include "app/spanwise_report.hpp"
+#include "base/atomic_file.hpp"
 #include "io/case_file.hpp"
 #include "io/case_keys.hpp"
 #include "io/json_output.hpp"
+#include "io/stability_file.hpp"
 #include "io/sweep_file.hpp"
 #include "io/text_format.hpp"
 #include "postproc/navier_stokes/critical.hpp"
@@ -34,6 +36,7 @@ namespace {
 
 struct StabilityCliOptions {
   std::string case_path, critical, critical_re, tolerance, curve_re, curve_alpha;
+  std::string output;  ///< --output: the spectra as an HDF5 file
   std::string beta = "0.5:4:0.5";  ///< --beta: the spanwise wavenumbers β·D, A:B:STEP
   bool spanwise = false, beta_given = false;
   std::string eigensolver = StabilityOptions{}.eigensolver;
@@ -242,6 +245,12 @@ void command_stability(const StabilityCliOptions& o) {
     throw std::invalid_argument("--spanwise: the 3D onset is searched in Re only: with --critical-reynolds A:B, "
                                 "not --critical-spin or an onset curve");
   if (o.beta_given && !o.spanwise) throw std::invalid_argument("--beta: only used with --spanwise");
+  if (!o.output.empty()) {
+    if (critical && !o.spanwise)
+      throw std::invalid_argument("--output: the file holds eigenvalues and 3D spectra, not the 2D onset search");
+    check_distinct_paths({o.case_path}, {o.output});
+    check_file_writable(o.output, "the HDF5 stability file");
+  }
   std::vector<double> beta_D;
   if (o.spanwise) {
     beta_D = parse_sweep_range(o.beta, "--beta").values;
@@ -293,6 +302,10 @@ void command_stability(const StabilityCliOptions& o) {
   } else {
     curve_report(p, range, o.eigensolver, o.json, text, j);
   }
+  if (!o.output.empty()) {
+    write_stability_hdf5(o.output, j, c.title, c.source_text);
+    text += fmt::format("output         {}\n", o.output);
+  }
   if (o.json)
     std::fputs((json_text(j) + "\n").c_str(), stdout);
   else
@@ -326,6 +339,8 @@ void add_stability_command(CLI::App& app) {
   cmd->add_option("--eigensolver", o->eigensolver,
                   "each shift's search: arnoldi (hand-written Krylov–Schur) or arpack (ARPACK-ng); default " +
                       StabilityOptions{}.eigensolver);
+  cmd->add_option("--output", o->output,
+                  "write the eigenvalues and the 3D spectra (or the 3D onset search) to this HDF5 file");
   cmd->add_flag("--json", o->json, "print one JSON object instead of the table");
   cmd->callback([o] { command_stability(*o); });
 }

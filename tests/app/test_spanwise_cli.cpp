@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "io/hdf5_io.hpp"
+#include "io/schema_io.hpp"
 #include "support.hpp"
 
 using namespace magnus::test;
@@ -17,7 +19,9 @@ const std::string s_map = std::string(MAGNUS_SOURCE_DIR) + "/cases/s_map.toml";
 TEST_CASE("magnus stability --spanwise: the growth rate per wavenumber and the verdict", "[app][stability]") {
   const std::string dir = temp_dir("ns-spanwise-cli");
   // Re 40 without spin on the map's grid: the steady wake, β·D = 0 and 1.
-  Outcome o = magnus_cmd({"stability", s_map, "--set", "flow.reynolds=40", "--spanwise", "--beta", "0:1:1", "--json"}, dir);
+  const std::string h5 = dir + "/spectra.h5";
+  Outcome o = magnus_cmd(
+      {"stability", s_map, "--set", "flow.reynolds=40", "--spanwise", "--beta", "0:1:1", "--output", h5, "--json"}, dir);
   INFO(o.err);
   REQUIRE(o.status == 0);
   const auto j = nlohmann::json::parse(o.out);
@@ -34,6 +38,27 @@ TEST_CASE("magnus stability --spanwise: the growth rate per wavenumber and the v
   CHECK(sp["stable"].get<bool>() == (sp["points"][0]["growth_rate"].get<double>() < 0.0));
   CHECK(sp["verdict"].get<std::string>().find("spanwise-uniform flow is stable") != std::string::npos);
   CHECK(sp["base"] == "steady");
+  {
+    // The HDF5 file carries the JSON's numbers: the 2D eigenvalues and the scan (β = 0 has no wavelength:
+    // the fill value, named by _FillValue).
+    const magnus::ResultFile f(h5, {"magnus-stability"});
+    CHECK(f.attr_string("/", "model") == "navier-stokes");
+    CHECK(f.attr_double("/", "reynolds") == 40.0);
+    const std::vector<double> eig = f.dataset("/eigenvalues/growth_rate");
+    REQUIRE(eig.size() == j["eigenvalues"].size());
+    CHECK(eig[0] == j["eigenvalues"][0]["growth_rate"].get<double>());
+    const std::vector<double> beta = f.dataset("/spanwise/beta_D"), g = f.dataset("/spanwise/growth_rate");
+    const std::vector<double> lz = f.dataset("/spanwise/wavelength_D");
+    REQUIRE(beta.size() == 2);
+    for (size_t k = 0; k < 2; ++k) {
+      CHECK(beta[k] == sp["points"][k]["beta_D"].get<double>());
+      CHECK(g[k] == sp["points"][k]["growth_rate"].get<double>());
+    }
+    CHECK(lz[0] == magnus::kFillValue);
+    CHECK(lz[1] == Approx(2.0 * M_PI));
+    CHECK(f.attr_string("/spanwise", "verdict") == sp["verdict"].get<std::string>());
+    CHECK(f.attr_int("/spanwise", "stable") == (sp["stable"].get<bool>() ? 1 : 0));
+  }
 
   // Re 100 sheds: the scan is of its orbit (Floquet). n_θ 32, R = 20a: the exponent is ln(μ)/T in U/D.
   o = magnus_cmd({"stability", s_map, "--set", "flow.reynolds=100", "--set", "grid.n_theta=32", "--spanwise",
@@ -58,7 +83,9 @@ TEST_CASE("magnus stability --spanwise: the growth rate per wavenumber and the v
         {std::vector<std::string>{"--spanwise", "--beta", "-1:1:1"}, "must be ≥ 0"},
         {std::vector<std::string>{"--spanwise", "--critical-spin", "1:2"}, "not --critical-spin or an onset curve"},
         {std::vector<std::string>{"--spanwise", "--critical-reynolds", "40:60", "--spin-ratio", "0:1:1"},
-         "not --critical-spin or an onset curve"}}) {
+         "not --critical-spin or an onset curve"},
+        {std::vector<std::string>{"--critical-spin", "1:2", "--output", dir + "/x.h5"}, "not the 2D onset search"},
+        {std::vector<std::string>{"--output", dir}, "it is a directory"}}) {
     const Outcome b = magnus_cmd({"stability", s_map}, args, dir);
     INFO(b.err);
     CHECK(refused(b, expect));
@@ -71,7 +98,8 @@ TEST_CASE("magnus stability --spanwise --critical-reynolds: a range with no 3D o
   // α 3 on n_θ 32, R = 20a: the steady state is stable to every wavenumber at both ends of Re 30…60, so the
   // search has no crossing to find and says so; each end is one scan.
   const Outcome o = magnus_cmd({"stability", s_map, "--set", "grid.n_theta=32", "--set", "cylinder.spin_ratio=3",
-                                "--spanwise", "--beta", "1:2:1", "--critical-reynolds", "30:60", "--json"},
+                                "--spanwise", "--beta", "1:2:1", "--critical-reynolds", "30:60", "--output",
+                                dir + "/onset.h5", "--json"},
                                dir);
   INFO(o.err);
   REQUIRE(o.status == 0);
@@ -86,4 +114,11 @@ TEST_CASE("magnus stability --spanwise --critical-reynolds: a range with no 3D o
   }
   CHECK(j["evaluations"][0]["reynolds"].get<double>() == 30.0);
   CHECK(j["evaluations"][1]["reynolds"].get<double>() == 60.0);
+  // The file: a row per scan, the search's outcome in /onset3d's attributes.
+  const magnus::ResultFile f(dir + "/onset.h5", {"magnus-stability"});
+  CHECK(f.dataset("/onset3d/reynolds") == std::vector<double>{30.0, 60.0});
+  CHECK(f.dataset("/onset3d/periodic") == std::vector<double>{0.0, 0.0});
+  CHECK(f.attr_int("/onset3d", "found") == 0);
+  CHECK(f.attr_string("/onset3d", "message") == j["undefined"].get<std::string>());
+  CHECK(!f.has_attr("/onset3d", "critical_reynolds"));
 }

@@ -1,0 +1,28 @@
+#pragma once
+// The spectra of `magnus stability` as an HDF5 file (format "magnus-stability", version 1): the 2D
+// eigenvalues of the steady state, the spanwise (3D) scan per wavenumber, and the search for the 3D
+// onset, written from the command's JSON object so that the file and `--json` carry the same numbers.
+//
+//     /            format, format_version, software_version, model, title, case (TOML), reynolds,
+//                  spin_ratio, stable (0/1), eigensolver
+//     /eigenvalues growth_rate, frequency (λ·D/U), strouhal, residual          one row per eigenvalue
+//     /spanwise    beta_D, wavelength_D, growth_rate, frequency, covered, solves, seconds
+//                  (+ multiplier_real, multiplier_imag of an orbit); attrs base, verdict, stable,
+//                  period (D/U), most_unstable_beta_D, most_unstable_wavelength_D, most_unstable_growth_rate
+//     /onset3d     reynolds, periodic (0/1), growth_rate, beta_D, seconds      one row per Reynolds number
+//                  attrs found, critical_reynolds, change, bracket_lo, bracket_hi, beta_D, wavelength_D,
+//                  message (when not found)
+// Undefined values are never stored as NaN: a column's undefined rows hold the fill value named by its
+// _FillValue attribute, an undefined attribute is listed in its group's `undefined` attribute.
+#include <string>
+
+#include "io/json_output.hpp"
+
+namespace magnus {
+
+/// Write the stability result j (the object `magnus stability --json` prints; no 2D onset search) with the
+/// case's title and TOML text to path, atomically. Throws std::runtime_error with one line naming path.
+void write_stability_hdf5(const std::string& path, const Json& j, const std::string& title,
+                          const std::string& case_text);
+
+}  // namespace magnus
