@@ -1,5 +1,6 @@
 // _magnus._stability: the navier-stokes steady state's leading eigenvalues and, given spanwise wavenumbers,
-// its three-dimensional stability (magnus stability CASE --spanwise): numpy arrays and plain values.
+// its three-dimensional stability (magnus stability CASE --spanwise); _magnus._onset_3d: where the flow turns
+// three-dimensional (--spanwise --critical-reynolds): numpy arrays and plain values.
 #include <pybind11/complex.h>
 #include <pybind11/stl.h>
 
@@ -9,6 +10,7 @@
 
 #include "postproc/navier_stokes/resolution.hpp"
 #include "postproc/navier_stokes/run.hpp"
+#include "postproc/navier_stokes/spanwise_critical.hpp"
 #include "postproc/navier_stokes/spanwise_scan.hpp"
 #include "bindings.hpp"
 
@@ -51,6 +53,22 @@ py::dict scan_dict(const SpanwiseScan& s) {
   return d;
 }
 
+/// The case's parameters for a stability question, its wavenumbers and eigensolver checked (one line each).
+NsParams stability_params(const std::string& source, bool is_path, const std::vector<std::string>& overrides,
+                          const std::vector<double>& beta_D, const std::string& eigensolver) {
+  const Case c = case_of(source, is_path, overrides);
+  if (c.model != FlowModel::navier_stokes)
+    throw std::invalid_argument("magnus.stability needs model.flow = \"navier-stokes\"");
+  check_resolvable(c);
+  const NsParams p = ns_params(c);
+  if (!(p.U > 0.0)) throw std::invalid_argument("flow.speed must be > 0 (eigenvalues in U/D)");
+  for (double b : beta_D)
+    if (!(b >= 0.0) || !std::isfinite(b)) throw std::invalid_argument("spanwise: wavenumbers β·D must be finite and ≥ 0");
+  if (!known_eigensolver(eigensolver))
+    throw std::invalid_argument("eigensolver \"" + eigensolver + "\": expected " + eigensolver_names());
+  return p;
+}
+
 py::dict stability(const std::string& source, bool is_path, const std::vector<std::string>& overrides,
                    const std::vector<double>& beta_D, const std::string& eigensolver) {
   HopfEvaluation s;
@@ -58,16 +76,7 @@ py::dict stability(const std::string& source, bool is_path, const std::vector<st
   NsParams p;
   {
     py::gil_scoped_release nogil;
-    const Case c = case_of(source, is_path, overrides);
-    if (c.model != FlowModel::navier_stokes)
-      throw std::invalid_argument("magnus.stability needs model.flow = \"navier-stokes\"");
-    check_resolvable(c);
-    p = ns_params(c);
-    if (!(p.U > 0.0)) throw std::invalid_argument("flow.speed must be > 0 (eigenvalues in U/D)");
-    for (double b : beta_D)
-      if (!(b >= 0.0) || !std::isfinite(b)) throw std::invalid_argument("spanwise: wavenumbers β·D must be finite and ≥ 0");
-    if (!known_eigensolver(eigensolver))
-      throw std::invalid_argument("eigensolver \"" + eigensolver + "\": expected " + eigensolver_names());
+    p = stability_params(source, is_path, overrides, beta_D, eigensolver);
     s = steady_stability(p, eigensolver);
     if (!beta_D.empty()) scan = spanwise_stability(p, s, beta_D, eigensolver);
   }
@@ -81,12 +90,52 @@ py::dict stability(const std::string& source, bool is_path, const std::vector<st
   return d;
 }
 
+py::dict onset_3d(const std::string& source, bool is_path, const std::vector<std::string>& overrides,
+                  const std::vector<double>& beta_D, double Re_a, double Re_b, double tol,
+                  const std::string& eigensolver) {
+  SpanwiseCritical c;
+  NsParams p;
+  {
+    py::gil_scoped_release nogil;
+    if (beta_D.empty()) throw std::invalid_argument("spanwise: give the wavenumbers β·D to scan");
+    p = stability_params(source, is_path, overrides, beta_D, eigensolver);
+    c = spanwise_critical(p, beta_D, Re_a, Re_b, tol, eigensolver);
+  }
+  std::vector<double> re, growth, beta, periodic;
+  for (const SpanwiseEvaluation& e : c.evaluations) {
+    re.push_back(e.Re), growth.push_back(e.scan.growth), beta.push_back(e.scan.beta_D);
+    periodic.push_back(e.scan.periodic ? 1.0 : 0.0);
+  }
+  py::dict d;
+  d["spin_ratio"] = p.a * p.omega / p.U;
+  d["found"] = c.found;
+  if (c.found) {
+    d["critical_reynolds"] = c.Re_c, d["change"] = c.change, d["bracket"] = py::make_tuple(c.lo, c.hi);
+    d["beta_D"] = c.beta_D;
+    if (c.beta_D > 0.0) d["wavelength_D"] = c.wavelength_D();
+  } else {
+    d["message"] = c.message;
+  }
+  const py::ssize_t n = py::ssize_t(re.size());
+  py::dict ev;
+  ev["reynolds"] = owned_array(std::move(re), {n});
+  ev["growth_rate"] = owned_array(std::move(growth), {n});
+  ev["beta_D"] = owned_array(std::move(beta), {n});
+  ev["periodic"] = owned_array(std::move(periodic), {n});
+  d["evaluations"] = ev;
+  d["seconds"] = c.seconds;
+  return d;
+}
+
 }  // namespace
 
 void bind_stability(py::module_& m) {
   m.def("_stability", &stability,
         "the steady state's leading eigenvalues (U/D) and, with wavenumbers β·D, its 3D stability",
         py::arg("source"), py::arg("is_path"), py::arg("overrides"), py::arg("beta_D"), py::arg("eigensolver"));
+  m.def("_onset_3d", &onset_3d, "the Reynolds number in [Re_a, Re_b] where the flow turns three-dimensional",
+        py::arg("source"), py::arg("is_path"), py::arg("overrides"), py::arg("beta_D"), py::arg("Re_a"),
+        py::arg("Re_b"), py::arg("tolerance"), py::arg("eigensolver"));
 }
 
 }  // namespace magnus::python

@@ -25,7 +25,7 @@ from ._magnus import Result
 
 __version__ = _magnus.__version__
 Result.__module__ = __name__
-__all__ = ["run", "sweep", "stability", "read", "open", "Result", "Sweep", "case_toml"]
+__all__ = ["run", "sweep", "stability", "onset_3d", "read", "open", "Result", "Sweep", "case_toml"]
 
 _MAX_THREADS = 64
 _MAX_SWEEP_POINTS = 100000  # as `magnus sweep`
@@ -234,4 +234,18 @@ def stability(case, /, *, spanwise=None, eigensolver="arnoldi", set=None, **over
             if key in sp:
                 sp[key] = np.ma.masked_invalid(sp[key])
     return raw
+
+
+def onset_3d(case, /, *, reynolds, spanwise, tolerance=1.0, eigensolver="arnoldi", set=None, **overrides):
+    """Where the flow turns three-dimensional, as `magnus stability CASE --spanwise --beta … --critical-reynolds
+    A:B`: the Reynolds number in reynolds = (A, B) where the largest growth rate over the wavenumbers
+    spanwise (β·D, an iterable of numbers ≥ 0) crosses zero, to within tolerance (in Re). Returns a dict:
+    spin_ratio, found; when found critical_reynolds, change, bracket, beta_D and wavelength_D (in D), else
+    message (why not); evaluations (arrays reynolds, growth_rate in U/D, beta_D, periodic: one per scan) and
+    seconds."""
+    beta = [float(b) for b in _sweep_values(spanwise, "spanwise")]
+    lo, hi = (float(x) for x in reynolds)
+    source, is_path = _source(case)
+    return _magnus._onset_3d(source, is_path, _overrides(overrides, set), beta, lo, hi, float(tolerance),
+                             str(eigensolver))
 

@@ -39,3 +39,20 @@ def test_bad_input_is_one_value_error():
         magnus.stability(S_MAP, spanwise=[float("nan")])
     with pytest.raises(ValueError, match="eigensolver"):
         magnus.stability(S_MAP, eigensolver="lapack")
+
+
+def test_onset_3d_matches_the_command_line():
+    # α 3 on n_θ 32: stable to every wavenumber at Re 30 and 60, so there is no crossing; each end one scan.
+    kw = dict(grid__n_theta=32, cylinder__spin_ratio=3)
+    o = magnus.onset_3d(S_MAP, reynolds=(30, 60), spanwise=[1.0, 2.0], **kw)
+    j = json.loads(cli("stability", S_MAP, "--set", "grid.n_theta=32", "--set", "cylinder.spin_ratio=3",
+                       "--spanwise", "--beta", "1:2:1", "--critical-reynolds", "30:60", "--json").stdout)
+    assert o["found"] is False and j["found"] is False
+    assert o["message"] == j["undefined"]
+    assert "critical_reynolds" not in o
+    assert list(o["evaluations"]["reynolds"]) == [30.0, 60.0]
+    assert list(o["evaluations"]["periodic"]) == [0.0, 0.0]
+    for k in range(2):
+        assert o["evaluations"]["growth_rate"][k] == pytest.approx(j["evaluations"][k]["growth_rate"], rel=0, abs=1e-12)
+    with pytest.raises(ValueError, match="0 < Re_a < Re_b"):
+        magnus.onset_3d(S_MAP, reynolds=(60, 30), spanwise=[1.0])
