@@ -65,12 +65,16 @@ SpanwiseCritical spanwise_critical(const NsParams& p, const std::vector<double>&
                             Re_a, Re_b, a.scan.growth, b.scan.growth);
     return finish();
   }
-  // Illinois regula falsi: the end kept twice in a row has its growth rate halved.
+  // Illinois regula falsi: the end kept twice in a row has its growth rate halved. The growth rate is often
+  // flat and then kinked (a slow far-field mode leads until the 3D mode overtakes it), where regula falsi
+  // crawls: a step that does not halve the bracket is followed by a bisection.
   double fa = a.scan.growth, fb = b.scan.growth, root = Re_a;
   int kept = 0;
+  bool bisect = false;
   for (int k = 2; k < max_evaluations; ++k) {
-    const double next = (a.Re * fb - b.Re * fa) / (fb - fa);
-    c.change = std::min(std::fabs(next - root), b.Re - a.Re);
+    const double width = b.Re - a.Re;
+    const double next = bisect ? 0.5 * (a.Re + b.Re) : (a.Re * fb - b.Re * fa) / (fb - fa);
+    c.change = std::min(std::fabs(next - root), width);
     root = next;
     if (k > 2 && c.change < tol) break;
     const SpanwiseEvaluation m = run(next);
@@ -87,6 +91,7 @@ SpanwiseCritical spanwise_critical(const NsParams& p, const std::vector<double>&
       if (kept == 1) fa *= 0.5;
       kept = 1;
     }
+    bisect = !bisect && b.Re - a.Re > 0.5 * width;
     if (b.Re - a.Re < tol) {
       c.change = b.Re - a.Re;
       root = (a.Re * b.scan.growth - b.Re * a.scan.growth) / (b.scan.growth - a.scan.growth);

@@ -2,7 +2,8 @@
 // The onset of three-dimensionality: the Reynolds number, at the case's spin ratio, where the most unstable
 // spanwise wavenumber's growth rate crosses zero (the spanwise-uniform flow stops being real), and that
 // wavenumber. Each Reynolds number is one spanwise_stability scan: of the steady state when it is stable,
-// else of the shedding orbit. The crossing is found by regula falsi (Illinois) on the scan's growth rate.
+// else of the shedding orbit. The crossing is found by regula falsi (Illinois) on the scan's growth rate,
+// with a bisection after any step that does not halve the bracket.
 #include <functional>
 #include <string>
 #include <vector>
