@@ -1,6 +1,8 @@
-// magnus plot FILE [-o DIR] [--size WxH] [--window X0:X1,Y0:Y1] [--movie FILM [--fps N]] [-q]
+// magnus plot FILE [-o DIR] [--size WxH] [--window X0:X1,Y0:Y1] [--onset3d FILE.h5]… [--movie FILM [--fps N]] [-q]
 #include <cstdio>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "app/commands.hpp"
 #include "app/movie.hpp"
@@ -11,6 +13,7 @@ namespace magnus {
 void add_plot_command(CLI::App& app) {
   struct Options {
     std::string file, dir, size, window, movie;
+    std::vector<std::string> onset;
     int fps = 12;
     bool quiet = false;
   };
@@ -36,9 +39,14 @@ void add_plot_command(CLI::App& app) {
       "time with the frame's time marked"));
   movie->excludes(dir);
   plot->add_option("--fps", o->fps, "the film's frames a second (default 12)")->needs(movie);
+  auto* onset = plot->add_option("--onset3d", o->onset,
+                                 "with an S(Re, α) map: a stability file holding a 3D onset (magnus stability "
+                                 "--spanwise --critical-reynolds A:B --output FILE; repeatable, one per α); points "
+                                 "above the onset curve are marked as three-dimensional");
+  onset->excludes(movie);
   plot->add_flag("-q,--quiet", o->quiet, "do not list the files written");
   plot->callback([o] {
-    if (o->movie.empty()) return command_plot(o->file, o->dir, o->size, o->window, o->quiet);
+    if (o->movie.empty()) return command_plot(o->file, o->dir, o->size, o->window, o->quiet, o->onset);
     const PlotSize size = o->size.empty() ? PlotSize{} : parse_plot_size(o->size);
     std::optional<PlotWindow> window;
     if (!o->window.empty()) window = parse_plot_window(o->window);

@@ -13,6 +13,7 @@
 #include "io/ns_sweep_file.hpp"
 #include "io/reference_file.hpp"
 #include "io/result_reader.hpp"
+#include "io/stability_file.hpp"
 #include "io/rotor_data.hpp"
 #include "plot/ns_map_plot.hpp"
 
@@ -161,7 +162,7 @@ void plot_result_pictures(const std::string& path, const std::string& dir, PlotS
 }  // namespace
 
 PlotOutcome plot_result_file(const std::string& path, const std::string& dir, PlotSize size,
-                             const std::optional<PlotWindow>& window) {
+                             const std::optional<PlotWindow>& window, const std::vector<std::string>& onset_files) {
   PlotOutcome out;
   // A sweep file draws C_L(α) (or C_L(Γ)); anything else goes to the result reader and its messages.
   bool sweep = false, ns_map = false;
@@ -173,9 +174,13 @@ PlotOutcome plot_result_file(const std::string& path, const std::string& dir, Pl
     sweep = false;  // not a sweep: the result reader below says what it is
   }
   if (sweep) check_result(path);  // what inspect refuses is refused here too (results: in read_result)
+  if (!onset_files.empty() && !ns_map)
+    throw std::runtime_error("--onset3d: only for the S(Re, α) map of a navier-stokes sweep, not '" + path + "'");
+  std::vector<Onset3d> onset;
+  for (const std::string& f : onset_files) onset.push_back(read_onset3d(f));
   if (ns_map) {  // the viscous S(Re, α) map: S/(2πρa²) against α per Re
     const std::string png = output_base(path, dir) + "_s_map.png";
-    plot_ns_map(read_ns_map_hdf5(path), png, size);
+    plot_ns_map(read_ns_map_hdf5(path), png, size, onset);
     out.written.push_back(png);
   } else if (sweep) {
     plot_lift_sweep_file(path, dir, size, out);
@@ -186,11 +191,11 @@ PlotOutcome plot_result_file(const std::string& path, const std::string& dir, Pl
 }
 
 void command_plot(const std::string& path, const std::string& dir, const std::string& size,
-                  const std::string& window, bool quiet) {
+                  const std::string& window, bool quiet, const std::vector<std::string>& onset_files) {
   const PlotSize sz = size.empty() ? PlotSize{} : parse_plot_size(size);
   std::optional<PlotWindow> win;
   if (!window.empty()) win = parse_plot_window(window);
-  const PlotOutcome o = plot_result_file(path, dir, sz, win);
+  const PlotOutcome o = plot_result_file(path, dir, sz, win, onset_files);
   for (const auto& s : o.skipped) std::fprintf(stderr, "magnus: note: %s\n", s.c_str());
   if (!quiet)
     for (const auto& w : o.written) std::printf("%s\n", w.c_str());

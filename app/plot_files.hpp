@@ -27,13 +27,15 @@ struct PlotOutcome {
 /// _vorticity.png, _forces.png: C_L, C_D against t, and _shear.png); a sweep file: dir/<stem>_cl.png
 /// (stem: the file name without its extension; dir "" means the file's directory). A picture whose data
 /// the file lacks is skipped; throws if nothing can be drawn.
-/// `window`: the field pictures' window (units of a), default view_window.
+/// `window`: the field pictures' window (units of a), default view_window. onset_files: magnus-stability
+/// files with a 3D onset each, marked on the S(Re, α) map of a navier-stokes sweep (refused for any other).
 PlotOutcome plot_result_file(const std::string& path, const std::string& dir, PlotSize size,
-                             const std::optional<PlotWindow>& window = {});
+                             const std::optional<PlotWindow>& window = {},
+                             const std::vector<std::string>& onset_files = {});
 
 /// `magnus plot`: plot_result_file, the skipped pictures noted on stderr, the written ones on stdout;
 /// window "" is the default (else parse_plot_window).
 void command_plot(const std::string& path, const std::string& dir, const std::string& size,
-                  const std::string& window, bool quiet);
+                  const std::string& window, bool quiet, const std::vector<std::string>& onset_files = {});
 
 }  // namespace magnus

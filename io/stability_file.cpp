@@ -123,4 +123,13 @@ void write_stability_hdf5(const std::string& path, const Json& j, const std::str
   });
 }
 
+Onset3d read_onset3d(const std::string& path) {
+  const ResultFile f(path, {"magnus-stability"});
+  if (!f.has("/onset3d"))
+    throw std::runtime_error(path + ": holds no 3D onset (write one with magnus stability --spanwise --critical-reynolds A:B --output)");
+  if (f.attr_int("/onset3d", "found") != 1 || !f.has_attr("/onset3d", "critical_reynolds"))
+    throw std::runtime_error(path + ": its 3D onset search found no crossing");
+  return {f.attr_double("/", "spin_ratio"), f.attr_double("/onset3d", "critical_reynolds")};
+}
+
 }  // namespace magnus

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "io/json_output.hpp"
+#include "postproc/navier_stokes/spanwise_critical.hpp"
 
 namespace magnus {
 
@@ -24,5 +25,10 @@ namespace magnus {
 /// case's title and TOML text to path, atomically. Throws std::runtime_error with one line naming path.
 void write_stability_hdf5(const std::string& path, const Json& j, const std::string& title,
                           const std::string& case_text);
+
+/// The 3D onset a stability file holds (written with --spanwise --critical-reynolds): its spin ratio and
+/// critical Reynolds number. Throws std::runtime_error (one line naming path) when the file is not a
+/// magnus-stability file or holds no onset that was found.
+Onset3d read_onset3d(const std::string& path);
 
 }  // namespace magnus

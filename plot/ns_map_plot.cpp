@@ -9,7 +9,7 @@
 
 namespace magnus {
 
-void plot_ns_map(const NsMap& m, const std::string& png, PlotSize size) {
+void plot_ns_map(const NsMap& m, const std::string& png, PlotSize size, const std::vector<Onset3d>& onset) {
   if (std::none_of(m.points.begin(), m.points.end(), [](const NsMapPoint& p) { return std::isfinite(p.ratio); }))
     throw std::runtime_error(fmt::format(
         "{}: nothing to draw: S/(2πρa^2) = C_L/C_L,ideal is undefined at every point of this map ({})", png,
@@ -41,13 +41,28 @@ void plot_ns_map(const NsMap& m, const std::string& png, PlotSize size) {
     if (std::isfinite(p.ratio) &&
         (p.source == MapSource::averaged_unstable || p.source == MapSource::averaged_no_steady))
       avg.points.push_back({by_re ? p.reynolds : p.alpha, p.ratio});
+  // Where the computed 3D onset says the flow is three-dimensional: the 2D answer is not the real flow.
+  PointSet three;
+  three.label = "3D: above the computed onset";
+  three.colour = Colour::black;
+  three.marker = 6;  // □ around the point
+  for (const auto& p : m.points)
+    if (const auto real = two_d_is_real(p.reynolds, p.alpha, onset); std::isfinite(p.ratio) && real && !*real)
+      three.points.push_back({by_re ? p.reynolds : p.alpha, p.ratio});
   std::vector<PointSet> sets;
   for (auto& [r, s] : rows) sets.push_back(std::move(s));
   if (!avg.points.empty()) sets.push_back(std::move(avg));
+  if (!three.points.empty()) sets.push_back(std::move(three));
   CurvePage page;
   page.title =
       fmt::format("{}: S/(2πρa^2) = C_L/C_L,ideal (n_θ {} × n_r {}; bars: each point's error estimate)",
                   m.base.title, m.n_theta, m.n_r);
+  if (!onset.empty()) {
+    double lo = onset.front().alpha, hi = lo;
+    for (const Onset3d& o : onset) lo = std::min(lo, o.alpha), hi = std::max(hi, o.alpha);
+    page.title += lo == hi ? fmt::format("; □ 3D, computed onset at α {:g}", lo)
+                           : fmt::format("; □ 3D, computed onset over α {:g}…{:g}", lo, hi);
+  }
   page.xlabel = by_re ? "Reynolds number Re = U·2a/ν" : "spin ratio α = aω/U";
   page.ylabel = "S/(2πρa^2) = C_L / (−2πα)";
   const std::vector<LineCurve> lines;

@@ -2,11 +2,25 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
 
 namespace magnus {
+
+std::optional<bool> two_d_is_real(double Re, double alpha, const std::vector<Onset3d>& curve) {
+  std::vector<Onset3d> c = curve;
+  std::sort(c.begin(), c.end(), [](const Onset3d& a, const Onset3d& b) { return a.alpha < b.alpha; });
+  for (size_t k = 0; k < c.size(); ++k) {
+    if (std::fabs(alpha - c[k].alpha) <= 1e-9) return Re < c[k].Re_c;
+    if (k + 1 < c.size() && alpha > c[k].alpha && alpha < c[k + 1].alpha) {
+      const double w = (alpha - c[k].alpha) / (c[k + 1].alpha - c[k].alpha);
+      return Re < (1.0 - w) * c[k].Re_c + w * c[k + 1].Re_c;
+    }
+  }
+  return std::nullopt;
+}
 
 double SpanwiseCritical::wavelength_D() const { return beta_D > 0.0 ? 2.0 * M_PI / beta_D : 0.0; }
 

@@ -5,6 +5,7 @@
 // else of the shedding orbit. The crossing is found by regula falsi (Illinois) on the scan's growth rate,
 // with a bisection after any step that does not halve the bracket.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,5 +38,15 @@ struct SpanwiseCritical {
 SpanwiseCritical spanwise_critical(const NsParams& p, const std::vector<double>& beta_D, double Re_a, double Re_b,
                                    double tol, const std::string& eigensolver, int max_evaluations = 10,
                                    const std::function<void(const SpanwiseEvaluation&)>& on_evaluation = {});
+
+/// A computed point of the 3D onset curve: at spin ratio α the flow turns three-dimensional at Re_c.
+struct Onset3d {
+  double alpha = 0.0, Re_c = 0.0;
+};
+
+/// Whether the 2D flow at (Re, α) is real by the computed onset curve: Re < Re_c(α), Re_c linear in α
+/// between the curve's points (sorted or not; one point answers only at its own α, to 1e-9). Undefined
+/// (nullopt) outside the α the curve spans.
+std::optional<bool> two_d_is_real(double Re, double alpha, const std::vector<Onset3d>& curve);
 
 }  // namespace magnus

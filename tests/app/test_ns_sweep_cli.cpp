@@ -1,6 +1,7 @@
 // magnus sweep on a navier-stokes case and magnus merge, through the binary: shards merged equal the
 // unsharded map exactly; merge and --shard refuse bad input in one line and write nothing.
 #include <catch2/catch.hpp>
+#include <fmt/core.h>
 
 #include <cmath>
 #include <filesystem>
@@ -10,6 +11,7 @@
 
 #include "io/hdf5_io.hpp"
 #include "io/ns_sweep_file.hpp"
+#include "io/stability_file.hpp"
 #include "support.hpp"
 
 using namespace magnus;
@@ -51,6 +53,21 @@ TEST_CASE("navier-stokes sweep: shards merged equal the unsharded map exactly", 
   fs::create_directories(dir + "/png");
   REQUIRE(magnus_cmd({"plot", dir + "/m.h5", "-o", dir + "/png"}, dir).status == 0);
   CHECK(fs::file_size(dir + "/png/m_s_map.png") > 10000);
+  // With computed 3D onsets (files of magnus stability --spanwise --critical-reynolds --output), the points
+  // above the onset curve are marked; a file without an onset, or a map that is not one, is refused.
+  for (auto [alpha, re] : {std::pair{1.0, 50.0}, {2.0, 70.0}})
+    write_stability_hdf5(dir + fmt::format("/onset{:g}.h5", alpha),
+                         Json{{"spin_ratio", alpha}, {"evaluations", Json::array()}, {"found", true},
+                              {"critical_reynolds", re}},
+                         "onset", "");
+  const std::vector<std::string> onset = {"--onset3d", dir + "/onset1.h5", "--onset3d", dir + "/onset2.h5"};
+  o = magnus_cmd({"plot", dir + "/m.h5", "-o", dir + "/png", "--force"}, onset, dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  CHECK(fs::file_size(dir + "/png/m_s_map.png") > 10000);
+  write_stability_hdf5(dir + "/scan.h5", Json{{"reynolds", 40.0}, {"spin_ratio", 1.0}}, "scan", "");
+  CHECK(refused(magnus_cmd({"plot", dir + "/m.h5", "-o", dir + "/png", "--force", "--onset3d", dir + "/scan.h5"}, dir),
+                "holds no 3D onset"));
   const NsMap all = read_ns_map_hdf5(dir + "/all.h5"), merged = read_ns_map_hdf5(dir + "/m.h5");
   CHECK(merged.shard == 1);
   CHECK(merged.shards == 1);
