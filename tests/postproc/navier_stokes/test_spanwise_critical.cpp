@@ -23,7 +23,7 @@ TEST_CASE("[ns][onset3d] the 2D flow is real below the computed onset, linear in
   CHECK(!two_d_is_real(100.0, 0.1, one));
 }
 
-TEST_CASE("[ns][onset3d] a stability file's 3D onset reads back; one without is refused", "[ns][onset3d]") {
+TEST_CASE("[ns][onset3d] a stability file's 3D onset reads back, one without is refused", "[ns][onset3d]") {
   const std::string dir = test::temp_dir("onset3d-file");
   const Json found = {{"spin_ratio", 1.5},
                       {"evaluations", Json::array({Json{{"reynolds", 40.0}, {"base", "steady"}, {"growth_rate", -0.01},
