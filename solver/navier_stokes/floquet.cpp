@@ -97,15 +97,6 @@ EigenProblem difference(const EigenProblem& A, const EigenProblem& B, double eps
   return D;
 }
 
-/// y += c·A x.
-void add_product(const EigenProblem& A, const std::vector<double>& x, double c, std::vector<double>& y) {
-  for (long col = 0; col < A.n; ++col) {
-    const double xc = c * x[size_t(col)];
-    if (xc == 0.0) continue;
-    for (long t = A.Ap[size_t(col)]; t < A.Ap[size_t(col) + 1]; ++t) y[size_t(A.Ai[size_t(t)])] += A.Ax[size_t(t)] * xc;
-  }
-}
-
 /// The real LU of J_0 − σM (UMFPACK, the problem's order).
 class RealLu {
  public:
@@ -159,8 +150,8 @@ struct PeriodMap {
     std::fill(y.begin(), y.end(), 0.0);
     for (size_t k = 0; 2 * k < B.size(); ++k) {
       const double w = 2.0 * M_PI * double(k + 1) / T;
-      add_product(B[2 * k], x, std::cos(w * t), y);
-      add_product(B[2 * k + 1], x, std::sin(w * t), y);
+      B[2 * k].multiply_add(x, std::cos(w * t), y);
+      B[2 * k + 1].multiply_add(x, std::sin(w * t), y);
     }
   }
   std::vector<double> operator()(std::vector<double> x) const {
@@ -169,7 +160,7 @@ struct PeriodMap {
     for (int s = 0; s < steps; ++s) {
       periodic_part(s * dt, x, Bx);
       std::fill(rhs.begin(), rhs.end(), 0.0);
-      add_product(J0, x, 0.5, rhs);
+      J0.multiply_add(x, 0.5, rhs);
       for (size_t r = 0; r < n; ++r) {
         const double b = s == 0 ? Bx[r] : 1.5 * Bx[r] - 0.5 * Bx_prev[r];
         const double e = s == 0 ? Bx[r] : 2.0 * Bx[r] - Bx_prev[r];

@@ -20,6 +20,8 @@ struct EigenProblem {
   std::vector<long> order;    ///< a fill-reducing order of the unknowns (empty: UMFPACK's own)
   /// y = J x.
   std::vector<double> multiply(const std::vector<double>& x) const;
+  /// y += c·J x (columns whose c·x is 0 skipped).
+  void multiply_add(const std::vector<double>& x, double c, std::vector<double>& y) const;
 };
 
 /// One accepted eigenpair of J x = λ M x.

@@ -36,9 +36,16 @@ cvec apply_j(const EigenProblem& ep, const cvec& x) {
 std::vector<double> EigenProblem::multiply(const std::vector<double>& x) const {
   if (x.size() != size_t(n)) throw std::invalid_argument("EigenProblem::multiply: wrong size");
   std::vector<double> y(x.size(), 0.0);
-  for (long c = 0; c < n; ++c)
-    for (long t = Ap[size_t(c)]; t < Ap[size_t(c) + 1]; ++t) y[size_t(Ai[size_t(t)])] += Ax[size_t(t)] * x[size_t(c)];
+  multiply_add(x, 1.0, y);
   return y;
+}
+
+void EigenProblem::multiply_add(const std::vector<double>& x, double c, std::vector<double>& y) const {
+  for (long col = 0; col < n; ++col) {
+    const double xc = c * x[size_t(col)];
+    if (xc == 0.0) continue;
+    for (long t = Ap[size_t(col)]; t < Ap[size_t(col) + 1]; ++t) y[size_t(Ai[size_t(t)])] += Ax[size_t(t)] * xc;
+  }
 }
 
 void shifted_matrix(const EigenProblem& ep, cplx sigma, std::vector<long>& Ap, std::vector<long>& Ai,
