@@ -16,7 +16,7 @@ Json spanwise_report(const NsParams& p, const HopfEvaluation& ss, const std::vec
   auto line = [steady](const SpanwisePoint& pt) {
     if (!pt.found) return fmt::format("{:>8.4g}  {:>9}  undefined: no eigenvalue converged", pt.beta_D, "");
     return fmt::format("{:>8.4g}  {:>9}  {:>+10.5f}  {:>+10.5f}  {:>7}  {:>7.1f}{}", pt.beta_D,
-                       pt.beta_D > 0.0 ? fmt::format("{:.4g}", 2.0 * M_PI / pt.beta_D) : "∞", pt.lambda.real(),
+                       pt.beta_D > 0.0 ? fmt::format("{:.4g}", spanwise_wavelength_D(pt.beta_D)) : "∞", pt.lambda.real(),
                        pt.lambda.imag(), pt.solves, pt.seconds, pt.covered ? "" : steady ? "  (strip not covered)" : "  (multiplier not converged)");
   };
   const std::string head = fmt::format("{:>8}  {:>9}  {:>10}  {:>10}  {:>7}  {:>7}", "β·D", "λ_z/D", "growth",
@@ -35,7 +35,7 @@ Json spanwise_report(const NsParams& p, const HopfEvaluation& ss, const std::vec
   for (const SpanwisePoint& pt : s.points) {
     text += line(pt) + "\n";
     Json row = pt.found ? Json{{"beta_D", pt.beta_D},
-                                   {"wavelength_D", pt.beta_D > 0.0 ? Json(2.0 * M_PI / pt.beta_D) : Json()},
+                                   {"wavelength_D", pt.beta_D > 0.0 ? Json(spanwise_wavelength_D(pt.beta_D)) : Json()},
                                    {"growth_rate", pt.lambda.real()},
                                    {"frequency", pt.lambda.imag()},
                                    {"covered", pt.covered},

@@ -22,7 +22,7 @@ std::optional<bool> two_d_is_real(double Re, double alpha, const std::vector<Ons
   return std::nullopt;
 }
 
-double SpanwiseCritical::wavelength_D() const { return beta_D > 0.0 ? 2.0 * M_PI / beta_D : 0.0; }
+double SpanwiseCritical::wavelength_D() const { return spanwise_wavelength_D(beta_D); }
 
 namespace {
 

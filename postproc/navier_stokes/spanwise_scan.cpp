@@ -13,7 +13,9 @@
 
 namespace magnus {
 
-double SpanwiseScan::wavelength_D() const { return beta_D > 0.0 ? 2.0 * M_PI / beta_D : 0.0; }
+double spanwise_wavelength_D(double beta_D) { return beta_D > 0.0 ? 2.0 * M_PI / beta_D : 0.0; }
+
+double SpanwiseScan::wavelength_D() const { return spanwise_wavelength_D(beta_D); }
 
 std::pair<double, double> parabola_vertex(const double x[3], const double y[3]) {
   // Divided differences: y = y0 + d1 (x − x0) + d2 (x − x0)(x − x1).

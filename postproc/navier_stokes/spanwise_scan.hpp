@@ -13,6 +13,9 @@
 
 namespace magnus {
 
+/// The spanwise wavelength λ_z/D = 2π/(β·D) of the wavenumber β·D; 0 (undefined) at β·D ≤ 0.
+double spanwise_wavelength_D(double beta_D);
+
 /// One wavenumber of the scan.
 struct SpanwisePoint {
   double beta_D = 0.0;           ///< β·D, dimensionless (λ_z/D = 2π/(β·D))
