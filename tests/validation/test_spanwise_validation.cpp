@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "postproc/navier_stokes/spanwise_scan.hpp"
+#include "postproc/navier_stokes/steady_study.hpp"
 #include "solver/navier_stokes/spanwise.hpp"
 #include "solver/navier_stokes/newton.hpp"
 #include "support.hpp"
@@ -63,17 +64,12 @@ TEST_CASE("[validation][spanwise] the BiGlobal growth rate converges at second o
     INFO("n_θ " << n_theta << ": " << best);
     growth.push_back(best);
   }
-  // σ_n = σ_∞ − C n^−p through the three: p from the ratio of the differences (bisection).
-  const double ratio = (growth[1] - growth[0]) / (growth[2] - growth[1]);
-  auto f = [&](double q) {
-    const double a = std::pow(n[0], -q), b = std::pow(n[1], -q), c = std::pow(n[2], -q);
-    return (a - b) / (b - c) - ratio;
-  };
-  double lo = 0.5, hi = 4.0;
-  REQUIRE(f(lo) * f(hi) < 0.0);
-  for (int k = 0; k < 60; ++k) ((f(lo) * f(0.5 * (lo + hi)) <= 0.0) ? hi : lo) = 0.5 * (lo + hi);
-  const double order = 0.5 * (lo + hi);
-  INFO("growth rates " << growth[0] << ", " << growth[1] << ", " << growth[2] << ": observed order " << order);
+  // σ_n = σ_∞ − C h^p through the three, h = 1/n_θ: the steady grid study's Richardson reading.
+  const Richardson r = richardson(growth, {1.0 / n[0], 1.0 / n[1], 1.0 / n[2]});
+  INFO("growth rates " << growth[0] << ", " << growth[1] << ", " << growth[2] << ": observed order " << r.order
+                       << ", limit " << r.value);
+  REQUIRE(r.observed);
+  const double order = r.order;
   CHECK(growth[0] < growth[1]);
   CHECK(growth[1] < growth[2]);
   CHECK(std::fabs(order - 2.0) < 0.1);
