@@ -1,4 +1,4 @@
-// magnus run CASE [-o FILE] [--set k=v]… [--threads N] [-q]
+// magnus run CASE [-o FILE] [--set k=v]… [--threads N] [--onset3d F.h5]… [-q]
 #include <fmt/core.h>
 
 #include <cstdio>
@@ -19,6 +19,7 @@
 #include "io/json_output.hpp"
 #include "base/output_lock.hpp"
 #include "io/output_size.hpp"
+#include "io/stability_file.hpp"
 #include "io/report.hpp"
 #include "io/result_reader.hpp"
 #include "solver/memory.hpp"
@@ -46,8 +47,14 @@ void prepare_checkpoint(const Case& c, bool resume, size_t max_bytes, std::optio
 
 void command_run(const std::string& case_path, const std::string& output,
                  const std::vector<std::string>& sets, int threads, bool quiet, size_t max_bytes, bool resume,
-                 bool json) {
+                 bool json, const std::vector<std::string>& onset_files) {
   Case c = load_case(case_path, sets);
+  RunHooks hooks;
+  // The computed 3D onset, read (and refused) before solving.
+  if (!onset_files.empty() && c.model != FlowModel::navier_stokes)
+    throw std::runtime_error("--onset3d: only for a navier-stokes case (potential flow is not 3D-unstable)");
+  for (const std::string& f : onset_files) hooks.onset3d.push_back(read_onset3d(f));
+  hooks.onset3d_files = onset_files;
   retitle_for_overrides(c, case_path, sets);
   if (!output.empty()) {
     c.output.file = output;
@@ -60,7 +67,6 @@ void command_run(const std::string& case_path, const std::string& output,
   // For the length of the run: a second run to the same output (or checkpoint) is refused, naming this one.
   const OutputLock lock(c.output.file);
   std::optional<OutputLock> checkpoint_lock;
-  RunHooks hooks;
   hooks.threads = threads;
   hooks.max_bytes = max_bytes;
   if (c.model == FlowModel::navier_stokes) {
@@ -104,6 +110,7 @@ void add_run_command(CLI::App& app) {
     bool quiet = false, resume = false, json = false;
     std::string tolerance;
     std::string max_memory;
+    std::vector<std::string> onset3d;
   };
   auto o = std::make_shared<Options>();
   auto* run = app.add_subcommand("run", "solve a case, write HDF5 (+ XDMF), print a summary");
@@ -124,6 +131,9 @@ void add_run_command(CLI::App& app) {
       "target relative C_L error, 1e-14 to 0.1: choose the smallest grid and stencil (supersedes the "
       "file's grid)");
   run->add_option("--max-memory", o->max_memory, "refuse a run that would need more memory (e.g. 2G, 512M)");
+  run->add_option("--onset3d", o->onset3d,
+                  "navier-stokes: a computed 3D onset (magnus stability --spanwise --critical-reynolds --output "
+                  "FILE.h5; repeat for more α): the summary says whether this 2D flow is real");
   run->callback([o] {
     size_t max_bytes = 0;
     if (!o->max_memory.empty()) {
@@ -143,7 +153,7 @@ void add_run_command(CLI::App& app) {
       sets.push_back(fmt::format("grid.tolerance={}", tol));
     }
     command_run(o->case_path, o->output, sets, usable_threads(o->threads), o->quiet, max_bytes, o->resume,
-                o->json);
+                o->json, o->onset3d);
   });
 }
 

@@ -184,7 +184,10 @@ Json viscous_derived(const FlowResult& r) {
   d["t_convective"] = quantity(ratios.t_convective, "1");
   d["dt_convective"] = quantity(ratios.dt_convective, "1");
   d["steps_per_second"] = quantity(ratios.steps_per_second, "1/s");
-  d["three_dimensional"] = v.reynolds && above_laminar_range(*v.reynolds);
+  // By the computed 3D onset the run was given (--onset3d): null without one, or outside the α it spans.
+  const std::optional<bool> real = two_d_is_real(v);
+  d["three_dimensional"] = real ? Json(!*real) : Json();
+  if (v.reynolds) d["onset3d_verdict"] = three_d_text(v, r.c.scene.spin_ratio());  // the summary's "3D" line
   d["viscous_length_beyond_grid"] = v.reynolds && viscous_length_beyond_grid(g, *v.reynolds);
   if (v.steady_study) d["steady_study"] = json_parts::steady_study_json(*v.steady_study);
   if (ratios.torque_potential_vortex) {  // still fluid: the potential vortex u_θ = a²ω/r is exact

@@ -87,11 +87,10 @@ std::string ns_map_table(const NsMap& m) {
                                           : "";
   t += fmt::format("\n{:<13}{:.2f} s on {} thread{}{}\n", "time", m.total_s, m.threads, m.threads == 1 ? "" : "s",
                    order);
-  const double re_max = *std::max_element(m.reynolds.begin(), m.reynolds.end());
-  if (above_laminar_range(re_max))
-    t += fmt::format("{:<13}Re up to {:g} > {:g}: real flow is three-dimensional there; this 2D laminar map "
-                     "is not what a real cylinder sees\n",
-                     "note", re_max, kReynolds3D);
+  t += fmt::format("{:<13}where this 2D map is real is not computed here: magnus plot MAP.h5 --onset3d F.h5 frames "
+                   "the points above a computed 3D onset (magnus stability CASE --spanwise --critical-reynolds "
+                   "A:B --output F.h5)\n",
+                   "3D");
   t += error_summary(m);
   t += "\n";
   t += fmt::format("{:>7} {:>6} {:>9} {:>8} {:>8} {:>9} {:>8} {:>7} {:>6} {:>6} {:>6} {:>6} {:>16} {:>6} {:>4} "

@@ -151,12 +151,13 @@ std::string figures_text(const FlowResult& r, bool unresolved) {
         "S/(2πρa²)",
         !v.magnus_ratio ? std::string("undefined (ω = 0: no Magnus lift to compare)")
         : unresolved    ? ratio + " — not meaningful: the boundary layer is not resolved (see the verdict)"
-        : v.reynolds && above_laminar_range(*v.reynolds)
-            ? fmt::format("{}: the 2D laminar model's share of the ideal lift at Re = {}, α = {} (not a real "
-                          "cylinder's: its flow is three-dimensional there)",
-                          ratio, re, al)
-            : fmt::format("{}: the share of the ideal lift a real cylinder gets at Re = {}, α = {}", ratio,
-                          re, al));
+        : two_d_is_real(v) == std::optional<bool>(true)
+            ? fmt::format("{}: the share of the ideal lift a real cylinder gets at Re = {}, α = {}", ratio,
+                          re, al)
+            : fmt::format("{}: the 2D laminar model's share of the ideal lift at Re = {}, α = {} ({})", ratio,
+                          re, al,
+                          two_d_is_real(v) ? "not a real cylinder's: its flow is three-dimensional there"
+                                           : "a real cylinder's where its flow stays 2D: see 3D"));
   } else {
     line("C_L, C_D", "undefined (U = 0: no dynamic pressure to scale by); forces in N/m below");
     line("forces", fmt::format("F_x = {} N/m, F_y = {} N/m (last step)", num(v.last.F_x, "{:.4g}"),
@@ -227,12 +228,7 @@ std::string findings_text(const FlowResult& r) {
                                   time_unit_name(sc), *v.eigenvalue_real, *v.eigenvalue_imag,
                                   *v.eigenvalue_real < 0.0 ? "stable" : "unstable: it sheds",
                                   st ? fmt::format("{:.4f}", *st) : std::string("undefined (U = 0)")));
-  if (v.reynolds && above_laminar_range(*v.reynolds))
-    line("note",
-         fmt::format("Re = {:.6g} > {:.0f}: real flow past a cylinder is three-dimensional there; this is "
-                     "the 2D laminar answer, not the real one (this run did not compute its 3D stability: "
-                     "magnus stability CASE --spanwise does)",
-                     *v.reynolds, kReynolds3D));
+  if (v.reynolds) line("3D", three_d_text(v, sc.spin_ratio()));
   // The viscous (Oseen) length D/Re: beyond R the outer boundary cuts into it, and the forces depend on R.
   if (v.reynolds && viscous_length_beyond_grid(g, *v.reynolds))
     line("note",
@@ -280,7 +276,29 @@ std::string drift_text(const ViscousPart& v) {
                      num(100.0 * d_max, "{:.3f}"), largest);
 }
 
-bool above_laminar_range(double reynolds) { return reynolds > kReynolds3D * (1.0 + 1e-9); }
+std::optional<bool> two_d_is_real(const ViscousPart& v) {
+  if (!v.reynolds || !v.onset3d_reynolds) return std::nullopt;
+  return *v.reynolds < *v.onset3d_reynolds;
+}
+
+std::string three_d_text(const ViscousPart& v, double alpha) {
+  if (!v.onset3d_alpha_min || !v.onset3d_alpha_max)
+    return "whether this 2D flow is real is not computed for this run: magnus stability CASE --spanwise "
+           "--critical-reynolds A:B --output F.h5 finds the 3D onset, magnus run CASE --onset3d F.h5 applies it";
+  const std::string span = *v.onset3d_alpha_min == *v.onset3d_alpha_max
+                               ? fmt::format("α = {:.4g} only", *v.onset3d_alpha_min)
+                               : fmt::format("α {:.4g} to {:.4g}", *v.onset3d_alpha_min, *v.onset3d_alpha_max);
+  if (!v.onset3d_reynolds || !v.reynolds)
+    return fmt::format("undefined at α = {:.4g}: the computed 3D onset given covers {} ({})", alpha, span,
+                       v.onset3d_files);
+  if (*two_d_is_real(v))
+    return fmt::format("2D flow is real here: Re = {:.6g} is below the computed 3D onset Re_c = {:.5g} at α = "
+                       "{:.4g} ({})",
+                       *v.reynolds, *v.onset3d_reynolds, alpha, v.onset3d_files);
+  return fmt::format("Re = {:.6g} is not below the computed 3D onset Re_c = {:.5g} at α = {:.4g} ({}): real flow "
+                     "is three-dimensional here; this is the 2D laminar answer, not the real one",
+                     *v.reynolds, *v.onset3d_reynolds, alpha, v.onset3d_files);
+}
 
 bool viscous_length_beyond_grid(const PolarGrid& g, double reynolds) {
   return reynolds > 0.0 && 2.0 * g.a / reynolds > g.outer_radius();

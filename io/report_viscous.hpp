@@ -1,5 +1,6 @@
 #pragma once
 // The run summary of a navier-stokes result: the viscous figures beside the ideal ones for the same scene.
+#include <optional>
 #include <string>
 
 #include "postproc/result.hpp"
@@ -7,19 +8,20 @@
 namespace magnus {
 
 /// Scene with ν and Re; grid, Δt and the run (why it stopped, steps, wall time); C_L, C_D, St, S/(2πρa²)
-/// viscous against ideal; torque and spin power; separation; a warning above Re ≈ 200 (real flow is 3D).
+/// viscous against ideal; torque and spin power; separation; whether the 2D flow is real (three_d_text).
 std::string viscous_summary_text(const FlowResult& r, const std::string& output_path);
 
 /// The summary's line on the drift still to come of the means (v's *_drift_rel; "" when none is set): the
 /// bars it dominates (more than half of the bar) with drift and bar in %, else that it is part of them.
 std::string drift_text(const ViscousPart& v);
 
-/// Re above which 2D laminar flow past a cylinder is no longer what a real cylinder sees.
-constexpr double kReynolds3D = 200.0;
+/// Whether the 2D flow of v is real by the computed 3D onset the run was given (magnus run --onset3d):
+/// Re < Re_c(α); undefined without one, or outside the α it spans.
+std::optional<bool> two_d_is_real(const ViscousPart& v);
 
-/// Re > kReynolds3D by more than round-off (relative 1e-9): Re = U·2a/ν of a ν set from Re = 200 reads
-/// 200.00000000000003, which is 200.
-bool above_laminar_range(double reynolds);
+/// The summary's "3D" line: the verdict of the computed onset given (Re against Re_c at α, and the files),
+/// "undefined" outside the α it spans, or that none was computed and how to compute one.
+std::string three_d_text(const ViscousPart& v, double alpha);
 
 /// Wall cells across D/√(Re(1 + α²)) below which the summary warns. At Re = 100 on R = 100a the mean drag
 /// against its grid-converged value (Richardson on 236, 471, 942 rings) was off by +1.2% with 7.1 cells

@@ -165,6 +165,22 @@ std::vector<AttrSpec> drift_rows() {
   return rows;
 }
 
+/// The rows of the computed 3D onset given to the run (magnus run --onset3d): absent when none was.
+std::vector<AttrSpec> onset3d_rows() {
+  return {
+      vnum(P, "onset3d_reynolds", "1",
+           "the computed 3D onset Re_c at this α (--onset3d files; linear in α between their points): the 2D "
+           "flow is real below it (absent outside the α the files span)",
+           &ViscousPart::onset3d_reynolds),
+      vnum(P, "onset3d_alpha_min", "1", "the smallest spin ratio of the --onset3d files' points",
+           &ViscousPart::onset3d_alpha_min),
+      vnum(P, "onset3d_alpha_max", "1", "the largest spin ratio of the --onset3d files' points",
+           &ViscousPart::onset3d_alpha_max),
+      vtext(P, "onset3d_files", "the --onset3d files (magnus stability --spanwise --critical-reynolds --output)",
+            &ViscousPart::onset3d_files),
+  };
+}
+
 /// The viscous rows of /errors: the run's own estimate of its discretisation error.
 std::vector<AttrSpec> viscous_error_rows() {
   std::vector<AttrSpec> rows = {
@@ -210,7 +226,8 @@ std::vector<AttrSpec> viscous_error_rows() {
 std::vector<AttrSpec> viscous_attributes() {
   std::vector<AttrSpec> table;
   for (const auto& part :
-       {viscous_parameter_rows(), viscous_force_rows(), viscous_timing_rows(), viscous_error_rows()})
+       {viscous_parameter_rows(), viscous_force_rows(), viscous_timing_rows(), viscous_error_rows(),
+        onset3d_rows()})
     table.insert(table.end(), part.begin(), part.end());
   return table;
 }

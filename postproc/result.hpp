@@ -83,6 +83,11 @@ struct ViscousPart {
   /// was found when the first one did not meet it.
   std::optional<bool> tolerance_met;
   std::string tolerance_note;
+  /// The computed 3D onset given to the run (magnus run --onset3d FILE.h5…): Re_c at this run's α, linear in
+  /// α between the files' points; absent without files, or outside the α they span.
+  std::optional<double> onset3d_reynolds;
+  std::optional<double> onset3d_alpha_min, onset3d_alpha_max;  ///< the α the files span (absent: none given)
+  std::string onset3d_files;                                   ///< the files, comma-separated ("": none)
 };
 
 struct FlowResult {

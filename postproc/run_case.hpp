@@ -7,6 +7,7 @@
 #include <functional>
 
 #include "postproc/navier_stokes/run.hpp"
+#include "postproc/navier_stokes/spanwise_critical.hpp"
 #include "postproc/potential/plan.hpp"
 
 namespace magnus {
@@ -22,6 +23,10 @@ struct RunHooks {
   /// navier-stokes: after every time step (progress, a stop flag: false stops, the result is then
   /// partial), at every checkpoint, and whether time.mode "auto" marches at once.
   ViscousHooks viscous;
+  /// navier-stokes: a computed 3D onset curve (read from `magnus stability` files) and those files, for
+  /// the verdict whether the 2D flow is real (ViscousPart::onset3d_*); empty: none given.
+  std::vector<Onset3d> onset3d;
+  std::vector<std::string> onset3d_files;
 };
 
 /// Solve case c by its model and post-process it (no files): potential flow as plan_run then run_planned,

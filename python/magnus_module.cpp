@@ -12,6 +12,7 @@
 #include "io/hdf5_io.hpp"
 #include "base/output_owner.hpp"
 #include "io/result_reader.hpp"
+#include "io/stability_file.hpp"
 #include "postproc/run_case.hpp"
 #include "bindings.hpp"
 
@@ -54,7 +55,7 @@ struct Interrupt {
 
 /// magnus.run: solve the case (no file unless output is given: then written atomically, as `magnus run -o`).
 PyResult run(const std::string& source, bool is_path, const std::vector<std::string>& overrides, int threads,
-             const std::string& output, bool force) {
+             const std::string& output, bool force, const std::vector<std::string>& onset3d) {
   Interrupt interrupt;
   // force: replace an existing output magnus did not write (as --force), for this call only.
   struct Force {
@@ -73,6 +74,10 @@ PyResult run(const std::string& source, bool is_path, const std::vector<std::str
       check_writable(xdmf_path(output));
     }
     RunHooks hooks;
+    if (!onset3d.empty() && c.model != FlowModel::navier_stokes)
+      throw std::invalid_argument("onset3d: only for a navier-stokes case (potential flow is not 3D-unstable)");
+    for (const std::string& f : onset3d) hooks.onset3d.push_back(read_onset3d(f));
+    hooks.onset3d_files = onset3d;
     hooks.threads = threads;
     hooks.viscous.on_step = [&interrupt](const NsState&, const ViscousForces&) {
       return interrupt.keep_going();
@@ -120,6 +125,6 @@ PYBIND11_MODULE(_magnus, m) {
   bind_stability(m);
   m.def("_run", &run, "solve a case (path or TOML text) with overrides; write `output` if not empty",
         py::arg("source"), py::arg("is_path"), py::arg("overrides"), py::arg("threads"), py::arg("output"),
-        py::arg("force") = false);
+        py::arg("force") = false, py::arg("onset3d") = std::vector<std::string>{});
   m.def("_read", &read_path, "read a magnus-flow result file", py::arg("path"));
 }

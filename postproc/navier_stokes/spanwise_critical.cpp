@@ -9,17 +9,34 @@
 
 namespace magnus {
 
-std::optional<bool> two_d_is_real(double Re, double alpha, const std::vector<Onset3d>& curve) {
+std::optional<double> onset_reynolds(double alpha, const std::vector<Onset3d>& curve) {
   std::vector<Onset3d> c = curve;
   std::sort(c.begin(), c.end(), [](const Onset3d& a, const Onset3d& b) { return a.alpha < b.alpha; });
   for (size_t k = 0; k < c.size(); ++k) {
-    if (std::fabs(alpha - c[k].alpha) <= 1e-9) return Re < c[k].Re_c;
+    if (std::fabs(alpha - c[k].alpha) <= 1e-9) return c[k].Re_c;
     if (k + 1 < c.size() && alpha > c[k].alpha && alpha < c[k + 1].alpha) {
       const double w = (alpha - c[k].alpha) / (c[k + 1].alpha - c[k].alpha);
-      return Re < (1.0 - w) * c[k].Re_c + w * c[k + 1].Re_c;
+      return (1.0 - w) * c[k].Re_c + w * c[k + 1].Re_c;
     }
   }
   return std::nullopt;
+}
+
+void set_onset3d(ViscousPart& v, double alpha, const std::vector<Onset3d>& curve,
+                 const std::vector<std::string>& files) {
+  if (curve.empty()) return;
+  const auto [lo, hi] = std::minmax_element(curve.begin(), curve.end(),
+                                            [](const Onset3d& a, const Onset3d& b) { return a.alpha < b.alpha; });
+  v.onset3d_alpha_min = lo->alpha, v.onset3d_alpha_max = hi->alpha;
+  v.onset3d_reynolds = onset_reynolds(alpha, curve);
+  v.onset3d_files.clear();
+  for (const std::string& f : files) v.onset3d_files += (v.onset3d_files.empty() ? "" : ", ") + f;
+}
+
+std::optional<bool> two_d_is_real(double Re, double alpha, const std::vector<Onset3d>& curve) {
+  const std::optional<double> Re_c = onset_reynolds(alpha, curve);
+  if (!Re_c) return std::nullopt;
+  return Re < *Re_c;
 }
 
 double SpanwiseCritical::wavelength_D() const { return spanwise_wavelength_D(beta_D); }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "postproc/navier_stokes/spanwise_scan.hpp"
+#include "postproc/result.hpp"
 
 namespace magnus {
 
@@ -44,9 +45,17 @@ struct Onset3d {
   double alpha = 0.0, Re_c = 0.0;
 };
 
-/// Whether the 2D flow at (Re, α) is real by the computed onset curve: Re < Re_c(α), Re_c linear in α
-/// between the curve's points (sorted or not; one point answers only at its own α, to 1e-9). Undefined
-/// (nullopt) outside the α the curve spans.
+/// The computed onset Re_c(α) at spin ratio α: linear in α between the curve's points (sorted or not; one
+/// point answers only at its own α, to 1e-9). Undefined (nullopt) outside the α the curve spans.
+std::optional<double> onset_reynolds(double alpha, const std::vector<Onset3d>& curve);
+
+/// Set v's onset3d_* from the computed curve (read from files) at spin ratio α: Re_c there, the α it spans
+/// and the files' names. An empty curve leaves them unset.
+void set_onset3d(ViscousPart& v, double alpha, const std::vector<Onset3d>& curve,
+                 const std::vector<std::string>& files);
+
+/// Whether the 2D flow at (Re, α) is real by the computed onset curve: Re < onset_reynolds(α, curve);
+/// undefined where that is.
 std::optional<bool> two_d_is_real(double Re, double alpha, const std::vector<Onset3d>& curve);
 
 }  // namespace magnus

@@ -124,17 +124,22 @@ def _threads(threads):
     return min(int(threads), os.cpu_count() or int(threads))
 
 
-def run(case, /, *, set=None, output=None, threads=1, force=False, **overrides):
+def run(case, /, *, set=None, output=None, threads=1, force=False, onset3d=None, **overrides):
     """Solve a case and return its Result. No file is written unless output (a path) is given: then the
     result is written there (with its .xmf sidecar) as `magnus run -o` would: an existing file there that
-    magnus did not write is refused (RuntimeError) unless force=True. The GIL is released while solving;
-    Ctrl-C stops a navier-stokes run (KeyboardInterrupt)."""
+    magnus did not write is refused (RuntimeError) unless force=True. onset3d: stability files holding a
+    computed 3D onset (`magnus stability --spanwise --critical-reynolds --output`, one per α), as
+    `magnus run --onset3d`: parameters["onset3d_reynolds"] is then Re_c at the case's α, and the 2D flow is
+    real below it. The GIL is released while solving; Ctrl-C stops a navier-stokes run (KeyboardInterrupt)."""
     source, is_path = _source(case)
     sets = _overrides(overrides, set)
     out = "" if output is None else os.fspath(output)
     if output is not None and out == "":
         raise ValueError("output: an empty path")
-    return _magnus._run(source, is_path, sets, _threads(threads), out, bool(force))
+    if isinstance(onset3d, (str, os.PathLike)):
+        onset3d = [onset3d]
+    files = [] if onset3d is None else [os.fspath(f) for f in onset3d]
+    return _magnus._run(source, is_path, sets, _threads(threads), out, bool(force), files)
 
 
 def read(path):

@@ -56,3 +56,41 @@ def test_onset_3d_matches_the_command_line():
         assert o["evaluations"]["growth_rate"][k] == pytest.approx(j["evaluations"][k]["growth_rate"], rel=0, abs=1e-12)
     with pytest.raises(ValueError, match="0 < Re_a < Re_b"):
         magnus.onset_3d(S_MAP, reynolds=(60, 30), spanwise=[1.0])
+
+
+def _onset_file(path, alpha, re_c):
+    """A stability file holding a found 3D onset, with what `magnus run --onset3d` reads of one (the search
+    that writes it is tested through the command line)."""
+    import h5py
+    with h5py.File(path, "w") as f:
+        f.attrs["format"] = "magnus-stability"
+        f.attrs["format_version"] = 1
+        f.attrs["spin_ratio"] = float(alpha)
+        g = f.create_group("onset3d")
+        g.attrs["found"] = 1
+        g.attrs["critical_reynolds"] = float(re_c)
+    return path
+
+
+def test_run_with_a_computed_onset_matches_the_command_line(tmp_path):
+    from conftest import NS_CASE, NS_TINY
+    f = _onset_file(tmp_path / "onset.h5", 1.0, 150.0)  # the case's α = 1
+    sets = {k.replace(".", "__"): v for k, v in NS_TINY.items()}
+    below = magnus.run(NS_CASE, onset3d=f, **sets)
+    assert below.parameters["onset3d_reynolds"] == 150.0
+    assert below.parameters["onset3d_alpha_min"] == below.parameters["onset3d_alpha_max"] == 1.0
+    assert below.parameters["onset3d_files"] == str(f)
+    args = [a for k, v in NS_TINY.items() for a in ("--set", f"{k}={v}")]
+    j = json.loads(cli("run", NS_CASE, "-o", tmp_path / "r.h5", "--onset3d", f, "--json", *args).stdout)
+    assert j["derived"]["three_dimensional"] is False  # Re 100 < 150
+    above = magnus.run(NS_CASE, onset3d=[f], flow__reynolds=160, **sets)
+    assert above.parameters["reynolds"] == 160.0 and above.parameters["onset3d_reynolds"] == 150.0
+    assert magnus.run(NS_CASE, **sets).parameters.get("onset3d_reynolds") is None
+    with pytest.raises(ValueError, match="onset3d: only for a navier-stokes case"):
+        magnus.run(SOURCE_DIR / "cases" / "spin_ratio_1.toml", onset3d=f)
+    with pytest.raises(RuntimeError, match="holds no 3D onset"):
+        import h5py
+        with h5py.File(tmp_path / "empty.h5", "w") as e:
+            e.attrs["format"] = "magnus-stability"
+            e.attrs["format_version"] = 1
+        magnus.run(NS_CASE, onset3d=tmp_path / "empty.h5", **sets)

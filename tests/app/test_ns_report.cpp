@@ -8,6 +8,7 @@
 #include <regex>
 
 #include "io/hdf5_io.hpp"
+#include "io/stability_file.hpp"
 #include "support.hpp"
 
 using namespace magnus;
@@ -37,29 +38,105 @@ size_t longest_digit_run(const std::string& s) {
 
 }  // namespace
 
-TEST_CASE("navier-stokes summary: Re = 200 as given is not above 200, and is stored as given",
-          "[app][ns][report]") {
+TEST_CASE("navier-stokes summary: Re = 200 as given is stored as given", "[app][ns][report]") {
   const std::string dir = test::temp_dir("ns-report-re200");
   // flow.reynolds = 200: ν = U·2a/200 = 5e-7, and U·2a/ν of that ν is 200.00000000000003.
   const auto o = run(dir, {"flow.reynolds=200"});
   INFO(o.err);
   REQUIRE(o.status == 0);
-  CHECK(o.out.find("three-dimensional") == std::string::npos);
   CHECK(ResultFile(dir + "/r.h5").attr_double("/parameters", "reynolds") == 200.0);
+  CHECK(o.out.find("Re = 200 ") == std::string::npos);
   const auto c = run(dir, {}, "c.h5");  // the case's own Re = 100: 100 in the file, not 100.00000000000001
   REQUIRE(c.status == 0);
   CHECK(ResultFile(dir + "/c.h5").attr_double("/parameters", "reynolds") == 100.0);
-  // The same ν given as flow.viscosity: Re = U·2a/ν is 200 to round-off, not above 200.
-  const auto v = run(dir, {"flow.viscosity=5e-7"}, "v.h5");
-  REQUIRE(v.status == 0);
-  CHECK(v.out.find("three-dimensional") == std::string::npos);
-  // Above 200 by more than round-off, the note stays.
-  const auto h = run(dir, {"flow.reynolds=200.001"}, "h.h5");
-  REQUIRE(h.status == 0);
-  CHECK(test::line_of(h.out, "note") ==
-        "note           Re = 200.001 > 200: real flow past a cylinder is three-dimensional there; this is "
-        "the 2D laminar answer, not the real one (this run did not compute its 3D stability: magnus stability "
-        "CASE --spanwise does)");
+}
+
+/// A stability file holding a found 3D onset Re_c at spin ratio alpha (as magnus stability --spanwise
+/// --critical-reynolds --output writes it; the search itself is tested with the command).
+std::string onset_file(const std::string& dir, const std::string& name, double alpha, double Re_c) {
+  const Json j = {{"spin_ratio", alpha},
+                  {"evaluations", Json::array({Json{{"reynolds", Re_c - 10.0}, {"base", "periodic"},
+                                                    {"growth_rate", -0.01}, {"beta_D", 1.6}, {"seconds", 1.0}},
+                                               Json{{"reynolds", Re_c + 10.0}, {"base", "periodic"},
+                                                    {"growth_rate", 0.01}, {"beta_D", 1.6}, {"seconds", 1.0}}})},
+                  {"seconds", 2.0}, {"found", true}, {"critical_reynolds", Re_c}, {"change", 0.5},
+                  {"bracket", {Re_c - 10.0, Re_c + 10.0}}, {"beta_D", 1.6}, {"wavelength_D", 3.93}};
+  write_stability_hdf5(dir + "/" + name, j, "test", "title = \"test\"\n");
+  return dir + "/" + name;
+}
+
+TEST_CASE("navier-stokes summary: whether the 2D flow is real, from a computed 3D onset or said not computed",
+          "[app][ns][report]") {
+  const std::string dir = test::temp_dir("ns-report-3d");
+  // n_θ 48: the boundary layer has a cell across it up to Re 170 at α 1, so the S line gives its verdict.
+  auto with = [&](const std::string& re, const std::string& out, const std::vector<std::string>& files,
+                  bool json) {
+    std::vector<std::string> args = {"run", kCase, "-o", dir + "/" + out};
+    if (json) args.push_back("--json");
+    for (const char* s : {"grid.n_theta=48", "domain.outer_radius=20", "time.end=2"})
+      args.push_back("--set"), args.push_back(s);
+    args.push_back("--set"), args.push_back("flow.reynolds=" + re);
+    for (const std::string& f : files) args.push_back("--onset3d"), args.push_back(f);
+    return test::magnus_cmd(args, dir);
+  };
+  // Without an onset: no fixed rule; the summary says it was not computed and how to compute it.
+  const auto none = with("170", "none.h5", {}, false);
+  INFO(none.err);
+  REQUIRE(none.status == 0);
+  CHECK(test::line_of(none.out, "3D") ==
+        "3D             whether this 2D flow is real is not computed for this run: magnus stability CASE "
+        "--spanwise --critical-reynolds A:B --output F.h5 finds the 3D onset, magnus run CASE --onset3d F.h5 "
+        "applies it");
+  CHECK(test::line_of(none.out, "S/(2πρa²)").find("(a real cylinder's where its flow stays 2D: see 3D)") !=
+        std::string::npos);
+  CHECK_FALSE(ResultFile(dir + "/none.h5").has_attr("/parameters", "onset3d_alpha_min"));
+
+  // An onset curve through α 0 (Re_c 180) and α 2 (Re_c 140): at the case's α = 1, Re_c = 160.
+  const std::string f0 = onset_file(dir, "a0.h5", 0.0, 180.0), f2 = onset_file(dir, "a2.h5", 2.0, 140.0);
+  const auto below = with("150", "below.h5", {f0, f2}, false);
+  INFO(below.err);
+  REQUIRE(below.status == 0);
+  CHECK(test::line_of(below.out, "3D") == "3D             2D flow is real here: Re = 150 is below the computed 3D "
+                                            "onset Re_c = 160 at α = 1 (" + f0 + ", " + f2 + ")");
+  CHECK(test::line_of(below.out, "S/(2πρa²)").find("the share of the ideal lift a real cylinder gets") !=
+        std::string::npos);
+  const ResultFile fb(dir + "/below.h5");
+  CHECK(fb.attr_double("/parameters", "onset3d_reynolds") == Approx(160.0).epsilon(1e-12));
+  CHECK(fb.attr_double("/parameters", "onset3d_alpha_min") == 0.0);
+  CHECK(fb.attr_double("/parameters", "onset3d_alpha_max") == 2.0);
+  CHECK(fb.attr_string("/parameters", "onset3d_files") == f0 + ", " + f2);
+  CHECK(Json::parse(with("150", "below.h5", {f0, f2}, true).out)["derived"]["three_dimensional"] == false);
+
+  const auto above = with("170", "above.h5", {f0, f2}, false);
+  REQUIRE(above.status == 0);
+  CHECK(test::line_of(above.out, "3D") ==
+        "3D             Re = 170 is not below the computed 3D onset Re_c = 160 at α = 1 (" + f0 + ", " + f2 +
+            "): real flow is three-dimensional here; this is the 2D laminar answer, not the real one");
+  CHECK(test::line_of(above.out, "S/(2πρa²)").find("not a real cylinder's: its flow is three-dimensional there") !=
+        std::string::npos);
+  CHECK(Json::parse(with("170", "above.h5", {f0, f2}, true).out)["derived"]["three_dimensional"] == true);
+
+  // One point at α 0 does not answer at α 1: undefined, and said so.
+  const auto outside = with("150", "outside.h5", {f0}, false);
+  REQUIRE(outside.status == 0);
+  CHECK(test::line_of(outside.out, "3D") ==
+        "3D             undefined at α = 1: the computed 3D onset given covers α = 0 only (" + f0 + ")");
+  CHECK(Json::parse(with("150", "outside.h5", {f0}, true).out)["derived"]["three_dimensional"].is_null());
+  CHECK_FALSE(ResultFile(dir + "/outside.h5").has_attr("/parameters", "onset3d_reynolds"));
+
+  // Refused before solving, in one line: a file without an onset, and a potential-flow case.
+  const Json scan = {{"reynolds", 40.0}, {"spin_ratio", 0.0}, {"stable", true}, {"eigenvalues", Json::array()}};
+  write_stability_hdf5(dir + "/scan.h5", scan, "test", "title = \"test\"\n");
+  const auto bad = with("150", "bad.h5", {dir + "/scan.h5"}, false);
+  CHECK(bad.status != 0);
+  CHECK(test::lines(bad.err) == 1);
+  CHECK(bad.err.find("holds no 3D onset") != std::string::npos);
+  CHECK_FALSE(exists(dir + "/bad.h5"));
+  const auto pot = test::magnus_cmd({"run", std::string(MAGNUS_SOURCE_DIR) + "/cases/spin_ratio_1.toml", "-o",
+                                     dir + "/pot.h5", "--onset3d", f0},
+                                    dir);
+  CHECK(pot.status != 0);
+  CHECK(pot.err == "magnus: error: --onset3d: only for a navier-stokes case (potential flow is not 3D-unstable)\n");
 }
 
 TEST_CASE("navier-stokes run: a refused time step names the limit as the impulsive start's",
