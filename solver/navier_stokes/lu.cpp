@@ -72,7 +72,7 @@ void triplet_pattern(long n, const std::vector<long>& ti, const std::vector<long
   map.resize(ti.size());
   const long status = umfpack_dl_triplet_to_col(n, n, long(ti.size()), ti.data(), tj.data(), nullptr,
                                                 Ap.data(), Ai.data(), nullptr, map.data());
-  if (status != UMFPACK_OK) throw std::runtime_error(umfpack_error("triplet_to_col", status));
+  if (status != UMFPACK_OK) throw std::runtime_error(umfpack_error("triplet_to_col (assembly)", status));
   Ai.resize(size_t(Ap.back()));
 }
 
@@ -86,8 +86,8 @@ void compress_triplets(long n, const std::vector<long>& ti, const std::vector<lo
 
 std::string umfpack_error(const char* what, long status) {
   std::string s =
-      std::string("SteadyJacobian: UMFPACK ") + what + " failed (status " + std::to_string(status);
-  if (status == UMFPACK_WARNING_singular_matrix) s += ": the Jacobian is singular";
+      std::string("UMFPACK ") + what + " failed (status " + std::to_string(status);
+  if (status == UMFPACK_WARNING_singular_matrix) s += ": the matrix is singular";
   if (status == UMFPACK_ERROR_out_of_memory) s += ": out of memory";
   return s + ")";
 }

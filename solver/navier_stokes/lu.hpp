@@ -8,7 +8,8 @@
 
 namespace magnus {
 
-/// "SteadyJacobian: UMFPACK WHAT failed (status N[: the Jacobian is singular | : out of memory])".
+/// "UMFPACK WHAT failed (status N[: the matrix is singular | : out of memory])"; WHAT names the step and
+/// whose matrix it is ("numeric factorisation (Newton's Jacobian)").
 std::string umfpack_error(const char* what, long status);
 
 /// The n × n compressed-column pattern (Ap, Ai) of triplets (ti, tj), duplicates summed, and each

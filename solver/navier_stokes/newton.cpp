@@ -179,7 +179,7 @@ void SteadyJacobian::factor(const std::vector<double>& x) {
     symbolic_s_ = seconds_since(t0);
     if (status != UMFPACK_OK) {
       symbolic_ = nullptr;
-      throw std::runtime_error(umfpack_error("symbolic", status));
+      throw std::runtime_error(umfpack_error("symbolic analysis (Newton's Jacobian)", status));
     }
   } else {
     symbolic_s_ = 0.0;
@@ -192,7 +192,7 @@ void SteadyJacobian::factor(const std::vector<double>& x) {
   if (status != UMFPACK_OK) {
     if (numeric_) umfpack_dl_free_numeric(&numeric_);
     numeric_ = nullptr;
-    throw std::runtime_error(umfpack_error("numeric", status));
+    throw std::runtime_error(umfpack_error("numeric factorisation (Newton's Jacobian)", status));
   }
   lu_nnz_ = long(info[UMFPACK_LNZ] + info[UMFPACK_UNZ]);
 }
@@ -216,7 +216,7 @@ std::vector<double> SteadyJacobian::solve(const std::vector<double>& b, bool tra
   const long status =
       umfpack_dl_solve(transpose ? UMFPACK_At : UMFPACK_A, fp(), fi(), fx(), mirror_ ? yh.data() : y.data(),
                        mirror_ ? bh.data() : b.data(), numeric_, control, info);
-  if (status != UMFPACK_OK) throw std::runtime_error(umfpack_error("solve", status));
+  if (status != UMFPACK_OK) throw std::runtime_error(umfpack_error("solve (Newton's Jacobian)", status));
   if (mirror_)
     for (long q = 0; q < size_; ++q)
       if (half_of_[size_t(q)] >= 0) y[size_t(q)] = half_sign_[size_t(q)] * yh[size_t(half_of_[size_t(q)])];
