@@ -10,8 +10,9 @@ namespace magnus {
 
 namespace {
 
-/// The number at key of each row (NaN where absent or null: stored as the fill value); booleans as 0/1.
-std::vector<double> column(const Json& rows, const char* key) {
+/// The number at key of each row (NaN where absent or null: stored as the fill value); booleans, and text
+/// compared with one_when (given for a text key), as 0/1.
+std::vector<double> column(const Json& rows, const char* key, const char* one_when) {
   std::vector<double> v;
   for (const Json& r : rows) {
     const auto it = r.find(key);
@@ -19,8 +20,8 @@ std::vector<double> column(const Json& rows, const char* key) {
       v.push_back(std::nan(""));
     else if (it->is_boolean())
       v.push_back(it->get<bool>() ? 1.0 : 0.0);
-    else if (it->is_string())
-      v.push_back(*it == "periodic" ? 1.0 : 0.0);  // the base of an onset row
+    else if (it->is_string() && one_when)
+      v.push_back(*it == one_when ? 1.0 : 0.0);
     else
       v.push_back(it->get<double>());
   }
@@ -42,10 +43,11 @@ AttrValue text(const char* group, const char* name, std::string v) {
 
 struct ColumnSpec {
   const char *key, *name, *units, *description;
+  const char* one_when = nullptr;  ///< a text key: stored as 1 where it reads this, else 0
 };
 
 void write_rows(FileGroups& g, const std::string& group, const Json& rows, const std::vector<ColumnSpec>& specs) {
-  for (const ColumnSpec& c : specs) write_column(g, group, c.name, c.units, c.description, column(rows, c.key), Gaps::fill_or_omit);
+  for (const ColumnSpec& c : specs) write_column(g, group, c.name, c.units, c.description, column(rows, c.key, c.one_when), Gaps::fill_or_omit);
 }
 
 void write_spanwise(FileGroups& g, const Json& s) {
@@ -77,7 +79,7 @@ void write_spanwise(FileGroups& g, const Json& s) {
 void write_onset(FileGroups& g, const Json& j) {
   write_rows(g, "/onset3d", j["evaluations"],
              {{"reynolds", "reynolds", "1", "Reynolds number of the scan"},
-              {"base", "periodic", "1", "1: the base was the shedding orbit (Floquet), 0: the steady state"},
+              {"base", "periodic", "1", "1: the base was the shedding orbit (Floquet), 0: the steady state", "periodic"},
               {"growth_rate", "growth_rate", "1", "largest growth rate over the wavenumbers, U/D"},
               {"beta_D", "beta_D", "1", "its wavenumber β·D"},
               {"seconds", "seconds", "s", "wall time of the scan"}});
