@@ -7,6 +7,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "postproc/navier_stokes/regula_falsi.hpp"
+
 namespace magnus {
 
 namespace {
@@ -93,12 +95,6 @@ void track(const NsParams& p, HopfParameter which, HopfEvaluation& e, std::compl
   e.tracked = true;
 }
 
-/// The secant root of the line through (a, b)'s growth rates, with b's weighted by w (Illinois).
-double secant_root(const HopfEvaluation& a, const HopfEvaluation& b, double wa, double wb) {
-  const double ga = wa * a.growth(), gb = wb * b.growth();
-  return ga == gb ? 0.5 * (a.x + b.x) : a.x + (b.x - a.x) * ga / (ga - gb);
-}
-
 }  // namespace
 
 const char* hopf_parameter_name(HopfParameter which) {
@@ -142,9 +138,8 @@ namespace {
 /// The bracket of a Hopf search and its Illinois weights; lo is the end at the smaller x.
 struct HopfBracket {
   HopfEvaluation lo, hi;
-  double w_lo = 1.0, w_hi = 1.0;
-  int kept = 0;  ///< −1: lo kept by the last step, +1: hi kept, 0: neither yet
-  double root() const { return secant_root(lo, hi, w_lo, w_hi); }
+  Illinois weights;  ///< end 0 is lo, end 1 hi
+  double root() const { return weights.root(lo.x, lo.growth(), hi.x, hi.growth()); }
   /// The unstable side's pairs (x, λ) in the order solved: the mode whose crossing is wanted.
   std::vector<std::pair<double, std::complex<double>>> lineage;
   /// The wanted pair predicted at x, U/D: extrapolated along a line through the two unstable-side points
@@ -165,15 +160,9 @@ struct HopfBracket {
   std::complex<double> pair_at(double x) const { return lo.mode + (hi.mode - lo.mode) * ((x - lo.x) / (hi.x - lo.x)); }
   /// m replaces the end of its sign; the end kept twice in a row has its growth rate halved (Illinois).
   void replace(HopfEvaluation m) {
-    if ((m.growth() < 0.0) == (lo.growth() < 0.0)) {
-      lo = std::move(m), w_lo = 1.0;
-      if (kept == 1) w_hi *= 0.5;
-      kept = 1;
-    } else {
-      hi = std::move(m), w_hi = 1.0;
-      if (kept == -1) w_lo *= 0.5;
-      kept = -1;
-    }
+    const bool at_lo = (m.growth() < 0.0) == (lo.growth() < 0.0);
+    (at_lo ? lo : hi) = std::move(m);
+    weights.replaced(at_lo ? 0 : 1);
   }
 };
 
@@ -271,7 +260,7 @@ HopfPoint hopf_point(const NsParams& p, HopfParameter which, double A, double B,
       (far.x > grows.x ? k.lo : k.hi) = std::move(grows);
       (far.x > k.lo.x ? k.hi : k.lo) = far;
     }
-    k.w_lo = k.w_hi = 1.0, k.kept = 0;
+    k.weights = Illinois{};
     root = k.root();
   }
   h.x_c = root, h.lo = k.lo.x, h.hi = k.hi.x;

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "postproc/navier_stokes/regula_falsi.hpp"
+
 namespace magnus {
 
 std::optional<double> onset_reynolds(double alpha, const std::vector<Onset3d>& curve) {
@@ -99,12 +101,12 @@ SpanwiseCritical spanwise_critical(const NsParams& p, const std::vector<double>&
   // Illinois regula falsi: the end kept twice in a row has its growth rate halved. The growth rate is often
   // flat and then kinked (a slow far-field mode leads until the 3D mode overtakes it), where regula falsi
   // crawls: a step that does not halve the bracket is followed by a bisection.
-  double fa = a.scan.growth, fb = b.scan.growth, root = Re_a;
-  int kept = 0;
+  Illinois weights;  // end 0 is a (stable), end 1 b
+  double root = Re_a;
   bool bisect = false;
   for (int k = 2; k < max_evaluations; ++k) {
     const double width = b.Re - a.Re;
-    const double next = bisect ? 0.5 * (a.Re + b.Re) : (a.Re * fb - b.Re * fa) / (fb - fa);
+    const double next = bisect ? 0.5 * (a.Re + b.Re) : weights.root(a.Re, a.scan.growth, b.Re, b.scan.growth);
     c.change = std::min(std::fabs(next - root), width);
     root = next;
     if (k > 2 && c.change < tol) break;
@@ -113,19 +115,13 @@ SpanwiseCritical spanwise_critical(const NsParams& p, const std::vector<double>&
       c.message = fmt::format("no growth rate converged at Re {:.5g}", next);
       return finish();
     }
-    if (m.scan.growth < 0.0) {
-      a = m, fa = m.scan.growth;
-      if (kept == -1) fb *= 0.5;
-      kept = -1;
-    } else {
-      b = m, fb = m.scan.growth;
-      if (kept == 1) fa *= 0.5;
-      kept = 1;
-    }
+    const bool at_a = m.scan.growth < 0.0;
+    (at_a ? a : b) = m;
+    weights.replaced(at_a ? 0 : 1);
     bisect = !bisect && b.Re - a.Re > 0.5 * width;
     if (b.Re - a.Re < tol) {
       c.change = b.Re - a.Re;
-      root = (a.Re * b.scan.growth - b.Re * a.scan.growth) / (b.scan.growth - a.scan.growth);
+      root = secant_zero(a.Re, a.scan.growth, b.Re, b.scan.growth);
       break;
     }
   }
