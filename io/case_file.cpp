@@ -290,6 +290,7 @@ void read_navier_stokes(const Reader& r, Case& c) {
   c.time.mean_tolerance = r.number(
       "time", "mean_tolerance", c.time.mean_tolerance, [](double v) { return v > 0.0 && v <= 0.1; },
       "> 0 and <= 0.1");
+  c.time.stop_on_drift = r.boolean("time", "stop_on_drift", c.time.stop_on_drift);
   c.time.checkpoint_interval = r.number("time", "checkpoint_interval", c.time.checkpoint_interval,
                                         non_negative, ">= 0 (D/U; 0: none)");
   c.output.snapshots = int(r.integer(

@@ -18,7 +18,7 @@ const std::map<std::string, std::vector<std::string>>& case_key_table() {
       {"domain", {"outer_radius", "far_field"}},
       {"grid", {"n_theta", "n_r", "spacing", "tolerance", "wall_refinement", "wall_layer", "refine"}},
       {"solver", {"method", "stencil", "advection_order", "advection_order_xi", "wall_closure", "implicit_rotation"}},
-      {"time", {"mode", "end", "dt", "cfl", "mean_tolerance", "checkpoint_interval"}},
+      {"time", {"mode", "end", "dt", "cfl", "mean_tolerance", "stop_on_drift", "checkpoint_interval"}},
       {"output", {"file", "fields", "compression", "snapshots", "snapshot_interval"}},
   };
   return s;

@@ -101,9 +101,10 @@ std::string to_toml(const Case& c) {
     t += fmt::format("\n[solver]\nadvection_order = {}\nadvection_order_xi = {}\n{}{}", c.solver.advection_order,
                      c.solver.advection_order_xi, wall_closure_line(c), implicit_rotation_line(c));
     t += fmt::format(
-        "\n[time]\nmode = {}\nend = {}\ndt = {}\ncfl = {}\nmean_tolerance = {}\ncheckpoint_interval = {}\n",
+        "\n[time]\nmode = {}\nend = {}\ndt = {}\ncfl = {}\nmean_tolerance = {}\n{}checkpoint_interval = {}\n",
         str(to_string(c.time.mode)), num(c.time.end), num(c.time.dt), num(c.time.cfl),
-        num(c.time.mean_tolerance), num(c.time.checkpoint_interval));
+        num(c.time.mean_tolerance), c.time.stop_on_drift ? "" : "stop_on_drift = false\n",
+        num(c.time.checkpoint_interval));
   }
   t += fmt::format("\n[output]\nfile = {}\n", str(c.output.file));
   if (c.output.fields) {

@@ -129,6 +129,9 @@ struct TimeRequest {
   double dt = 0.0;                    ///< Δt, D/U_ref; 0: from the CFL number
   double cfl = 0.7;                   ///< target CFL number, (0, 0.8]
   double mean_tolerance = 1e-3;       ///< stop when the last periods' means of C_L, C_D agree to this (relative above 1)
+  /// …and the drift still to come of those means (the trend of the last four) is below it too; false: stop on
+  /// agreement alone, as before the drift rule (cheaper, but a slow monotone drift passes as converged).
+  bool stop_on_drift = true;
   double checkpoint_interval = 10.0;  ///< checkpoint every this many D/U_ref; 0: none
 };
 

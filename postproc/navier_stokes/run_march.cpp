@@ -152,6 +152,7 @@ FlowResult march(const Case& c, const NsParams& p, const PolarGrid& g, double un
   o.t_end = c.time.end * unit;
   o.rho = c.scene.density;
   o.mean_tol = stop_mean_tolerance(c.time.mean_tolerance, c.grid.tolerance);
+  o.stop_on_drift = c.time.stop_on_drift;
   if (c.time.mode == TimeMode::unsteady) o.steady_tol = 0.0;  // march on: a steady flow runs to time.end
 
   // The companion for the error estimate: from rest on the grid twice as coarse, beside the run.
