@@ -430,3 +430,28 @@ TEST_CASE("navier-stokes run: time.stop_on_drift = false stops on agreement alon
   CHECK(test::lines(bad.err) == 1);
   CHECK(bad.err.find("time.stop_on_drift") != std::string::npos);
 }
+
+TEST_CASE("navier-stokes run: grid.tolerance T holds a periodic run's means to T/5", "[app][ns]") {
+  const std::string dir = test::temp_dir("ns-run-t5");
+  const std::string c = std::string(MAGNUS_SOURCE_DIR) + "/cases/re100_alpha1.toml";
+  // T = 0.1 picks a coarse grid (64 × 79 on R = 20a); time.mean_tolerance 0.05 is looser than T/5 = 0.02.
+  const auto o = test::magnus_cmd({"run", c, "-o", dir + "/r.h5", "--set", "grid.tolerance=0.1", "--set",
+                                   "time.mean_tolerance=0.05", "--set", "domain.outer_radius=20"},
+                                  dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  const FlowResult r = read_result(dir + "/r.h5");
+  CHECK(r.viscous->status.find("periodic means converged (to 0.02: a fifth of grid.tolerance)") !=
+        std::string::npos);
+  // What the stop rule held: the drift still to come of each mean is below T/5 (relative; |C_L|, C_D ≥ 1).
+  for (const auto& d : {r.viscous->cl_mean_drift_rel, r.viscous->cd_mean_drift_rel, r.viscous->strouhal_drift_rel}) {
+    REQUIRE(d);
+    CHECK(*d < 0.02);
+  }
+  // A mean_tolerance already below T/5 is kept, and the status says nothing of T.
+  const auto tight = test::magnus_cmd({"run", c, "-o", dir + "/t.h5", "--set", "grid.tolerance=0.1", "--set",
+                                       "time.mean_tolerance=0.01", "--set", "domain.outer_radius=20"},
+                                      dir);
+  REQUIRE(tight.status == 0);
+  CHECK(read_result(dir + "/t.h5").viscous->status.find("a fifth of grid.tolerance") == std::string::npos);
+}
