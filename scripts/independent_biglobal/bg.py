@@ -158,6 +158,21 @@ def assemble(grid, base, nu, beta, bc="pzero", wall="quad", bcbase=None, pin=Non
         cols.append(C.ravel())
         vals.append(V.ravel().astype(float))
 
+    def transport(row, Ix, I, J, U, V, r, diag):
+        """Centred convection -(U f_r + V f_th / r) and viscosity nu (lap f - beta^2 f) of the field
+        indexed by Ix at (I, J), r there; diag: the extra diagonal coefficient (curvature terms)."""
+        add(row, Ix(I + 1, J), -U / (2 * r * h))
+        add(row, Ix(I - 1, J), +U / (2 * r * h))
+        add(row, Ix(I, J + 1), -V / (2 * r * k))
+        add(row, Ix(I, J - 1), +V / (2 * r * k))
+        c = nu / r**2
+        add(row, Ix(I + 1, J), c / h**2)
+        add(row, Ix(I - 1, J), c / h**2)
+        add(row, Ix(I, J + 1), c / k**2)
+        add(row, Ix(I, J - 1), c / k**2)
+        add(row, Ix(I, J), -2 * c / h**2 - 2 * c / k**2 - nu * beta**2 + diag)
+        return c
+
     # base on the staggered points
     bu = base.eval(g.xif[: Nr + 1], g.thc)  # u points, faces 0..Nr
     bv = base.eval(g.xic[1: Nr + 1], g.thf)  # v points, cells 0..Nr-1
@@ -184,25 +199,14 @@ def assemble(grid, base, nu, beta, bc="pzero", wall="quad", bcbase=None, pin=Non
     Uth = bu["U_th"][I, J]
     row = g.Iu(I, J)
     brow.append(row)
-    # convection (moved to rhs with minus sign)
-    add(row, g.Iu(I + 1, J), -U / (2 * r * h))
-    add(row, g.Iu(I - 1, J), +U / (2 * r * h))
-    add(row, g.Iu(I, J + 1), -V / (2 * r * k))
-    add(row, g.Iu(I, J - 1), +V / (2 * r * k))
-    add(row, g.Iu(I, J), -Uxi / r)
+    # convection and viscosity (moved to the rhs: minus signs), the curvature term -nu u/r^2, -u U_r
+    c = transport(row, g.Iu, I, J, U, V, r, -nu / r**2 - Uxi / r)
     cvb = -(Uth - 2 * V) / r  # coefficient on vbar
     for (di, dj) in ((-1, 0), (-1, 1), (0, 0), (0, 1)):
         add(row, g.Iv(I + di, J + dj), 0.25 * cvb)
     # pressure
     add(row, g.Ip(I, J), -1.0 / (r * h))
     add(row, g.Ip(I - 1, J), +1.0 / (r * h))
-    # viscous
-    c = nu / r**2
-    add(row, g.Iu(I + 1, J), c / h**2)
-    add(row, g.Iu(I - 1, J), c / h**2)
-    add(row, g.Iu(I, J + 1), c / k**2)
-    add(row, g.Iu(I, J - 1), c / k**2)
-    add(row, g.Iu(I, J), -2 * c / h**2 - 2 * c / k**2 - nu * beta**2 - c)
     # -2 nu/r^2 d(v)/dtheta
     for di in (-1, 0):
         add(row, g.Iv(I + di, J + 1), -2 * c / (2 * k))
@@ -226,22 +230,12 @@ def assemble(grid, base, nu, beta, bc="pzero", wall="quad", bcbase=None, pin=Non
     Vth = bv["V_th"][I, J]
     row = g.Iv(I, J)
     brow.append(row)
-    add(row, g.Iv(I + 1, J), -U / (2 * r * h))
-    add(row, g.Iv(I - 1, J), +U / (2 * r * h))
-    add(row, g.Iv(I, J + 1), -V / (2 * r * k))
-    add(row, g.Iv(I, J - 1), +V / (2 * r * k))
-    add(row, g.Iv(I, J), -(Vth + U) / r)
+    c = transport(row, g.Iv, I, J, U, V, r, -nu / r**2 - (Vth + U) / r)
     cub = -(V + Vxi) / r
     for (di, dj) in ((0, -1), (0, 0), (1, -1), (1, 0)):
         add(row, g.Iu(I + di, J + dj), 0.25 * cub)
     add(row, g.Ip(I, J), -1.0 / (r * k))
     add(row, g.Ip(I, J - 1), +1.0 / (r * k))
-    c = nu / r**2
-    add(row, g.Iv(I + 1, J), c / h**2)
-    add(row, g.Iv(I - 1, J), c / h**2)
-    add(row, g.Iv(I, J + 1), c / k**2)
-    add(row, g.Iv(I, J - 1), c / k**2)
-    add(row, g.Iv(I, J), -2 * c / h**2 - 2 * c / k**2 - nu * beta**2 - c)
     for di in (0, 1):
         add(row, g.Iu(I + di, J), +2 * c / (2 * k))
         add(row, g.Iu(I + di, J - 1), -2 * c / (2 * k))
@@ -254,17 +248,8 @@ def assemble(grid, base, nu, beta, bc="pzero", wall="quad", bcbase=None, pin=Non
     V = bw["V"][I, J]
     row = g.Iw(I, J)
     brow.append(row)
-    add(row, g.Iw(I + 1, J), -U / (2 * r * h))
-    add(row, g.Iw(I - 1, J), +U / (2 * r * h))
-    add(row, g.Iw(I, J + 1), -V / (2 * r * k))
-    add(row, g.Iw(I, J - 1), +V / (2 * r * k))
+    transport(row, g.Iw, I, J, U, V, r, 0.0)
     add(row, g.Ip(I, J), beta)
-    c = nu / r**2
-    add(row, g.Iw(I + 1, J), c / h**2)
-    add(row, g.Iw(I - 1, J), c / h**2)
-    add(row, g.Iw(I, J + 1), c / k**2)
-    add(row, g.Iw(I, J - 1), c / k**2)
-    add(row, g.Iw(I, J), -2 * c / h**2 - 2 * c / k**2 - nu * beta**2)
 
     # ---------------- ghost rows for v, w ----------------
     for Ix, mask_out in ((g.Iv, out_v), (g.Iw, out_u)):
