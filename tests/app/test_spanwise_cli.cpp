@@ -38,6 +38,11 @@ TEST_CASE("magnus stability --spanwise: the growth rate per wavenumber and the v
   CHECK(sp["stable"].get<bool>() == (sp["points"][0]["growth_rate"].get<double>() < 0.0));
   CHECK(sp["verdict"].get<std::string>().find("spanwise-uniform flow is stable") != std::string::npos);
   CHECK(sp["base"] == "steady");
+  // The operator's measured bias travels with every verdict, in the JSON and in the text.
+  CHECK(sp["accuracy_note"].get<std::string>().find("biased unstable") != std::string::npos);
+  const Outcome text = magnus_cmd({"stability", s_map, "--set", "flow.reynolds=40", "--spanwise", "--beta", "1:1:1"}, dir);
+  REQUIRE(text.status == 0);
+  CHECK(line_of(text.out, "accuracy").find("accuracy       the spanwise growth rates are biased unstable") == 0);
   {
     // The HDF5 file carries the JSON's numbers: the 2D eigenvalues and the scan (β = 0 has no wavelength:
     // the fill value, named by _FillValue).
@@ -106,6 +111,7 @@ TEST_CASE("magnus stability --spanwise --critical-reynolds: a range with no 3D o
   const auto j = nlohmann::json::parse(o.out);
   CHECK(j["found"] == false);
   CHECK(j["undefined"].get<std::string>().find("does not cross zero in [30, 60]") != std::string::npos);
+  CHECK(j["accuracy_note"].get<std::string>().find("read a computed 3D onset as early") != std::string::npos);
   CHECK(!j.contains("critical_reynolds"));
   REQUIRE(j["evaluations"].size() == 2);
   for (const auto& e : j["evaluations"]) {
