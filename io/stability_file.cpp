@@ -67,6 +67,7 @@ void write_spanwise(FileGroups& g, const Json& s) {
     specs.push_back({"multiplier_imag", "multiplier_imag", "1", "leading Floquet multiplier μ, imaginary part"});
   }
   write_rows(g, "/spanwise", s["points"], specs);
+  if (s.contains("accuracy_note")) write_attrs({text("/spanwise", "accuracy_note", s["accuracy_note"].get<std::string>())}, g);
   write_attrs({text("/spanwise", "base", s.value("base", "")), text("/spanwise", "verdict", s.value("verdict", "")),
                number("/spanwise", "stable", s, "stable", "", AttrKind::integer),
                number("/spanwise", "period", s, "period_D_over_U", "D/U"),
@@ -93,6 +94,7 @@ void write_onset(FileGroups& g, const Json& j) {
     a.push_back({"/onset3d", "bracket_hi", AttrKind::number, "1", j["bracket"][1].get<double>(), {}});
   }
   if (j.contains("undefined")) a.push_back(text("/onset3d", "message", j["undefined"].get<std::string>()));
+  if (j.contains("accuracy_note")) a.push_back(text("/onset3d", "accuracy_note", j["accuracy_note"].get<std::string>()));
   write_attrs(a, g);
 }
 

@@ -7,11 +7,11 @@
 //                  spin_ratio, stable (0/1), eigensolver
 //     /eigenvalues growth_rate, frequency (λ·D/U), strouhal, residual          one row per eigenvalue
 //     /spanwise    beta_D, wavelength_D, growth_rate, frequency, covered, solves, seconds
-//                  (+ multiplier_real, multiplier_imag of an orbit); attrs base, verdict, stable,
+//                  (+ multiplier_real, multiplier_imag of an orbit); attrs base, verdict, accuracy_note, stable,
 //                  period (D/U), most_unstable_beta_D, most_unstable_wavelength_D, most_unstable_growth_rate
 //     /onset3d     reynolds, periodic (0/1), growth_rate, beta_D, seconds      one row per Reynolds number
 //                  attrs found, critical_reynolds, change, bracket_lo, bracket_hi, beta_D, wavelength_D,
-//                  message (when not found)
+//                  message (when not found), accuracy_note
 // Undefined values are never stored as NaN: a column's undefined rows hold the fill value named by its
 // _FillValue attribute, an undefined attribute is listed in its group's `undefined` attribute.
 #include <string>

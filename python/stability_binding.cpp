@@ -45,6 +45,7 @@ py::dict scan_dict(const SpanwiseScan& s) {
   if (s.periodic) d["multiplier"] = complex_array(mu), d["period_D_over_U"] = s.T;
   d["stable"] = s.stable;
   d["verdict"] = s.verdict;
+  d["accuracy_note"] = kSpanwiseAccuracyNote;
   if (s.beta_D > 0.0) {
     d["most_unstable_beta_D"] = s.beta_D;
     d["most_unstable_wavelength_D"] = s.wavelength_D();
@@ -124,6 +125,7 @@ py::dict onset_3d(const std::string& source, bool is_path, const std::vector<std
   ev["periodic"] = owned_array(std::move(periodic), {n});
   d["evaluations"] = ev;
   d["seconds"] = c.seconds;
+  d["accuracy_note"] = kSpanwiseAccuracyNote;
   return d;
 }
 

@@ -27,6 +27,7 @@ def test_stability_and_spanwise_match_the_command_line():
     # β = 0 is the 2D problem.
     assert sp["growth_rate"][0] == pytest.approx(s["eigenvalues"][0].real, rel=0, abs=1e-9)
     assert sp["verdict"] == j["spanwise"]["verdict"]
+    assert sp["accuracy_note"] == j["spanwise"]["accuracy_note"]  # the operator's measured bias, both ways
     # The 2D problem (β = 0) is the least stable here: no 3D wavenumber to name.
     assert sp["growth_rate"][0] > sp["growth_rate"][1]
     assert "most_unstable_beta_D" not in sp and "most_unstable_wavelength_D" not in sp
@@ -49,6 +50,7 @@ def test_onset_3d_matches_the_command_line():
                        "--spanwise", "--beta", "1:2:1", "--critical-reynolds", "30:60", "--json").stdout)
     assert o["found"] is False and j["found"] is False
     assert o["message"] == j["undefined"]
+    assert o["accuracy_note"] == j["accuracy_note"]
     assert "critical_reynolds" not in o
     assert list(o["evaluations"]["reynolds"]) == [30.0, 60.0]
     assert list(o["evaluations"]["periodic"]) == [0.0, 0.0]

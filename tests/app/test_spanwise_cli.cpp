@@ -62,6 +62,7 @@ TEST_CASE("magnus stability --spanwise: the growth rate per wavenumber and the v
     CHECK(lz[0] == magnus::kFillValue);
     CHECK(lz[1] == Approx(2.0 * M_PI));
     CHECK(f.attr_string("/spanwise", "verdict") == sp["verdict"].get<std::string>());
+    CHECK(f.attr_string("/spanwise", "accuracy_note") == sp["accuracy_note"].get<std::string>());
     CHECK(f.attr_int("/spanwise", "stable") == (sp["stable"].get<bool>() ? 1 : 0));
   }
 
@@ -126,5 +127,6 @@ TEST_CASE("magnus stability --spanwise --critical-reynolds: a range with no 3D o
   CHECK(f.dataset("/onset3d/periodic") == std::vector<double>{0.0, 0.0});
   CHECK(f.attr_int("/onset3d", "found") == 0);
   CHECK(f.attr_string("/onset3d", "message") == j["undefined"].get<std::string>());
+  CHECK(f.attr_string("/onset3d", "accuracy_note") == j["accuracy_note"].get<std::string>());
   CHECK(!f.has_attr("/onset3d", "critical_reynolds"));
 }
