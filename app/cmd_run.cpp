@@ -50,11 +50,7 @@ void command_run(const std::string& case_path, const std::string& output,
                  bool json, const std::vector<std::string>& onset_files) {
   Case c = load_case(case_path, sets);
   RunHooks hooks;
-  // The computed 3D onset, read (and refused) before solving.
-  if (!onset_files.empty() && c.model != FlowModel::navier_stokes)
-    throw std::runtime_error("--onset3d: only for a navier-stokes case (potential flow is not 3D-unstable)");
-  for (const std::string& f : onset_files) hooks.onset3d.push_back(read_onset3d(f));
-  hooks.onset3d_files = onset_files;
+  give_onset3d(hooks, c, onset_files, "--onset3d");  // read (and refused) before solving
   retitle_for_overrides(c, case_path, sets);
   if (!output.empty()) {
     c.output.file = output;

@@ -1,6 +1,7 @@
 #include "io/stability_file.hpp"
 
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include "io/hdf5_io.hpp"
@@ -134,6 +135,13 @@ Onset3d read_onset3d(const std::string& path) {
   if (f.attr_int("/onset3d", "found") != 1 || !f.has_attr("/onset3d", "critical_reynolds"))
     throw std::runtime_error(path + ": its 3D onset search found no crossing");
   return {f.attr_double("/", "spin_ratio"), f.attr_double("/onset3d", "critical_reynolds")};
+}
+
+void give_onset3d(RunHooks& hooks, const Case& c, const std::vector<std::string>& files, const std::string& option) {
+  if (!files.empty() && c.model != FlowModel::navier_stokes)
+    throw std::invalid_argument(option + ": only for a navier-stokes case (potential flow is not 3D-unstable)");
+  for (const std::string& f : files) hooks.onset3d.push_back(read_onset3d(f));
+  hooks.onset3d_files = files;
 }
 
 }  // namespace magnus

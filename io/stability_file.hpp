@@ -18,6 +18,7 @@
 
 #include "io/json_output.hpp"
 #include "postproc/navier_stokes/spanwise_critical.hpp"
+#include "postproc/run_case.hpp"
 
 namespace magnus {
 
@@ -30,5 +31,10 @@ void write_stability_hdf5(const std::string& path, const Json& j, const std::str
 /// critical Reynolds number. Throws std::runtime_error (one line naming path) when the file is not a
 /// magnus-stability file or holds no onset that was found.
 Onset3d read_onset3d(const std::string& path);
+
+/// A run's computed 3D onset curve: read_onset3d of each file into hooks (onset3d, onset3d_files), before
+/// solving. Throws std::invalid_argument ("<option>: only for a navier-stokes case …") for potential flow,
+/// and what read_onset3d throws.
+void give_onset3d(RunHooks& hooks, const Case& c, const std::vector<std::string>& files, const std::string& option);
 
 }  // namespace magnus

@@ -74,10 +74,7 @@ PyResult run(const std::string& source, bool is_path, const std::vector<std::str
       check_writable(xdmf_path(output));
     }
     RunHooks hooks;
-    if (!onset3d.empty() && c.model != FlowModel::navier_stokes)
-      throw std::invalid_argument("onset3d: only for a navier-stokes case (potential flow is not 3D-unstable)");
-    for (const std::string& f : onset3d) hooks.onset3d.push_back(read_onset3d(f));
-    hooks.onset3d_files = onset3d;
+    give_onset3d(hooks, c, onset3d, "onset3d");
     hooks.threads = threads;
     hooks.viscous.on_step = [&interrupt](const NsState&, const ViscousForces&) {
       return interrupt.keep_going();
