@@ -58,8 +58,7 @@ void plot_ns_map(const NsMap& m, const std::string& png, PlotSize size, const st
       fmt::format("{}: S/(2πρa^2) = C_L/C_L,ideal (n_θ {} × n_r {}; bars: each point's error estimate)",
                   m.base.title, m.n_theta, m.n_r);
   if (!onset.empty()) {
-    double lo = onset.front().alpha, hi = lo;
-    for (const Onset3d& o : onset) lo = std::min(lo, o.alpha), hi = std::max(hi, o.alpha);
+    const auto [lo, hi] = onset_alpha_range(onset);
     page.title += lo == hi ? fmt::format("; □ 3D, computed onset at α {:g}", lo)
                            : fmt::format("; □ 3D, computed onset over α {:g}…{:g}", lo, hi);
   }

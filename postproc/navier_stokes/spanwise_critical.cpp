@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
 
 #include "postproc/navier_stokes/regula_falsi.hpp"
 
@@ -24,12 +25,16 @@ std::optional<double> onset_reynolds(double alpha, const std::vector<Onset3d>& c
   return std::nullopt;
 }
 
+std::pair<double, double> onset_alpha_range(const std::vector<Onset3d>& curve) {
+  const auto [lo, hi] = std::minmax_element(curve.begin(), curve.end(),
+                                            [](const Onset3d& a, const Onset3d& b) { return a.alpha < b.alpha; });
+  return {lo->alpha, hi->alpha};
+}
+
 void set_onset3d(ViscousPart& v, double alpha, const std::vector<Onset3d>& curve,
                  const std::vector<std::string>& files) {
   if (curve.empty()) return;
-  const auto [lo, hi] = std::minmax_element(curve.begin(), curve.end(),
-                                            [](const Onset3d& a, const Onset3d& b) { return a.alpha < b.alpha; });
-  v.onset3d_alpha_min = lo->alpha, v.onset3d_alpha_max = hi->alpha;
+  std::tie(v.onset3d_alpha_min, v.onset3d_alpha_max) = onset_alpha_range(curve);
   v.onset3d_reynolds = onset_reynolds(alpha, curve);
   v.onset3d_files.clear();
   for (const std::string& f : files) v.onset3d_files += (v.onset3d_files.empty() ? "" : ", ") + f;

@@ -6,6 +6,7 @@
 // with a bisection after any step that does not halve the bracket.
 #include <functional>
 #include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,9 @@ struct Onset3d {
 /// The computed onset Re_c(α) at spin ratio α: linear in α between the curve's points (sorted or not; one
 /// point answers only at its own α, to 1e-9). Undefined (nullopt) outside the α the curve spans.
 std::optional<double> onset_reynolds(double alpha, const std::vector<Onset3d>& curve);
+
+/// The smallest and largest spin ratio of the curve's points (a non-empty curve).
+std::pair<double, double> onset_alpha_range(const std::vector<Onset3d>& curve);
 
 /// Set v's onset3d_* from the computed curve (read from files) at spin ratio α: Re_c there, the α it spans
 /// and the files' names. An empty curve leaves them unset.

@@ -18,6 +18,7 @@ TEST_CASE("[ns][onset3d] the 2D flow is real below the computed onset, linear in
   CHECK(two_d_is_real(69.0, 2.0, curve) == std::optional<bool>(true));
   CHECK(!two_d_is_real(40.0, 0.5, curve));  // outside the α the curve spans: undefined
   CHECK(!two_d_is_real(40.0, 2.5, curve));
+  CHECK(onset_alpha_range(curve) == std::pair<double, double>(1.0, 2.0));
   const std::vector<Onset3d> one = {{0.0, 188.5}};
   CHECK(two_d_is_real(100.0, 0.0, one) == std::optional<bool>(true));
   CHECK(!two_d_is_real(100.0, 0.1, one));
