@@ -55,16 +55,24 @@ TEST_CASE("navier-stokes sweep: shards merged equal the unsharded map exactly", 
   CHECK(fs::file_size(dir + "/png/m_s_map.png") > 10000);
   // With computed 3D onsets (files of magnus stability --spanwise --critical-reynolds --output), the points
   // above the onset curve are marked; a file without an onset, or a map that is not one, is refused.
-  for (auto [alpha, re] : {std::pair{1.0, 50.0}, {2.0, 70.0}})
-    write_stability_hdf5(dir + fmt::format("/onset{:g}.h5", alpha),
-                         Json{{"spin_ratio", alpha}, {"evaluations", Json::array()}, {"found", true},
-                              {"critical_reynolds", re}},
-                         "onset", "");
-  const std::vector<std::string> onset = {"--onset3d", dir + "/onset1.h5", "--onset3d", dir + "/onset2.h5"};
-  o = magnus_cmd({"plot", dir + "/m.h5", "-o", dir + "/png", "--force"}, onset, dir);
-  INFO(o.err);
-  REQUIRE(o.status == 0);
-  CHECK(fs::file_size(dir + "/png/m_s_map.png") > 10000);
+  // The same α 1…2 curve twice: above every point (Re_c 500: nothing framed), then at Re_c 50 and 70 (the
+  // points Re 60 and 100 at α 1, Re 100 at α 2 framed). Same title, so the pictures differ by the frames.
+  auto plot_with = [&](double re1, double re2) {
+    for (auto [alpha, re] : {std::pair{1.0, re1}, {2.0, re2}})
+      write_stability_hdf5(dir + fmt::format("/onset{:g}_{:g}.h5", alpha, re1),
+                           Json{{"spin_ratio", alpha}, {"evaluations", Json::array()}, {"found", true},
+                                {"critical_reynolds", re}},
+                           "onset", "");
+    const std::vector<std::string> onset = {"--onset3d", dir + fmt::format("/onset1_{:g}.h5", re1), "--onset3d",
+                                            dir + fmt::format("/onset2_{:g}.h5", re1)};
+    const Outcome p = magnus_cmd({"plot", dir + "/m.h5", "-o", dir + "/png", "--force"}, onset, dir);
+    INFO(p.err);
+    REQUIRE(p.status == 0);
+    CHECK(fs::file_size(dir + "/png/m_s_map.png") > 10000);
+    return slurp(dir + "/png/m_s_map.png");
+  };
+  const std::string unframed = plot_with(500.0, 500.0), framed = plot_with(50.0, 70.0);
+  CHECK(framed != unframed);
   write_stability_hdf5(dir + "/scan.h5", Json{{"reynolds", 40.0}, {"spin_ratio", 1.0}}, "scan", "");
   CHECK(refused(magnus_cmd({"plot", dir + "/m.h5", "-o", dir + "/png", "--force", "--onset3d", dir + "/scan.h5"}, dir),
                 "holds no 3D onset"));
