@@ -27,70 +27,25 @@ double norm2(const std::vector<double>& v) {
   return std::sqrt(s);
 }
 
-/// The rows of the outflow ζ and w̃ unknowns on R (their mass −s h R²/Ψ_θ depends on the base): 1 where the
-/// base b lets the wake out there.
-std::vector<char> outflow_rows(const NsParams& p, const PolarGrid& g, const NsState& b) {
-  const int n = g.n_theta, N = g.n_r - 1;
-  std::vector<char> out(size_t(kSpanwiseFields) * g.nodes() + 1, 0);
-  for (int j = 0; j < n; ++j)
-    if (outflow(p, psi_theta(b.psi.data() + size_t(N) * n, j, n, g.d_theta))) {
-      const size_t q = size_t(N) * n + j;
-      out[kSpanwiseFields * q + 1] = out[kSpanwiseFields * q + 3] = 1;
-    }
-  return out;
-}
-
 /// Triplets of matrices summed with weights (compressed by compress_triplets).
 struct Triplets {
   std::vector<long> ti, tj;
   std::vector<double> tx;
-  /// scale·A, leaving out the rows marked in drop (null: none).
-  void add(const EigenProblem& A, double scale, const std::vector<char>* drop = nullptr) {
+  /// scale·A.
+  void add(const EigenProblem& A, double scale) {
     for (long c = 0; c < A.n; ++c)
       for (long t = A.Ap[size_t(c)]; t < A.Ap[size_t(c) + 1]; ++t) {
         const long r = A.Ai[size_t(t)];
-        if (!drop || !(*drop)[size_t(r)]) ti.push_back(r), tj.push_back(c), tx.push_back(scale * A.Ax[size_t(t)]);
+        ti.push_back(r), tj.push_back(c), tx.push_back(scale * A.Ax[size_t(t)]);
       }
   }
   void compress(EigenProblem& out) const { compress_triplets(out.n, ti, tj, tx, out.Ap, out.Ai, out.Ax); }
 };
 
-/// The spanwise problem of base b with its outflow rows multiplied by s/m_r (s: the row's constant mass,
-/// a/U for ζ and 1/U for w̃), so that M is the same for every base and J is affine in the base.
-EigenProblem constant_mass_problem(const NsParams& p, const NsState& b, double beta, const std::vector<char>& out) {
-  EigenProblem ep = spanwise_problem(p, b, beta);
-  const double speed = stability_speed(p);
-  std::vector<double> f(size_t(ep.n), 1.0);
-  for (size_t r = 0; r < f.size(); ++r)
-    if (out[r] && ep.m[r] != 0.0) {
-      const double s = r % kSpanwiseFields == 1 ? p.a / speed : 1.0 / speed;
-      f[r] = s / ep.m[r], ep.m[r] = s;
-    }
-  for (size_t t = 0; t < ep.Ai.size(); ++t) ep.Ax[t] *= f[size_t(ep.Ai[t])];
-  // The outflow row's term of the disturbance's ψ_θ carrying the base's ζ_ξ, −(ψ_θ/R²)(Ω_N − Ω_{N−1})/h: it
-  // vanishes at a steady state (there Ω_N = Ω_{N−1} on outflow) but not along an orbit.
-  const PolarGrid g = ns_grid(p);
-  const int n = g.n_theta, N = g.n_r - 1;
-  const double R = g.outer_radius(), h = g.d_xi(N - 1), s = p.a / speed;
+/// A − B on the union of their patterns.
+EigenProblem difference(const EigenProblem& A, const EigenProblem& B) {
   Triplets t;
-  t.add(ep, 1.0);
-  auto psi_at = [&](int j) { return long(kSpanwiseFields * (size_t(N) * n + size_t((j + n) % n))); };
-  for (int j = 0; j < n; ++j) {
-    const size_t q = size_t(N) * n + size_t(j);
-    if (!out[kSpanwiseFields * q + 1]) continue;
-    const double c = -s * (b.zeta[q] - b.zeta[q - size_t(n)]) / (h * R * R) / (2.0 * g.d_theta);
-    const long row = long(kSpanwiseFields * q + 1);
-    t.ti.push_back(row), t.tj.push_back(psi_at(j + 1)), t.tx.push_back(c);
-    t.ti.push_back(row), t.tj.push_back(psi_at(j - 1)), t.tx.push_back(-c);
-  }
-  t.compress(ep);
-  return ep;
-}
-
-/// (A − B)/eps on the union of their patterns; rows in `drop` are left out (the outflow choice flipped).
-EigenProblem difference(const EigenProblem& A, const EigenProblem& B, double eps, const std::vector<char>& drop) {
-  Triplets t;
-  t.add(A, 1.0 / eps, &drop), t.add(B, -1.0 / eps, &drop);
+  t.add(A, 1.0), t.add(B, -1.0);
   EigenProblem D;
   D.n = A.n;
   t.compress(D);
@@ -138,11 +93,11 @@ class RealLu {
   void* numeric_ = nullptr;
 };
 
-/// The linear stepper over one period (floquet.hpp's scheme).
+/// The linear stepper over one period (floquet.hpp's scheme): J0's pressure enters at the half step only.
 struct PeriodMap {
   const EigenProblem& J0;
   const std::vector<EigenProblem>& B;  ///< cos and sin parts of harmonic k at 2(k − 1) and 2(k − 1) + 1
-  const RealLu& lu;
+  const RealLu& lu;                    ///< of J0 with its pressure columns doubled, less (2/Δt)M
   double T, dt;
   int steps;
   /// B(t) x = Σ_k cos(kωt) B_k^c x + sin(kωt) B_k^s x into y.
@@ -159,12 +114,13 @@ struct PeriodMap {
     std::vector<double> Bx(n), Bx_prev(n), rhs(n), next(n);
     for (int s = 0; s < steps; ++s) {
       periodic_part(s * dt, x, Bx);
+      for (size_t r = kSpanwisePressure; r < n; r += kSpanwiseFields) x[r] = 0.0;  // p^{n−½} is not carried
       std::fill(rhs.begin(), rhs.end(), 0.0);
       J0.multiply_add(x, 0.5, rhs);
       for (size_t r = 0; r < n; ++r) {
         const double b = s == 0 ? Bx[r] : 1.5 * Bx[r] - 0.5 * Bx_prev[r];
         const double e = s == 0 ? Bx[r] : 2.0 * Bx[r] - Bx_prev[r];
-        // (J_0 − (2/Δt)M) x^{n+1} = −2[(M/Δt) x^n + ½J_0 x^n + b] on rows with mass, −e on constraints.
+        // (J_0' − (2/Δt)M) x^{n+1} = −2[(M/Δt) x^n + ½J_0 x^n + b] on rows with mass, −e on constraints.
         rhs[r] = J0.m[r] != 0.0 ? -2.0 * (J0.m[r] / dt * x[r] + rhs[r] + b) : -e;
       }
       lu.solve(rhs, next);
@@ -174,6 +130,13 @@ struct PeriodMap {
     return x;
   }
 };
+
+/// J0 with the pressure's columns doubled: the stepper's unknown there is p^{n+½}, all of it implicit.
+EigenProblem half_step_pressure(EigenProblem J0) {
+  for (long c = kSpanwisePressure; c < J0.n; c += kSpanwiseFields)
+    for (long t = J0.Ap[size_t(c)]; t < J0.Ap[size_t(c) + 1]; ++t) J0.Ax[size_t(t)] *= 2.0;
+  return J0;
+}
 
 }  // namespace
 
@@ -227,21 +190,17 @@ FloquetResult floquet_multipliers(const NsParams& p, const PeriodicBase& base, d
   res.steps = o.steps;
   res.truncation = base.truncation();
 
-  const std::vector<char> out = outflow_rows(p, g, base.mean);
-  const EigenProblem J0 = constant_mass_problem(p, base.mean, beta, out);
+  const SpanwiseOutflow out = spanwise_outflow(p, base.mean);
+  const EigenProblem J0 = spanwise_problem(p, base.mean, beta, out);
   std::vector<EigenProblem> B;
-  const double eps = 1e-3;
   for (int k = 0; k < res.harmonics; ++k)
     for (const NsState* part : {&base.cos_part[size_t(k)], &base.sin_part[size_t(k)]}) {
       NsState b = base.mean;
-      for (size_t q = 0; q < b.psi.size(); ++q) b.psi[q] += eps * part->psi[q], b.zeta[q] += eps * part->zeta[q];
-      const std::vector<char> out_b = outflow_rows(p, g, b);
-      std::vector<char> flipped(out.size());
-      for (size_t r = 0; r < out.size(); ++r) flipped[r] = out[r] != out_b[r];
-      B.push_back(difference(constant_mass_problem(p, b, beta, out), J0, eps, flipped));
+      for (size_t q = 0; q < b.psi.size(); ++q) b.psi[q] += part->psi[q], b.zeta[q] += part->zeta[q];
+      B.push_back(difference(spanwise_problem(p, b, beta, out), J0));  // exact: J is affine in the base
     }
   const double dt = T / res.steps;
-  const RealLu lu(J0, 2.0 / dt);
+  const RealLu lu(half_step_pressure(J0), 2.0 / dt);
   const PeriodMap P{J0, B, lu, T, dt, res.steps};
 
   // Arnoldi on P (classical Gram–Schmidt twice), from a random vector mapped once (consistent constraints).

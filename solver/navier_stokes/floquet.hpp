@@ -7,15 +7,21 @@
 // The linear operator is the spanwise problem of spanwise.hpp, M x_t = J(t) x, with the base flow (Ψ, Ω)(t)
 // of the orbit. J is affine in the base, so with the base's Fourier series over the period,
 //     b(t) = b_0 + Σ_{k=1..K} (b_k^c cos kωt + b_k^s sin kωt),   ω = 2π/T,
-// J(t) = J_0 + Σ_k (cos kωt · B_k^c + sin kωt · B_k^s), where J_0 = J(b_0) and B = J(b_0 + εb) − J(b_0),
-// divided by ε. (The outflow ζ and w̃ rows on R are rescaled to a constant mass first: ζ_t = −(Ψ_θ/R²)ζ_ξ
-// is linear in Ψ only in that form. Which columns let the wake out is frozen at the mean flow's.)
+// J(t) = J_0 + Σ_k (cos kωt · B_k^c + sin kωt · B_k^s), where J_0 = J(b_0) and B = J(b_0 + b) − J(b_0)
+// (exact: J is affine in the base, whose velocities are differences of Ψ). Which columns of R let the wake
+// out is frozen at the mean flow's.
 // The time step treats J_0 (the mean flow's advection, the viscous terms, the constraints) by
-// Crank–Nicolson and the periodic rest by Adams–Bashforth 2:
-//     M (x^{n+1} − x^n)/Δt = ½ J_0 (x^{n+1} + x^n) + ³⁄₂ B^n x^n − ½ B^{n−1} x^{n−1}   (rows with mass)
-//     0 = J_0 x^{n+1} + 2 B^n x^n − B^{n−1} x^{n−1}                                   (constraints)
-// so one sparse LU of J_0 − (2/Δt) M serves every step of every period. At β = 0 the orbit's own phase
-// mode (the base's time derivative) has μ = 1: the first test.
+// Crank–Nicolson and the periodic rest by Adams–Bashforth 2; the pressure p (continuity's multiplier)
+// is one unknown at the half step, implicit:
+//     M (u^{n+1} − u^n)/Δt = ½ A_0 (u^{n+1} + u^n) + G p^{n+½} + ³⁄₂ B^n u^n − ½ B^{n−1} u^{n−1}   (rows with mass)
+//     0 = C u^{n+1} + 2 B^n u^n − B^{n−1} u^{n−1}                                   (constraints)
+// (J_0 = [A_0 G; C 0] split by columns). Carried from step to step as in plain Crank–Nicolson, the pressure
+// would keep a mode of its own that flips sign each step (u = 0, p^{n+1} = −p^n): multiplier 1 exactly
+// over an even number of steps. One sparse LU of [A_0 − (2/Δt)M, 2G; C, 0] serves every step of every
+// period. On a steady base the period map is e^{JT}: its multipliers are e^{λT} of the same problem's
+// eigenvalues (the first test). At β = 0 the orbit's own phase mode would have μ = 1 if the orbit solved
+// these equations; it solves the (ψ, ζ) model's, a second discretisation, and the phase multiplier comes
+// out below 1 (README).
 #include <complex>
 #include <string>
 #include <vector>

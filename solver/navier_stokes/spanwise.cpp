@@ -1,7 +1,7 @@
-// The spanwise (e^{iβz}) stability problem of spanwise.hpp: the 2D problem's entries moved to five unknowns
-// per node, then the β-terms, the potential φ, the spanwise velocity w̃ and the pressure p. Every row is
-// scaled to be dimensionless as the 2D rows are (ψ and φ by 1/(U a), ζ by a/U, w̃ by 1/U, p by 1/U², each
-// ring's rows times h_i² as the 2D ones).
+// The spanwise (e^{iβz}) stability problem of spanwise.hpp: the staggered grid and the base's velocities on
+// it, then the rows of u_r, u_θ, w̃ (momentum), p (continuity) and the ghosts (boundary conditions). The rows
+// are written in SI and scaled once at the end: momentum by a/U², continuity by a/U, a condition on one
+// field by that field's scale; the columns by U (velocities) and U² (p).
 #include "solver/navier_stokes/spanwise.hpp"
 
 #include <chrono>
@@ -9,8 +9,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "mesh/fd_weights.hpp"
-#include "solver/navier_stokes/arakawa.hpp"
 #include "solver/navier_stokes/lu.hpp"
 #include "solver/navier_stokes/stages.hpp"
 
@@ -18,269 +16,263 @@ namespace magnus {
 
 namespace {
 
-enum Field { kPsi = 0, kZeta = 1, kPhi = 2, kW = 3, kP = 4 };
+enum Field { kU = 0, kV = 1, kW = 2, kP = kSpanwisePressure };
 
-/// The base state's fields and the derivatives the linearisation needs, row-major (n_r, n_θ).
-struct Base {
-  std::vector<double> Psi, Omega;    ///< Ψ (m²/s), Ω (1/s)
-  std::vector<double> U_r, U_theta;  ///< velocity, m/s (ns_velocity)
+/// Weights of f(x0 − hm), f(x0), f(x0 + hp) in a three-point derivative at x0.
+struct Weights3 {
+  double m, c, p;
 };
 
-/// The triplets of J, the grid and the scales; stencils of one field at a node add to a row through it.
-struct Builder {
-  const PolarGrid& g;
-  const NsParams& p;
-  double beta;
-  int n, N;  ///< columns; the outer ring's index n_r − 1
-  double s_psi, s_zeta, s_w, s_p;
-  RadialDerivative d;  ///< ∂/∂ξ, second order: centred inside, one-sided at the wall and on R
-  std::vector<long> ti, tj;
-  std::vector<double> tx;
+/// f'(x0), second order on any spacing.
+Weights3 first_derivative(double hm, double hp) {
+  return {-hp / (hm * (hm + hp)), (hp - hm) / (hm * hp), hm / (hp * (hm + hp))};
+}
 
-  long at(int i, int j, int field) const { return long(kSpanwiseFields) * (long(i) * n + wrap(j)) + field; }
+/// f''(x0) (second order when hm = hp, first otherwise).
+Weights3 second_derivative(double hm, double hp) {
+  return {2.0 / (hm * (hm + hp)), -2.0 / (hm * hp), 2.0 / (hp * (hm + hp))};
+}
+
+/// The staggered grid: ξ of the rings 0 … N + 1 (the last a ghost beyond R, mirrored) and of the cell
+/// centres c = −1 … N (ghosts mirrored across the wall and R), the unknowns' numbering by slot.
+struct Mac {
+  int n = 0, N = 0;  ///< columns; the outer ring's index n_r − 1
+  double k = 0.0, a = 0.0;
+  std::vector<double> xf, xc;  ///< ξ of ring i at xf[i], of centre c at xc[c + 1]
+  explicit Mac(const PolarGrid& g) : n(g.n_theta), N(g.n_r - 1), k(g.d_theta), a(g.a) {
+    xf = g.xi;
+    xf.push_back(2.0 * g.xi[size_t(N)] - g.xi[size_t(N) - 1]);
+    xc.push_back(-0.5 * g.xi[1]);
+    for (int c = 0; c < N; ++c) xc.push_back(0.5 * (g.xi[size_t(c)] + g.xi[size_t(c) + 1]));
+    xc.push_back(2.0 * g.xi[size_t(N)] - xc.back());
+  }
+  double xi_c(int c) const { return xc[size_t(c + 1)]; }
+  double r_f(int i) const { return a * std::exp(xf[size_t(i)]); }
+  double r_c(int c) const { return a * std::exp(xi_c(c)); }
   int wrap(int j) const { return j < 0 ? j + n : j >= n ? j - n : j; }
-  size_t node(int i, int j) const { return size_t(i) * n + size_t(wrap(j)); }
+  long at(int slot, int j, int f) const { return kSpanwiseFields * (long(slot) * n + wrap(j)) + f; }
+  long u(int i, int j) const { return at(i, j, kU); }       ///< u_r on ring i at θ_{j+½}
+  long v(int c, int j) const { return at(c + 1, j, kV); }   ///< u_θ at centre c, θ_j
+  long w(int c, int j) const { return at(c + 1, j, kW); }   ///< w̃ at centre c, θ_{j+½}
+  long pr(int c, int j) const { return at(c + 1, j, kP); }  ///< p at centre c, θ_{j+½}
+  long unknowns() const { return kSpanwiseFields * long(N + 2) * n; }
+};
+
+/// The base's velocities on the staggered points, m/s: U_r = Ψ_θ/r on ring i at θ_{j+½} (i ≤ N; ring N + 1
+/// mirrors N − 1), U_θ = −Ψ_ξ/r at centre c and θ_j (c < N; centre N repeats N − 1), and aω on the wall.
+struct MacBase {
+  const Mac& m;
+  std::vector<double> Ur, Ut;
+  double wall = 0.0;
+  MacBase(const Mac& mac, const PolarGrid& g, const NsState& s, double omega) : m(mac), wall(g.a * omega) {
+    const int n = m.n, N = m.N;
+    Ur.resize(size_t(N + 2) * n), Ut.resize(size_t(N + 1) * n);
+    auto psi = [&](int i, int j) { return s.psi[size_t(i) * n + size_t(m.wrap(j))]; };
+    for (int i = 0; i <= N; ++i)
+      for (int j = 0; j < n; ++j) Ur[size_t(i) * n + j] = (psi(i, j + 1) - psi(i, j)) / (m.r_f(i) * m.k);
+    for (int j = 0; j < n; ++j) Ur[size_t(N + 1) * n + j] = Ur[size_t(N - 1) * n + j];
+    for (int c = 0; c < N; ++c)
+      for (int j = 0; j < n; ++j)
+        Ut[size_t(c) * n + j] = -(psi(c + 1, j) - psi(c, j)) / (m.r_c(c) * (m.xf[size_t(c) + 1] - m.xf[size_t(c)]));
+    for (int j = 0; j < n; ++j) Ut[size_t(N) * n + j] = Ut[size_t(N - 1) * n + j];
+  }
+  double ur(int i, int j) const { return Ur[size_t(i) * m.n + size_t(m.wrap(j))]; }
+  double ut(int c, int j) const { return Ut[size_t(c) * m.n + size_t(m.wrap(j))]; }
+};
+
+/// The rows in SI and each row's scale; add() skips zeros.
+struct Rows {
+  const Mac& m;
+  const MacBase& b;
+  double nu, beta;
+  std::vector<long> ti, tj;
+  std::vector<double> tx, scale, mass;
   void add(long row, long col, double v) {
     if (v != 0.0) ti.push_back(row), tj.push_back(col), tx.push_back(v);
   }
-  /// coef·∂f/∂ξ at (i, j) of the field's unknowns.
-  void add_xi(long row, int i, int j, int field, double coef) {
-    const std::vector<double>& w = d.weights[size_t(i)];
-    for (size_t k = 0; k < w.size(); ++k) add(row, at(d.first[size_t(i)] + int(k), j, field), coef * w[k]);
+  /// −U_r f_r − (U_θ/r) f_θ + ν(∇₂²f − β²f) + diag·f at (i, j) of the field numbered by at(i, j), at radius r
+  /// with ξ-neighbours hm below and hp above.
+  template <class At>
+  void transport(long row, At at, int i, int j, double Ub, double Vb, double r, double hm, double hp, double diag) {
+    const Weights3 d1 = first_derivative(hm, hp), d2 = second_derivative(hm, hp);
+    const double c = nu / (r * r), k = m.k;
+    add(row, at(i - 1, j), -Ub / r * d1.m + c * d2.m);
+    add(row, at(i + 1, j), -Ub / r * d1.p + c * d2.p);
+    add(row, at(i, j + 1), -Vb / (2.0 * r * k) + c / (k * k));
+    add(row, at(i, j - 1), Vb / (2.0 * r * k) + c / (k * k));
+    add(row, at(i, j), -Ub / r * d1.c + c * d2.c - 2.0 * c / (k * k) - nu * beta * beta + diag);
   }
-  /// coef·∂f/∂θ at (i, j), centred.
-  void add_theta(long row, int i, int j, int field, double coef) {
-    add(row, at(i, j + 1, field), coef / (2.0 * g.d_theta));
-    add(row, at(i, j - 1, field), -coef / (2.0 * g.d_theta));
-  }
-  /// coef·∂²f/∂ξ² at ring 1 ≤ i ≤ N − 1 (compact: the Laplacian's flux form over h_i²) and coef·∂²f/∂θ²
-  /// (compact), coef·∂²f/∂ξ∂θ (centred in both).
-  void add_xi_xi(long row, int i, int j, int field, double coef) {
-    const XiFlux xf = xi_flux(g, i);
-    const double c = coef / (xf.h * xf.h);
-    add(row, at(i + 1, j, field), c * xf.c_p), add(row, at(i - 1, j, field), c * xf.c_m);
-    add(row, at(i, j, field), -c * (xf.c_m + xf.c_p));
-  }
-  void add_theta_theta(long row, int i, int j, int field, double coef) {
-    const double c = coef / (g.d_theta * g.d_theta);
-    add(row, at(i, j + 1, field), c), add(row, at(i, j - 1, field), c), add(row, at(i, j, field), -2.0 * c);
-  }
-  void add_xi_theta(long row, int i, int j, int field, double coef) {
-    add_xi(row, i, j + 1, field, coef / (2.0 * g.d_theta));
-    add_xi(row, i, j - 1, field, -coef / (2.0 * g.d_theta));
-  }
-  /// ∂f/∂ξ and ∂f/∂θ of a base field at (i, j).
-  double xi_of(const std::vector<double>& f, int i, int j) const {
-    const std::vector<double>& w = d.weights[size_t(i)];
-    double s = 0.0;
-    for (size_t k = 0; k < w.size(); ++k) s += w[k] * f[node(d.first[size_t(i)] + int(k), j)];
-    return s;
-  }
-  double theta_of(const std::vector<double>& f, int i, int j) const {
-    return (f[node(i, j + 1)] - f[node(i, j - 1)]) / (2.0 * g.d_theta);
-  }
-  /// The 5-point Laplacian of the field at ring 1 ≤ i ≤ N − 1, times h_i² (flux form) and coef.
-  void add_laplacian(long row, int i, int j, int field, double coef) {
-    const double h = g.ring_width(i);
-    add_xi_xi(row, i, j, field, coef * h * h), add_theta_theta(row, i, j, field, coef * h * h);
-  }
-  /// h_i² J_i of ring i (its rows are scaled by h_i², ring_width) times coef: the shift −β²J, the couplings.
-  double h2J(int i, double coef) const {
-    const double h = g.ring_width(i);
-    return coef * h * h * g.r[size_t(i)] * g.r[size_t(i)];
-  }
-  /// The same on the wall ring with the Neumann condition's mirror ghost f_{−1} = f_1 (its data apart),
-  /// times h_0²: 2(f_1 − f_0) + (h_0/Δθ)²(f_e − 2f_0 + f_w).
-  void add_wall_laplacian(long row, int j, int field, double coef) {
-    const double h = g.d_xi(0), q2 = (h / g.d_theta) * (h / g.d_theta);
-    add(row, at(1, j, field), 2.0 * coef), add(row, at(0, j, field), coef * (-2.0 - 2.0 * q2));
-    add(row, at(0, j + 1, field), coef * q2), add(row, at(0, j - 1, field), coef * q2);
-  }
+  /// A momentum row: scale a/U² (set by the caller's speed), mass 1.
+  void dynamic(long row, double s) { scale[size_t(row)] = s, mass[size_t(row)] = 1.0; }
 };
 
-/// The 2D problem's entries and mass on the (ψ, ζ, Γ_R) unknowns of the five-field numbering.
-void move_2d(Builder& b, const EigenProblem& two, std::vector<double>& m) {
-  const long nodes2 = two.n - 1;  // 2·nodes
-  auto moved = [&](long k) { return k == nodes2 ? long(kSpanwiseFields) * (nodes2 / 2) : kSpanwiseFields * (k / 2) + k % 2; };
-  for (long c = 0; c < two.n; ++c) {
-    for (long t = two.Ap[size_t(c)]; t < two.Ap[size_t(c) + 1]; ++t)
-      b.add(moved(two.Ai[size_t(t)]), moved(c), two.Ax[size_t(t)]);
-    m[size_t(moved(c))] = two.m[size_t(c)];
+/// u_r on ring i (1 ≤ i < N, and N where the wake leaves), θ_{j+½}.
+void radial_momentum(Rows& R, int i, int j) {
+  const Mac& m = R.m;
+  const MacBase& b = R.b;
+  const double r = m.r_f(i), hm = m.xf[size_t(i)] - m.xf[size_t(i) - 1], hp = m.xf[size_t(i) + 1] - m.xf[size_t(i)];
+  const double Ub = b.ur(i, j), Vb = 0.25 * (b.ut(i - 1, j) + b.ut(i - 1, j + 1) + b.ut(i, j) + b.ut(i, j + 1));
+  const Weights3 d1 = first_derivative(hm, hp);
+  const double Ur_xi = d1.m * b.ur(i - 1, j) + d1.c * Ub + d1.p * b.ur(i + 1, j);
+  const double Ur_th = (b.ur(i, j + 1) - b.ur(i, j - 1)) / (2.0 * m.k);
+  const long row = m.u(i, j);
+  R.transport(row, [&](int ii, int jj) { return m.u(ii, jj); }, i, j, Ub, Vb, r, hm, hp,
+              -R.nu / (r * r) - Ur_xi / r);
+  const double cv = -0.25 * (Ur_th - 2.0 * Vb) / r, cd = -R.nu / (r * r * m.k);  // ū_θ; −(2ν/r²)u_θ,θ
+  for (int c : {i - 1, i}) {
+    R.add(row, m.v(c, j), cv - cd), R.add(row, m.v(c, j + 1), cv + cd);
+  }
+  const double dp = r * (m.xi_c(i) - m.xi_c(i - 1));
+  R.add(row, m.pr(i, j), -1.0 / dp), R.add(row, m.pr(i - 1, j), 1.0 / dp);
+}
+
+/// u_θ at centre c (0 ≤ c < N), θ_j.
+void azimuthal_momentum(Rows& R, int c, int j) {
+  const Mac& m = R.m;
+  const MacBase& b = R.b;
+  const double r = m.r_c(c), hm = m.xi_c(c) - m.xi_c(c - 1), hp = m.xi_c(c + 1) - m.xi_c(c);
+  const double Vb = b.ut(c, j), Ub = 0.25 * (b.ur(c, j - 1) + b.ur(c, j) + b.ur(c + 1, j - 1) + b.ur(c + 1, j));
+  // U_θ,ξ: through the wall's aω next to the wall, the neighbouring centres elsewhere.
+  const Weights3 d1 = c == 0 ? first_derivative(m.xi_c(0), hp) : first_derivative(hm, hp);
+  const double below = c == 0 ? b.wall : b.ut(c - 1, j);
+  const double Ut_xi = d1.m * below + d1.c * Vb + d1.p * b.ut(c + 1, j);
+  const double Ut_th = (b.ut(c, j + 1) - b.ut(c, j - 1)) / (2.0 * m.k);
+  const long row = m.v(c, j);
+  R.transport(row, [&](int ii, int jj) { return m.v(ii, jj); }, c, j, Ub, Vb, r, hm, hp,
+              -R.nu / (r * r) - (Ut_th + Ub) / r);
+  const double cu = -0.25 * (Vb + Ut_xi) / r, cd = R.nu / (r * r * m.k);  // ū_r; +(2ν/r²)u_r,θ
+  for (int i : {c, c + 1}) {
+    R.add(row, m.u(i, j), cu + cd), R.add(row, m.u(i, j - 1), cu - cd);
+  }
+  R.add(row, m.pr(c, j), -1.0 / (r * m.k)), R.add(row, m.pr(c, j - 1), 1.0 / (r * m.k));
+}
+
+/// w̃ at centre c (0 ≤ c < N), θ_{j+½}.
+void spanwise_momentum(Rows& R, int c, int j) {
+  const Mac& m = R.m;
+  const MacBase& b = R.b;
+  const double r = m.r_c(c), hm = m.xi_c(c) - m.xi_c(c - 1), hp = m.xi_c(c + 1) - m.xi_c(c);
+  const double Ub = 0.5 * (b.ur(c, j) + b.ur(c + 1, j)), Vb = 0.5 * (b.ut(c, j) + b.ut(c, j + 1));
+  const long row = m.w(c, j);
+  R.transport(row, [&](int ii, int jj) { return m.w(ii, jj); }, c, j, Ub, Vb, r, hm, hp, 0.0);
+  R.add(row, m.pr(c, j), R.beta);
+}
+
+/// Continuity in cell c, θ_{j+½}: (1/r²)(r u_r)_ξ + (1/r) u_θ,θ + β w̃ = 0 (the row of p there).
+void continuity(Rows& R, int c, int j) {
+  const Mac& m = R.m;
+  const double r = m.r_c(c), h = m.xf[size_t(c) + 1] - m.xf[size_t(c)];
+  const long row = m.pr(c, j);
+  R.add(row, m.u(c + 1, j), m.r_f(c + 1) / (r * r * h)), R.add(row, m.u(c, j), -m.r_f(c) / (r * r * h));
+  R.add(row, m.v(c, j + 1), 1.0 / (r * m.k)), R.add(row, m.v(c, j), -1.0 / (r * m.k));
+  R.add(row, m.w(c, j), R.beta);
+}
+
+/// The ghost f_g of a field that vanishes on a boundary, from the quadratic through 0 there and the two
+/// values inside: f_g = L0·f_0 + L1·f_1 with x the distances from the boundary (x_g on the other side).
+void zero_ghost(Rows& R, long ghost, long f0, long f1, double xg, double x0, double x1) {
+  R.add(ghost, ghost, 1.0);
+  R.add(ghost, f0, -xg * (xg - x1) / (x0 * (x0 - x1)));
+  R.add(ghost, f1, -xg * (xg - x0) / (x1 * (x1 - x0)));
+}
+
+/// The boundary rows of column j: the wall's no slip, and on R zero velocity where the base flows in,
+/// p = 0 and ∂u/∂r = 0 where it flows out.
+void boundary_rows(Rows& R, const SpanwiseOutflow& out, int j, double U) {
+  const Mac& m = R.m;
+  const int N = m.N;
+  auto fix = [&](long row, double s) { R.add(row, row, 1.0), R.scale[size_t(row)] = s; };
+  fix(m.u(0, j), 1.0 / U);
+  fix(m.pr(-1, j), 1.0 / (U * U));  // unused
+  const double x0 = m.xi_c(0), x1 = m.xi_c(1), y0 = m.xi_c(N - 1) - m.xf[size_t(N)];
+  const double y1 = m.xi_c(N - 2) - m.xf[size_t(N)], yg = m.xi_c(N) - m.xf[size_t(N)];
+  for (const bool is_v : {true, false}) {
+    auto f = [&](int c) { return is_v ? m.v(c, j) : m.w(c, j); };
+    zero_ghost(R, f(-1), f(0), f(1), m.xi_c(-1), x0, x1);
+    R.scale[size_t(f(-1))] = R.scale[size_t(f(N))] = 1.0 / U;
+    if (is_v ? out.v[size_t(j)] : out.u[size_t(j)])
+      R.add(f(N), f(N), 1.0), R.add(f(N), f(N - 1), -1.0);
+    else
+      zero_ghost(R, f(N), f(N - 1), f(N - 2), yg, y0, y1);
+  }
+  R.scale[size_t(m.u(N + 1, j))] = 1.0 / U, R.scale[size_t(m.pr(N, j))] = 1.0 / (U * U);
+  if (out.u[size_t(j)]) {
+    R.add(m.u(N + 1, j), m.u(N + 1, j), 1.0), R.add(m.u(N + 1, j), m.u(N - 1, j), -1.0);
+    R.add(m.pr(N, j), m.pr(N, j), 1.0), R.add(m.pr(N, j), m.pr(N - 1, j), 1.0);  // p = 0 on R: the mean
+  } else {
+    fix(m.u(N, j), 1.0 / U), fix(m.u(N + 1, j), 1.0 / U), fix(m.pr(N, j), 1.0 / (U * U));
   }
 }
 
-/// The β-terms of the ζ rows (rings 1…N−1): −ν β² J ζ, and the potential part's advection of Ω with the
-/// stretching β J Ω w̃, together −∇·(Ω∇φ) in flux form (the rows are (h²/ν)·(…)·s_ζ as in 2D); the wall
-/// closure's slip φ_θ; the circulation's −νβ²Γ_R and −φ_ξ Ω.
-/// The flux form is the discrete identity −∇φ·∇Ω + βΩw̃ = −∇·(Ω∇φ) (∇²φ = −βw̃ with the same compact
-/// Laplacian): written as the centred product plus the stretching, the two did not cancel where the
-/// shear layers are under-resolved in θ, and a spurious stationary mode grew in the Re 40 wake (+0.029
-/// U/D at n_θ 48, +0.012 at 64; the flux form: −0.0097 and −0.0099, the slow far-field modes leading).
-void vorticity_terms(Builder& b, const Base& base) {
-  const PolarGrid& g = b.g;
-  const double nu = b.p.nu, beta = b.beta;
-  for (int i = 1; i < b.N; ++i) {
-    const double h = g.ring_width(i);
-    for (int j = 0; j < b.n; ++j) {
-      const long row = b.at(i, j, kZeta);
-      b.add(row, row, -b.h2J(i, beta * beta * b.s_zeta));
-      // −(φ_ξΩ_ξ + φ_θΩ_θ) + βJΩw̃ = −[(Ωφ_ξ)_ξ + (Ωφ_θ)_θ] with ∇²φ = −βJw̃: the flux form, Ω at the faces.
-      const XiFlux xf = xi_flux(g, i);
-      const double q2 = (h / g.d_theta) * (h / g.d_theta), cf = -b.s_zeta / nu;
-      const double O = base.Omega[b.node(i, j)];
-      const double Op = 0.5 * (O + base.Omega[b.node(i + 1, j)]), Om = 0.5 * (O + base.Omega[b.node(i - 1, j)]);
-      const double Oe = 0.5 * (O + base.Omega[b.node(i, j + 1)]), Ow = 0.5 * (O + base.Omega[b.node(i, j - 1)]);
-      b.add(row, b.at(i + 1, j, kPhi), cf * xf.c_p * Op), b.add(row, b.at(i - 1, j, kPhi), cf * xf.c_m * Om);
-      b.add(row, b.at(i, j, kPhi), -cf * (xf.c_p * Op + xf.c_m * Om + q2 * (Oe + Ow)));
-      b.add(row, b.at(i, j + 1, kPhi), cf * q2 * Oe), b.add(row, b.at(i, j - 1, kPhi), cf * q2 * Ow);
-    }
-  }
-  // The closure's row c_1ψ_1 − c_2ψ_2 + c_w ζ_w = κ h_0 ψ_ξ|wall, its slip ψ_ξ = φ_θ (2D: −a²ω).
-  const WallClosureRow wc = wall_closure_row(g, b.p);
-  for (int j = 0; j < b.n; ++j) b.add_theta(b.at(0, j, kZeta), 0, j, kPhi, -wc.kappa * g.d_xi(0) * b.s_psi);
-  const long gamma = long(kSpanwiseFields) * g.nodes();
-  const double hN = g.d_xi(b.N - 1), ff = hN / (2.0 * M_PI * nu) * b.s_zeta;
-  b.add(gamma, gamma, -nu * beta * beta * ff);
-  for (int j = 0; j < b.n; ++j) b.add_xi(gamma, b.N, j, kPhi, -base.Omega[b.node(b.N, j)] * g.d_theta * ff);
-}
-
-/// φ: ∇²φ = −βw̃ inside, φ_ξ = 0 on the wall, φ = 0 on R (rows times s_ψ).
-void potential_rows(Builder& b) {
-  for (int j = 0; j < b.n; ++j) {
-    b.add_wall_laplacian(b.at(0, j, kPhi), j, kPhi, b.s_psi);
-    b.add(b.at(b.N, j, kPhi), b.at(b.N, j, kPhi), b.s_psi);
-  }
-  for (int i = 1; i < b.N; ++i)
-    for (int j = 0; j < b.n; ++j) {
-      b.add_laplacian(b.at(i, j, kPhi), i, j, kPhi, b.s_psi);
-      b.add(b.at(i, j, kPhi), b.at(i, j, kW), b.h2J(i, b.beta * b.s_psi));
-    }
-}
-
-/// w̃: J w̃_t = −{Ψ, w̃} + βJp + ν(∇²w̃ − β²Jw̃) inside (rows (h²/ν)·(…)·s_w, mass s_w h² J/ν); 0 on the wall;
-/// on R 0 on inflow and convected out on outflow, as ζ.
-void spanwise_velocity_rows(Builder& b, const Base& base, std::vector<double>& m) {
-  const PolarGrid& g = b.g;
-  const NsParams& p = b.p;
-  for (int i = 1; i < b.N; ++i) {
-    const double h = g.ring_width(i), J = g.r[size_t(i)] * g.r[size_t(i)];
-    const double cN = -h * h / p.nu / (12.0 * g.d_theta * h) * b.s_w;  // of −(h²/ν)·{Ψ, w̃}, as the 2D rows
-    AdvectionStride st[2];
-    const int terms = p.stokes ? 0 : advection_terms(p.advection_order, p.advection_order_xi, i, g.n_r, st);
-    for (int j = 0; j < b.n; ++j) {
-      const long row = b.at(i, j, kW);
-      b.add_laplacian(row, i, j, kW, b.s_w);
-      b.add(row, row, -h * h * b.beta * b.beta * J * b.s_w);
-      b.add(row, b.at(i, j, kP), h * h / p.nu * b.beta * J * b.s_w);
-      for (int q = 0; q < terms; ++q)
-        for (const ArakawaTerm& t : kArakawa) {
-          const int s = st[q].s_theta, sx = st[q].s_xi;
-          b.add(row, b.at(i + sx * t.zi, j + s * t.zj, kW),
-                cN * st[q].weight * t.c * base.Psi[b.node(i + sx * t.pi, j + s * t.pj)]);
-        }
-      m[size_t(row)] = b.s_w * h * h * J / p.nu;
-    }
-  }
-  const double hN = g.d_xi(b.N - 1), R = g.outer_radius();
-  for (int j = 0; j < b.n; ++j) {
-    b.add(b.at(0, j, kW), b.at(0, j, kW), b.s_w);
-    const long row = b.at(b.N, j, kW);
-    b.add(row, row, b.s_w);
-    const double p_theta = b.theta_of(base.Psi, b.N, j);
-    if (outflow(p, p_theta)) {
-      b.add(row, b.at(b.N - 1, j, kW), -b.s_w);
-      m[size_t(row)] = -b.s_w * hN * R * R / p_theta;
-    }
-  }
-}
-
-/// 2S = 2J tr(∇U·∇u) at (i, j) times coef into row. With u_r = (ψ_θ + φ_ξ)/r, u_θ = (φ_θ − ψ_ξ)/r:
-///     r u_r,ξ = ψ_ξθ + φ_ξξ − ψ_θ − φ_ξ,        r u_θ,ξ = φ_ξθ − ψ_ξξ − φ_θ + ψ_ξ,
-///     r (u_r,θ − u_θ) = ψ_θθ + φ_ξθ − φ_θ + ψ_ξ, r (u_θ,θ + u_r) = φ_θθ − ψ_ξθ + ψ_θ + φ_ξ,
-/// the pure second derivatives compact, as in the Laplacians (the differences of centred differences
-/// skip every other node: on n_θ 48 they let a spurious stationary mode grow in the Re 40 wake). On the
-/// wall (u = 0, ψ_ξ = φ_θ, φ_ξ = 0, ψ_ξξ = −a²ζ_w) only r u_θ,ξ = a²ζ_w is left.
-void add_strain_product(Builder& b, const Base& base, long row, int i, int j, double coef) {
-  const double Ur_xi = b.xi_of(base.U_r, i, j), Ur_th = b.theta_of(base.U_r, i, j);
-  const double Ut_xi = b.xi_of(base.U_theta, i, j), Ut_th = b.theta_of(base.U_theta, i, j);
-  const double Ur = base.U_r[b.node(i, j)], Ut = base.U_theta[b.node(i, j)];
-  const double r = b.g.r[size_t(i)], c = 2.0 * coef / r;
-  const double A[4] = {c * Ur_xi, c * (Ur_th - Ut), c * Ut_xi, c * (Ut_th + Ur)};
-  if (i == 0) {
-    b.add(row, b.at(0, j, kZeta), A[1] * r * r);
-    return;
-  }
-  b.add_xi_theta(row, i, j, kPsi, A[0] - A[3]), b.add_xi_xi(row, i, j, kPhi, A[0]);
-  b.add_theta(row, i, j, kPsi, A[3] - A[0]), b.add_xi(row, i, j, kPhi, A[3] - A[0]);
-  b.add_xi_theta(row, i, j, kPhi, A[1] + A[2]), b.add_xi_xi(row, i, j, kPsi, -A[1]);
-  b.add_theta(row, i, j, kPhi, -A[1] - A[2]), b.add_xi(row, i, j, kPsi, A[1] + A[2]);
-  b.add_theta_theta(row, i, j, kPsi, A[2]), b.add_theta_theta(row, i, j, kPhi, A[3]);
-}
-
-/// p: ∇²p − β²Jp = −2S inside; on the wall p_ξ = −ν(ζ_θ + βw̃_ξ) through the mirror ghost; 0 on R
-/// (rows times h_i²·s_p).
-void pressure_rows(Builder& b, const Base& base) {
-  const PolarGrid& g = b.g;
-  const double h0 = g.d_xi(0), a2 = g.r[0] * g.r[0];
-  for (int j = 0; j < b.n; ++j) {
-    const long row = b.at(0, j, kP);
-    b.add_wall_laplacian(row, j, kP, b.s_p);
-    b.add(row, row, -h0 * h0 * b.beta * b.beta * a2 * b.s_p);
-    add_strain_product(b, base, row, 0, j, h0 * h0 * b.s_p);
-    // −2h_0·p_ξ = 2h_0 ν (ζ_θ + β w̃_ξ)
-    b.add_theta(row, 0, j, kZeta, 2.0 * h0 * b.p.nu * b.s_p);
-    b.add_xi(row, 0, j, kW, 2.0 * h0 * b.p.nu * b.beta * b.s_p);
-    b.add(b.at(b.N, j, kP), b.at(b.N, j, kP), b.s_p);
-  }
-  for (int i = 1; i < b.N; ++i)
-    for (int j = 0; j < b.n; ++j) {
-      const long row = b.at(i, j, kP);
-      b.add_laplacian(row, i, j, kP, b.s_p);
-      b.add(row, row, -b.h2J(i, b.beta * b.beta * b.s_p));
-      add_strain_product(b, base, row, i, j, g.ring_width(i) * g.ring_width(i) * b.s_p);
-    }
-}
-
-/// The grid's nested-dissection order (grid_order: ψ, ζ pairs per node, then Γ_R) with each node's five
-/// unknowns kept together.
-std::vector<long> five_field_order(const std::vector<long>& two, long nodes) {
+/// The grid's nested-dissection order of the slots (grid_order over n_r + 1 rings), each slot's four
+/// unknowns together.
+std::vector<long> slot_order(const Mac& m) {
+  const std::vector<long> two = grid_order(m.N + 2, m.n, false);
+  const long slots = long(m.N + 2) * m.n;
   std::vector<long> order;
-  order.reserve(size_t(kSpanwiseFields * nodes + 1));
-  for (long e : two) {
-    if (e == 2 * nodes)
-      order.push_back(kSpanwiseFields * nodes);
-    else if (e % 2 == 0)
+  order.reserve(size_t(kSpanwiseFields * slots));
+  for (long e : two)
+    if (e < 2 * slots && e % 2 == 0)
       for (int f = 0; f < kSpanwiseFields; ++f) order.push_back(kSpanwiseFields * (e / 2) + f);
-  }
   return order;
 }
 
 }  // namespace
 
-EigenProblem spanwise_problem(const NsParams& p, const NsState& steady, double beta) {
+SpanwiseOutflow spanwise_outflow(const NsParams& p, const NsState& base) {
+  const PolarGrid g = ns_grid(p);
+  if (base.psi.size() != size_t(g.nodes())) throw std::invalid_argument("spanwise_outflow: the state does not match the grid");
+  const int n = g.n_theta;
+  const double* ps = base.psi.data() + size_t(g.n_r - 1) * n;
+  SpanwiseOutflow out;
+  for (int j = 0; j < n; ++j) {
+    out.u.push_back(outflow(p, (ps[(j + 1) % n] - ps[j]) / g.d_theta));
+    out.v.push_back(outflow(p, psi_theta(ps, j, n, g.d_theta)));
+  }
+  return out;
+}
+
+EigenProblem spanwise_problem(const NsParams& p, const NsState& base, double beta) {
+  return spanwise_problem(p, base, beta, spanwise_outflow(p, base));
+}
+
+EigenProblem spanwise_problem(const NsParams& p, const NsState& base, double beta, const SpanwiseOutflow& out) {
   if (!(beta >= 0.0) || !std::isfinite(beta))
     throw std::invalid_argument("spanwise_problem: the wavenumber β must be finite and ≥ 0 (got " +
                                 std::to_string(beta) + ")");
-  const EigenProblem two = stability_problem(p, steady);
   const PolarGrid g = ns_grid(p);
-  const long nodes = g.nodes();
-  const double speed = stability_speed(p);
-  Builder b{g, p, beta, g.n_theta, g.n_r - 1, 1.0 / (speed * p.a), p.a / speed, 1.0 / speed,
-            1.0 / (speed * speed), radial_derivative(g.xi, 2, false), {}, {}, {}};
-  Base base{steady.psi, steady.zeta, {}, {}};
-  ns_velocity(g, steady.psi, base.U_r, base.U_theta);
-
+  if (base.psi.size() != size_t(g.nodes()) || out.u.size() != size_t(g.n_theta) || out.v.size() != out.u.size())
+    throw std::invalid_argument("spanwise_problem: the state does not match the grid");
+  const Mac m(g);
+  const MacBase b(m, g, base, p.omega);
+  const double U = stability_speed(p), s_mom = p.a / (U * U);
   EigenProblem ep;
-  ep.n = kSpanwiseFields * nodes + 1;
-  ep.m.assign(size_t(ep.n), 0.0);
-  move_2d(b, two, ep.m);
-  vorticity_terms(b, base);
-  potential_rows(b);
-  spanwise_velocity_rows(b, base, ep.m);
-  pressure_rows(b, base);
-  compress_triplets(ep.n, b.ti, b.tj, b.tx, ep.Ap, ep.Ai, ep.Ax);
-  // Every row reaches one ring and one column (the advection of order 4 two): the 2D problem's cuts.
-  ep.order = five_field_order(two.order, nodes);
+  ep.n = m.unknowns();
+  Rows R{m, b, p.nu, beta, {}, {}, {}, std::vector<double>(size_t(ep.n), 0.0), std::vector<double>(size_t(ep.n), 0.0)};
+  // With no outflow column (a closed box) and β = 0 the pressure is free up to a constant: p = 0 in one cell
+  // instead of that cell's continuity (redundant there: the sum of all the others).
+  bool closed = beta == 0.0;
+  for (char o : out.u) closed = closed && !o;
+  for (int j = 0; j < m.n; ++j) {
+    for (int i = 1; i < m.N; ++i) radial_momentum(R, i, j), R.dynamic(m.u(i, j), s_mom);
+    if (out.u[size_t(j)]) radial_momentum(R, m.N, j), R.dynamic(m.u(m.N, j), s_mom);
+    for (int c = 0; c < m.N; ++c) {
+      azimuthal_momentum(R, c, j), R.dynamic(m.v(c, j), s_mom);
+      spanwise_momentum(R, c, j), R.dynamic(m.w(c, j), s_mom);
+      R.scale[size_t(m.pr(c, j))] = p.a / U;
+      if (!(closed && c == 0 && j == 0)) continuity(R, c, j);
+    }
+    boundary_rows(R, out, j, U);
+  }
+  if (closed) R.add(m.pr(0, 0), m.pr(0, 0), 1.0), R.scale[size_t(m.pr(0, 0))] = 1.0 / (U * U);
+  for (size_t t = 0; t < R.tx.size(); ++t) {
+    const int f = int(R.tj[t] % kSpanwiseFields);
+    R.tx[t] *= R.scale[size_t(R.ti[t])] * (f == kP ? U * U : U);
+  }
+  ep.m.resize(size_t(ep.n));
+  for (long r = 0; r < ep.n; ++r) ep.m[size_t(r)] = R.mass[size_t(r)] * R.scale[size_t(r)] * U;
+  compress_triplets(ep.n, R.ti, R.tj, R.tx, ep.Ap, ep.Ai, ep.Ax);
+  ep.order = slot_order(m);
   return ep;
 }
 
@@ -290,7 +282,7 @@ StabilityResult spanwise_eigenvalues(const NsParams& p, const NsState& steady, d
   check_stability_options(count, o);
   const EigenProblem ep = spanwise_problem(p, steady, beta);
   const double unit = stability_speed(p) / (2.0 * p.a);  // U/D in 1/s
-  StabilityResult res = search_eigenvalues(ep, unit, count, o, steady.psi.size(), kSpanwiseFields);
+  StabilityResult res = search_eigenvalues(ep, unit, count, o, 0, kSpanwiseFields);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }

@@ -1,42 +1,57 @@
 #pragma once
-// Linear stability of a steady 2D state to spanwise-periodic (three-dimensional) disturbances ∝ e^{iβz}
-// (BiGlobal). The base flow (Ψ, Ω) has no spanwise velocity, so one "half-complex" β-mode is real: the
-// in-plane fields and the pressure go with cos βz, the spanwise velocity w = w̃ sin βz. The in-plane
-// perturbation velocity is a solenoidal part plus a potential part, u₂ = ∇⊥ψ + ∇φ, so that
-//     u_r = (ψ_θ + φ_ξ)/r,   u_θ = (φ_θ − ψ_ξ)/r,   ζ = ω_z = −∇²ψ,   ∇²φ = −βw̃   (continuity, exactly).
-// On the log-polar grid (ξ = ln r/a, J = r², {f, g} = f_θ g_ξ − f_ξ g_θ, Arakawa's Jacobian as in 2D):
-//     J ζ_t = −{Ψ, ζ} − {ψ, Ω} − (φ_ξ Ω_ξ + φ_θ Ω_θ) + β J Ω w̃ + ν(ζ_ξξ + ζ_θθ − β² J ζ)
-//           = −{Ψ, ζ} − {ψ, Ω} − [(Ω φ_ξ)_ξ + (Ω φ_θ)_θ] + ν(ζ_ξξ + ζ_θθ − β² J ζ)   (discretised so)
-//     ψ_ξξ + ψ_θθ = −J ζ,            φ_ξξ + φ_θθ = −β J w̃
-//     J w̃_t = −{Ψ, w̃} + β J p + ν(w̃_ξξ + w̃_θθ − β² J w̃)
-//     p_ξξ + p_θθ − β² J p = −2 S,   S = J tr(∇U·∇u) = U_r,ξ u_r,ξ + (U_r,θ − U_θ) u_θ,ξ
-//                                                   + U_θ,ξ (u_r,θ − u_θ) + (U_θ,θ + U_r)(u_θ,θ + u_r)
-// (p the kinematic pressure, m²/s²: the divergence of the momentum equations). The ζ equation is the curl
-// of the in-plane momentum: the stretching βΩw̃ is ∂_z w tilting nothing (U_z = 0).
-// Wall (no slip): ψ = 0, φ_ξ = 0 (u_r = 0), the ζ_w closure with the slip ψ_ξ = φ_θ in place of −a²ω
-// (u_θ = 0), w̃ = 0, and p_ξ = −ν(ζ_θ + β w̃_ξ) (the normal momentum on the wall).
-// Far field: ψ_ξ = −Γ_R/2π, ζ and w̃ zero on inflow and convected out on outflow, φ = 0, p = 0; the
-// circulation's balance gains −νβ²Γ_R (from ∂_z² u_θ) and the potential part's −φ_ξ Ω in the flux.
-// At β = 0 the (ψ, ζ, Γ_R) block is the 2D problem of stability.hpp, entry for entry: φ = 0, p is slaved
-// and w̃ a passive scalar whose modes decay; the 2D eigenvalues come back unchanged.
-// The eigenproblem J x = λ M x has five unknowns per node, (ψ, ζ, φ, w̃, p) interleaved, then Γ_R; M holds
-// the 2D dynamic rows and the w̃ rows (interior, and the outflow ones on R). The eigenvalues are even in β.
+// Linear stability of a 2D state to spanwise-periodic (three-dimensional) disturbances ∝ e^{iβz} (BiGlobal),
+// in primitive variables on a staggered (MAC) copy of the polar grid. The base (U_r, U_θ)(r, θ) has no
+// spanwise velocity, so one real β-mode holds: u_r, u_θ, p go with cos βz and w = w̃ sin βz. With
+// ∂_r = (1/r)∂_ξ and ∇₂²f = (f_ξξ + f_θθ)/r², the linearised equations are
+//     u_r,t = −[U_r u_r,r + (U_θ/r) u_r,θ − 2U_θ u_θ/r + u_r U_r,r + (u_θ/r) U_r,θ] − p_r
+//             + ν[∇₂²u_r − u_r/r² − (2/r²) u_θ,θ − β² u_r]
+//     u_θ,t = −[U_r u_θ,r + (U_θ/r) u_θ,θ + U_θ u_r/r + u_r U_θ,r + (u_θ/r) U_θ,θ + u_θ U_r/r] − p_θ/r
+//             + ν[∇₂²u_θ − u_θ/r² + (2/r²) u_r,θ − β² u_θ]
+//     w̃_t   = −[U_r w̃_r + (U_θ/r) w̃_θ] + β p + ν[∇₂²w̃ − β² w̃]
+//     0     = (1/r)(r u_r)_r + (1/r) u_θ,θ + β w̃
+// (p the kinematic pressure, m²/s²). Continuity is a constraint: the pressure is its multiplier.
+// The staggered grid: u_r on the rings ξ_i at θ_{j+½}, u_θ at the ring midpoints ξ_{i+½} and θ_j, w̃ and p
+// at the cell centres (ξ_{i+½}, θ_{j+½}); the base's Ψ on the nodes (ξ_i, θ_j) gives U_r = Ψ_θ/r on the
+// u_r points and U_θ = −Ψ_ξ/r on the u_θ points by one difference each, so the problem is affine in the
+// base (the Floquet stepper relies on it). Second-order central differences on any ξ spacing; the other
+// component at a point is the mean of its four neighbours.
+// Boundaries, through ghost values beyond the wall and R (their rows are the conditions, with no mass):
+// the wall has no slip (u = 0; the ghosts of u_θ and w̃ put the quadratic through 0 on the wall); on R
+// the base's inflow columns have u = 0, its outflow columns p = 0 and ∂u/∂r = 0.
+// This is an independent discretisation of the 2D problem too: at β = 0 it gives the 2D eigenvalues of
+// stability.hpp to the discretisation error of both (not entry for entry).
+// Unknowns: four per slot (i, j), i = 0 … n_r (n_r + 1 slots, the last beyond R): u_r on ring i, and u_θ,
+// w̃, p of the cell i − ½ (slot 0 holds the wall's ghosts, its p an unused unknown fixed at 0). Each is
+// made dimensionless by the speed U (stability_speed): u/U, p/U². M is a/U on the momentum rows of the
+// interior (and the outflow u_r on R), 0 on the constraints.
 #include <vector>
 
 #include "solver/navier_stokes/stability.hpp"
 
 namespace magnus {
 
-/// Unknowns per node of the spanwise problem: ψ, ζ, φ, w̃, p (in that order).
-constexpr int kSpanwiseFields = 5;
+/// Unknowns per slot of the spanwise problem: u_r, u_θ, w̃, p (in that order).
+constexpr int kSpanwiseFields = 4;
+/// The field index of p: unknown kSpanwiseFields·slot + kSpanwisePressure.
+constexpr int kSpanwisePressure = 3;
 
-/// The spanwise problem at wavenumber β (1/m, ≥ 0) about the steady state `steady` of p (a converged
-/// solve_steady state on ns_grid(p)). Throws std::invalid_argument for β < 0 or not finite, or a state of the
-/// wrong size.
-EigenProblem spanwise_problem(const NsParams& p, const NsState& steady, double beta);
+/// Which columns of R let the base out (U_r > 0 there, and the case's outer vorticity lets the wake out):
+/// u at θ_{j+½} (the u_r points, also the cell centres), v at θ_j (the u_θ points).
+struct SpanwiseOutflow {
+  std::vector<char> u, v;
+};
 
-/// The leading eigenvalues (U/D) of the spanwise problem at β (1/m), the search of leading_eigenvalues on
-/// it; mode_psi, mode_zeta hold the leading mode's in-plane part.
+/// The outflow columns of the base state (n_θ each).
+SpanwiseOutflow spanwise_outflow(const NsParams& p, const NsState& base);
+
+/// The spanwise problem at wavenumber β (1/m, ≥ 0) about the 2D state `base` of p (on ns_grid(p)), its
+/// outflow columns from the base itself or given (the Floquet stepper fixes them at the mean flow's).
+/// Throws std::invalid_argument for β < 0 or not finite, or a state of the wrong size.
+EigenProblem spanwise_problem(const NsParams& p, const NsState& base, double beta);
+EigenProblem spanwise_problem(const NsParams& p, const NsState& base, double beta, const SpanwiseOutflow& out);
+
+/// The leading eigenvalues (U/D) of the spanwise problem at β (1/m) about a steady state, the search of
+/// leading_eigenvalues on it. The result's mode fields are empty (the mode is not a (ψ, ζ) pair).
 StabilityResult spanwise_eigenvalues(const NsParams& p, const NsState& steady, double beta, int count,
                                      const StabilityOptions& o);
 

@@ -3,7 +3,7 @@
 // `magnus stability --spanwise` would replace by the shedding orbit):
 //     spanwise_study Re alpha R_over_a beta_D n_theta…
 // D = 1 m, U = 1 m/s. Environment: NS_N_R=k rings instead of the grid rule's, NS_ORDER=4 advection order 4
-// in θ and ξ. One line per n_θ: n_r, the six leading eigenvalues λ·D/U and the search's seconds.
+// in θ and ξ. One line per n_θ: n_r, the twelve leading eigenvalues λ·D/U and the search's seconds.
 #include <cstdio>
 #include <cstdlib>
 
@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
       std::printf("n_theta %d: no steady state\n", p.n_theta);
       continue;
     }
-    const StabilityResult r = spanwise_eigenvalues(p, s.state, beta_D / (2.0 * p.a), 6, StabilityOptions{});
+    const StabilityResult r = spanwise_eigenvalues(p, s.state, beta_D / (2.0 * p.a), 12, StabilityOptions{});
     std::printf("n_theta %d n_r %d:", p.n_theta, ns_grid(p).n_r);
     for (const auto& l : r.eigenvalues) std::printf("  %+.6f%+.6fi", l.real(), l.imag());
     std::printf("  (%.1f s)\n", r.seconds);
