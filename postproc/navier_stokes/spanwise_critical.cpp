@@ -103,37 +103,26 @@ SpanwiseCritical spanwise_critical(const NsParams& p, const std::vector<double>&
                             Re_a, Re_b, a.scan.growth, b.scan.growth);
     return finish();
   }
-  // Illinois regula falsi: the end kept twice in a row has its growth rate halved. The growth rate is often
-  // flat and then kinked (a slow far-field mode leads until the 3D mode overtakes it), where regula falsi
-  // crawls: a step that does not halve the bracket is followed by a bisection.
-  Illinois weights;  // end 0 is a (stable), end 1 b
-  double root = Re_a;
-  bool bisect = false;
-  for (int k = 2; k < max_evaluations; ++k) {
-    const double width = b.Re - a.Re;
-    const double next = bisect ? 0.5 * (a.Re + b.Re) : weights.root(a.Re, a.scan.growth, b.Re, b.scan.growth);
-    c.change = std::min(std::fabs(next - root), width);
-    root = next;
-    if (k > 2 && c.change < tol) break;
-    const SpanwiseEvaluation m = run(next);
-    if (!defined(m.scan)) {
-      c.message = fmt::format("no growth rate converged at Re {:.5g}", next);
-      return finish();
-    }
-    const bool at_a = m.scan.growth < 0.0;
-    (at_a ? a : b) = m;
-    weights.replaced(at_a ? 0 : 1);
-    bisect = !bisect && b.Re - a.Re > 0.5 * width;
-    if (b.Re - a.Re < tol) {
-      c.change = b.Re - a.Re;
-      root = secant_zero(a.Re, a.scan.growth, b.Re, b.scan.growth);
-      break;
-    }
+  // A scan whose growth rate is undefined ends the search (its Reynolds number named).
+  auto growth = [&](double Re) -> std::optional<double> {
+    const SpanwiseEvaluation& m = run(Re);
+    return defined(m.scan) ? std::optional<double>(m.scan.growth) : std::nullopt;
+  };
+  const BracketRoot r = bracket_root(growth, Re_a, a.scan.growth, Re_b, b.scan.growth, tol, max_evaluations - 2);
+  if (r.failed) {
+    c.message = fmt::format("no growth rate converged at Re {:.5g}", r.failed_at);
+    return finish();
   }
-  c.lo = a.Re, c.hi = b.Re, c.Re_c = root;
-  const double w = (root - a.Re) / (b.Re - a.Re);
-  c.beta_D = (1.0 - w) * a.scan.beta_D + w * b.scan.beta_D;
-  c.found = c.change < tol;
+  c.lo = r.lo, c.hi = r.hi, c.Re_c = r.root, c.change = r.change;
+  // The most unstable wavenumber at the root: linear in Re between the bracket's scans.
+  auto beta_at = [&](double Re) {
+    for (const SpanwiseEvaluation& e : c.evaluations)
+      if (e.Re == Re) return e.scan.beta_D;
+    return 0.0;
+  };
+  const double w = (c.Re_c - c.lo) / (c.hi - c.lo);
+  c.beta_D = (1.0 - w) * beta_at(c.lo) + w * beta_at(c.hi);
+  c.found = r.converged;
   if (!c.found) c.message = fmt::format("not converged to ±{:g} in {} scans", tol, max_evaluations);
   return finish();
 }

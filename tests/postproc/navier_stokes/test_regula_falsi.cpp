@@ -2,6 +2,7 @@
 // plain regula falsi keeps one end for ever and converges linearly; the halving makes it superlinear.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <optional>
 
 #include "postproc/navier_stokes/regula_falsi.hpp"
 
@@ -43,4 +44,37 @@ TEST_CASE("[ns][regula-falsi] the secant zero, and the Illinois weights halve th
   INFO("plain " << plain << ", Illinois " << fast);
   CHECK(plain > 40);
   CHECK(fast < 15);
+}
+
+TEST_CASE("[ns][regula-falsi] the bracket search stops at the secant zero, not at a bisection's midpoint",
+          "[ns][critical]") {
+  int calls = 0;
+  // A line: the first secant zero is the root, and the search stops there after one evaluation.
+  auto line = [&](double x) -> std::optional<double> { return ++calls, x - 187.48; };
+  const BracketRoot a = bracket_root(line, 175.0, -12.48, 200.0, 12.52, 1.0, 8);
+  CHECK(a.converged);
+  CHECK(a.root == Approx(187.48).margin(1e-9));
+  CHECK(calls == 1);  // the secant zero, evaluated once: the estimate did not move
+  // Flat, then kinked (a slow mode leads until the 3D mode overtakes it): the mode A search's shape. Its
+  // root 187.5 is found to 0.01 within 10 evaluations, and the estimate is the last bracket's secant zero.
+  calls = 0;
+  auto kinked = [&](double x) -> std::optional<double> {
+    ++calls;
+    return x < 183.0 ? -0.036 + 0.002 * (x - 175.0) : 0.0024 * (x - 187.5);
+  };
+  const BracketRoot b = bracket_root(kinked, 175.0, -0.036, 200.0, 0.03, 0.01, 10);
+  INFO(calls << " evaluations, root " << b.root << " ± " << b.change << " in [" << b.lo << ", " << b.hi << "]");
+  CHECK(b.converged);
+  CHECK(b.root == Approx(187.5).margin(0.01));
+  CHECK(b.lo <= b.root);
+  CHECK(b.root <= b.hi);
+  // An evaluation that gives no value stops the search there.
+  auto broken = [](double x) -> std::optional<double> {
+    if (x > 180.0) return std::nullopt;
+    return x - 190.0;
+  };
+  const BracketRoot c = bracket_root(broken, 150.0, -40.0, 200.0, 10.0, 1.0, 8);
+  CHECK(c.failed);
+  CHECK_FALSE(c.converged);
+  CHECK(c.failed_at == Approx(190.0));
 }
