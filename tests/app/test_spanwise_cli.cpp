@@ -27,11 +27,12 @@ TEST_CASE("magnus stability --spanwise: the growth rate per wavenumber and the v
   const auto j = nlohmann::json::parse(o.out);
   const auto& sp = j["spanwise"];
   REQUIRE(sp["points"].size() == 2);
-  // β = 0 is the 2D problem: its leading eigenvalue is the 2D one.
+  // β = 0 is a second discretisation of the 2D problem: the same verdict (stable), though the slow far-field
+  // modes that lead a stable wake differ (−0.044 U/D here against the 2D problem's −0.0076).
   CHECK(sp["points"][0]["beta_D"].get<double>() == 0.0);
   CHECK(sp["points"][0]["wavelength_D"].is_null());
-  CHECK(sp["points"][0]["growth_rate"].get<double>() ==
-        Approx(j["eigenvalues"][0]["growth_rate"].get<double>()).margin(1e-9));
+  CHECK(j["eigenvalues"][0]["growth_rate"].get<double>() < 0.0);
+  CHECK(sp["points"][0]["growth_rate"].get<double>() < 0.0);
   CHECK(sp["points"][1]["wavelength_D"].get<double>() == Approx(2.0 * M_PI));
   // Spanwise variation damps this wake: β·D = 1 decays faster than the 2D far-field modes.
   CHECK(sp["points"][1]["growth_rate"].get<double>() < sp["points"][0]["growth_rate"].get<double>());
@@ -39,10 +40,10 @@ TEST_CASE("magnus stability --spanwise: the growth rate per wavenumber and the v
   CHECK(sp["verdict"].get<std::string>().find("spanwise-uniform flow is stable") != std::string::npos);
   CHECK(sp["base"] == "steady");
   // The operator's measured bias travels with every verdict, in the JSON and in the text.
-  CHECK(sp["accuracy_note"].get<std::string>().find("biased unstable") != std::string::npos);
+  CHECK(sp["accuracy_note"].get<std::string>().find("independent") != std::string::npos);
   const Outcome text = magnus_cmd({"stability", s_map, "--set", "flow.reynolds=40", "--spanwise", "--beta", "1:1:1"}, dir);
   REQUIRE(text.status == 0);
-  CHECK(line_of(text.out, "accuracy").find("accuracy       the spanwise growth rates are biased unstable") == 0);
+  CHECK(line_of(text.out, "accuracy").find("accuracy       steady bases (BiGlobal): within 1%") == 0);
   {
     // The HDF5 file carries the JSON's numbers: the 2D eigenvalues and the scan (β = 0 has no wavelength:
     // the fill value, named by _FillValue).
@@ -112,7 +113,7 @@ TEST_CASE("magnus stability --spanwise --critical-reynolds: a range with no 3D o
   const auto j = nlohmann::json::parse(o.out);
   CHECK(j["found"] == false);
   CHECK(j["undefined"].get<std::string>().find("does not cross zero in [30, 60]") != std::string::npos);
-  CHECK(j["accuracy_note"].get<std::string>().find("read a computed 3D onset as early") != std::string::npos);
+  CHECK(j["accuracy_note"].get<std::string>().find("mode A's onset comes out at Re 187.5") != std::string::npos);
   CHECK(!j.contains("critical_reynolds"));
   REQUIRE(j["evaluations"].size() == 2);
   for (const auto& e : j["evaluations"]) {
