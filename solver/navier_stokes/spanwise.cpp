@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "mesh/fd_weights.hpp"
 #include "solver/navier_stokes/lu.hpp"
 #include "solver/navier_stokes/stages.hpp"
 
@@ -18,33 +19,50 @@ namespace {
 
 enum Field { kU = 0, kV = 1, kW = 2, kP = kSpanwisePressure };
 
-/// Weights of f(x0 − hm), f(x0), f(x0 + hp) in a three-point derivative at x0.
+/// Weights of f at three points in a derivative (or, order 0, the value) at x0.
 struct Weights3 {
   double m, c, p;
 };
 
-/// f'(x0), second order on any spacing.
-Weights3 first_derivative(double hm, double hp) {
-  return {-hp / (hm * (hm + hp)), (hp - hm) / (hm * hp), hm / (hp * (hm + hp))};
-}
-
-/// f''(x0) (second order when hm = hp, first otherwise).
-Weights3 second_derivative(double hm, double hp) {
-  return {2.0 / (hm * (hm + hp)), -2.0 / (hm * hp), 2.0 / (hp * (hm + hp))};
+/// fd_weights (Fornberg) of the derivative of order `order` at x0 from the points a, b, c.
+Weights3 three_point(double x0, double a, double b, double c, int order) {
+  const std::vector<double> w = fd_weights(x0, {a, b, c}, order);
+  return {w[0], w[1], w[2]};
 }
 
 /// The staggered grid: ξ of the rings 0 … N + 1 (the last a ghost beyond R, mirrored) and of the cell
-/// centres c = −1 … N (ghosts mirrored across the wall and R), the unknowns' numbering by slot.
+/// centres c = −1 … N (ghosts mirrored across the wall and R), the unknowns' numbering by slot, and the
+/// ξ-derivatives' weights at each ring and centre (second order on any spacing; ∂²/∂ξ² first order where
+/// the spacing changes).
 struct Mac {
   int n = 0, N = 0;  ///< columns; the outer ring's index n_r − 1
   double k = 0.0, a = 0.0;
   std::vector<double> xf, xc;  ///< ξ of ring i at xf[i], of centre c at xc[c + 1]
+  std::vector<Weights3> d1_f, d2_f;  ///< ∂/∂ξ, ∂²/∂ξ² at ring i (1 ≤ i ≤ N) from rings i − 1, i, i + 1
+  std::vector<Weights3> d1_c, d2_c;  ///< the same at centre c (0 ≤ c < N), at index c + 1
+  Weights3 d1_wall;  ///< ∂/∂ξ at centre 0 from the wall (ξ = 0) and centres 0, 1
+  /// The ghosts of a field that vanishes on the wall (centre −1) and on R (centre N): the quadratic through
+  /// 0 there and the two centres inside, as weights of (0, the nearer centre, the farther).
+  Weights3 ghost_wall, ghost_outer;
   explicit Mac(const PolarGrid& g) : n(g.n_theta), N(g.n_r - 1), k(g.d_theta), a(g.a) {
     xf = g.xi;
     xf.push_back(2.0 * g.xi[size_t(N)] - g.xi[size_t(N) - 1]);
     xc.push_back(-0.5 * g.xi[1]);
     for (int c = 0; c < N; ++c) xc.push_back(0.5 * (g.xi[size_t(c)] + g.xi[size_t(c) + 1]));
     xc.push_back(2.0 * g.xi[size_t(N)] - xc.back());
+    d1_f.resize(size_t(N) + 1), d2_f.resize(size_t(N) + 1), d1_c.resize(size_t(N) + 1), d2_c.resize(size_t(N) + 1);
+    for (int i = 1; i <= N; ++i) {
+      const double* x = &xf[size_t(i) - 1];
+      d1_f[size_t(i)] = three_point(x[1], x[0], x[1], x[2], 1), d2_f[size_t(i)] = three_point(x[1], x[0], x[1], x[2], 2);
+    }
+    for (int c = 0; c < N; ++c) {
+      const double* x = &xc[size_t(c)];
+      d1_c[size_t(c) + 1] = three_point(x[1], x[0], x[1], x[2], 1);
+      d2_c[size_t(c) + 1] = three_point(x[1], x[0], x[1], x[2], 2);
+    }
+    d1_wall = three_point(xi_c(0), 0.0, xi_c(0), xi_c(1), 1);
+    ghost_wall = three_point(xi_c(-1), 0.0, xi_c(0), xi_c(1), 0);
+    ghost_outer = three_point(xi_c(N), xf[size_t(N)], xi_c(N - 1), xi_c(N - 2), 0);
   }
   double xi_c(int c) const { return xc[size_t(c + 1)]; }
   double r_f(int i) const { return a * std::exp(xf[size_t(i)]); }
@@ -90,11 +108,11 @@ struct Rows {
   void add(long row, long col, double v) {
     if (v != 0.0) ti.push_back(row), tj.push_back(col), tx.push_back(v);
   }
-  /// −U_r f_r − (U_θ/r) f_θ + ν(∇₂²f − β²f) + diag·f at (i, j) of the field numbered by at(i, j), at radius r
-  /// with ξ-neighbours hm below and hp above.
+  /// −U_r f_r − (U_θ/r) f_θ + ν(∇₂²f − β²f) + diag·f at (i, j) of the field numbered by at(i, j), at radius r,
+  /// with the ξ-derivatives' weights d1, d2 there.
   template <class At>
-  void transport(long row, At at, int i, int j, double Ub, double Vb, double r, double hm, double hp, double diag) {
-    const Weights3 d1 = first_derivative(hm, hp), d2 = second_derivative(hm, hp);
+  void transport(long row, At at, int i, int j, double Ub, double Vb, double r, const Weights3& d1,
+                 const Weights3& d2, double diag) {
     const double c = nu / (r * r), k = m.k;
     add(row, at(i - 1, j), -Ub / r * d1.m + c * d2.m);
     add(row, at(i + 1, j), -Ub / r * d1.p + c * d2.p);
@@ -110,13 +128,13 @@ struct Rows {
 void radial_momentum(Rows& R, int i, int j) {
   const Mac& m = R.m;
   const MacBase& b = R.b;
-  const double r = m.r_f(i), hm = m.xf[size_t(i)] - m.xf[size_t(i) - 1], hp = m.xf[size_t(i) + 1] - m.xf[size_t(i)];
+  const double r = m.r_f(i);
   const double Ub = b.ur(i, j), Vb = 0.25 * (b.ut(i - 1, j) + b.ut(i - 1, j + 1) + b.ut(i, j) + b.ut(i, j + 1));
-  const Weights3 d1 = first_derivative(hm, hp);
+  const Weights3 &d1 = m.d1_f[size_t(i)], &d2 = m.d2_f[size_t(i)];
   const double Ur_xi = d1.m * b.ur(i - 1, j) + d1.c * Ub + d1.p * b.ur(i + 1, j);
   const double Ur_th = (b.ur(i, j + 1) - b.ur(i, j - 1)) / (2.0 * m.k);
   const long row = m.u(i, j);
-  R.transport(row, [&](int ii, int jj) { return m.u(ii, jj); }, i, j, Ub, Vb, r, hm, hp,
+  R.transport(row, [&](int ii, int jj) { return m.u(ii, jj); }, i, j, Ub, Vb, r, d1, d2,
               -R.nu / (r * r) - Ur_xi / r);
   const double cv = -0.25 * (Ur_th - 2.0 * Vb) / r, cd = -R.nu / (r * r * m.k);  // ū_θ; −(2ν/r²)u_θ,θ
   for (int c : {i - 1, i}) {
@@ -130,15 +148,16 @@ void radial_momentum(Rows& R, int i, int j) {
 void azimuthal_momentum(Rows& R, int c, int j) {
   const Mac& m = R.m;
   const MacBase& b = R.b;
-  const double r = m.r_c(c), hm = m.xi_c(c) - m.xi_c(c - 1), hp = m.xi_c(c + 1) - m.xi_c(c);
+  const double r = m.r_c(c);
   const double Vb = b.ut(c, j), Ub = 0.25 * (b.ur(c, j - 1) + b.ur(c, j) + b.ur(c + 1, j - 1) + b.ur(c + 1, j));
+  const Weights3 &d1 = m.d1_c[size_t(c) + 1], &d2 = m.d2_c[size_t(c) + 1];
   // U_θ,ξ: through the wall's aω next to the wall, the neighbouring centres elsewhere.
-  const Weights3 d1 = c == 0 ? first_derivative(m.xi_c(0), hp) : first_derivative(hm, hp);
+  const Weights3& d1_base = c == 0 ? m.d1_wall : d1;
   const double below = c == 0 ? b.wall : b.ut(c - 1, j);
-  const double Ut_xi = d1.m * below + d1.c * Vb + d1.p * b.ut(c + 1, j);
+  const double Ut_xi = d1_base.m * below + d1_base.c * Vb + d1_base.p * b.ut(c + 1, j);
   const double Ut_th = (b.ut(c, j + 1) - b.ut(c, j - 1)) / (2.0 * m.k);
   const long row = m.v(c, j);
-  R.transport(row, [&](int ii, int jj) { return m.v(ii, jj); }, c, j, Ub, Vb, r, hm, hp,
+  R.transport(row, [&](int ii, int jj) { return m.v(ii, jj); }, c, j, Ub, Vb, r, d1, d2,
               -R.nu / (r * r) - (Ut_th + Ub) / r);
   const double cu = -0.25 * (Vb + Ut_xi) / r, cd = R.nu / (r * r * m.k);  // ū_r; +(2ν/r²)u_r,θ
   for (int i : {c, c + 1}) {
@@ -151,10 +170,11 @@ void azimuthal_momentum(Rows& R, int c, int j) {
 void spanwise_momentum(Rows& R, int c, int j) {
   const Mac& m = R.m;
   const MacBase& b = R.b;
-  const double r = m.r_c(c), hm = m.xi_c(c) - m.xi_c(c - 1), hp = m.xi_c(c + 1) - m.xi_c(c);
+  const double r = m.r_c(c);
   const double Ub = 0.5 * (b.ur(c, j) + b.ur(c + 1, j)), Vb = 0.5 * (b.ut(c, j) + b.ut(c, j + 1));
   const long row = m.w(c, j);
-  R.transport(row, [&](int ii, int jj) { return m.w(ii, jj); }, c, j, Ub, Vb, r, hm, hp, 0.0);
+  R.transport(row, [&](int ii, int jj) { return m.w(ii, jj); }, c, j, Ub, Vb, r, m.d1_c[size_t(c) + 1],
+              m.d2_c[size_t(c) + 1], 0.0);
   R.add(row, m.pr(c, j), R.beta);
 }
 
@@ -168,12 +188,9 @@ void continuity(Rows& R, int c, int j) {
   R.add(row, m.w(c, j), R.beta);
 }
 
-/// The ghost f_g of a field that vanishes on a boundary, from the quadratic through 0 there and the two
-/// values inside: f_g = L0·f_0 + L1·f_1 with x the distances from the boundary (x_g on the other side).
-void zero_ghost(Rows& R, long ghost, long f0, long f1, double xg, double x0, double x1) {
-  R.add(ghost, ghost, 1.0);
-  R.add(ghost, f0, -xg * (xg - x1) / (x0 * (x0 - x1)));
-  R.add(ghost, f1, -xg * (xg - x0) / (x1 * (x1 - x0)));
+/// The ghost f_g of a field that vanishes on a boundary: f_g = L·(0, f_0, f_1) (Mac's ghost weights).
+void zero_ghost(Rows& R, long ghost, long f0, long f1, const Weights3& L) {
+  R.add(ghost, ghost, 1.0), R.add(ghost, f0, -L.c), R.add(ghost, f1, -L.p);
 }
 
 /// The boundary rows of column j: the wall's no slip, and on R zero velocity where the base flows in,
@@ -184,16 +201,14 @@ void boundary_rows(Rows& R, const SpanwiseOutflow& out, int j, double U) {
   auto fix = [&](long row, double s) { R.add(row, row, 1.0), R.scale[size_t(row)] = s; };
   fix(m.u(0, j), 1.0 / U);
   fix(m.pr(-1, j), 1.0 / (U * U));  // unused
-  const double x0 = m.xi_c(0), x1 = m.xi_c(1), y0 = m.xi_c(N - 1) - m.xf[size_t(N)];
-  const double y1 = m.xi_c(N - 2) - m.xf[size_t(N)], yg = m.xi_c(N) - m.xf[size_t(N)];
   for (const bool is_v : {true, false}) {
     auto f = [&](int c) { return is_v ? m.v(c, j) : m.w(c, j); };
-    zero_ghost(R, f(-1), f(0), f(1), m.xi_c(-1), x0, x1);
+    zero_ghost(R, f(-1), f(0), f(1), m.ghost_wall);
     R.scale[size_t(f(-1))] = R.scale[size_t(f(N))] = 1.0 / U;
     if (is_v ? out.v[size_t(j)] : out.u[size_t(j)])
       R.add(f(N), f(N), 1.0), R.add(f(N), f(N - 1), -1.0);
     else
-      zero_ghost(R, f(N), f(N - 1), f(N - 2), yg, y0, y1);
+      zero_ghost(R, f(N), f(N - 1), f(N - 2), m.ghost_outer);
   }
   R.scale[size_t(m.u(N + 1, j))] = 1.0 / U, R.scale[size_t(m.pr(N, j))] = 1.0 / (U * U);
   if (out.u[size_t(j)]) {
