@@ -42,13 +42,22 @@ struct Triplets {
   void compress(EigenProblem& out) const { compress_triplets(out.n, ti, tj, tx, out.Ap, out.Ai, out.Ax); }
 };
 
-/// A − B on the union of their patterns.
+/// A − B without the entries that cancel: the part of J that does not depend on the base (the pressure,
+/// the constraints, the ghosts) drops out exactly, and B(t)·x runs for every harmonic at every step.
 EigenProblem difference(const EigenProblem& A, const EigenProblem& B) {
   Triplets t;
   t.add(A, 1.0), t.add(B, -1.0);
+  EigenProblem all;
+  all.n = A.n;
+  t.compress(all);
   EigenProblem D;
   D.n = A.n;
-  t.compress(D);
+  D.Ap.assign(size_t(D.n) + 1, 0);
+  for (long c = 0; c < D.n; ++c) {
+    for (long k = all.Ap[size_t(c)]; k < all.Ap[size_t(c) + 1]; ++k)
+      if (all.Ax[size_t(k)] != 0.0) D.Ai.push_back(all.Ai[size_t(k)]), D.Ax.push_back(all.Ax[size_t(k)]);
+    D.Ap[size_t(c) + 1] = long(D.Ai.size());
+  }
   return D;
 }
 
