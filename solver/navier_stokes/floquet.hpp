@@ -40,6 +40,11 @@ struct PeriodicBase {
   double truncation() const;
 };
 
+/// The same orbit from a phase every orbit shares: b(t + t_0), with t_0 where the first harmonic of the
+/// total vorticity Σ ζ peaks (the base unchanged when that harmonic vanishes). Orbits of neighbouring
+/// parameters then have neighbouring Floquet modes at phase 0.
+PeriodicBase canonical_phase(PeriodicBase b);
+
 /// The series of N states sampled uniformly over a period, t_n = nT/N, built one sample at a time (the
 /// discrete Fourier sums, so the samples need not be kept); K ≤ N/2 − 1 harmonics.
 class FourierAccumulator {
@@ -59,7 +64,14 @@ struct FloquetOptions {
   /// Time steps of the linear stepper per period. The stepper is second order and implicit in the stiff
   /// part: at Re 100 on n_θ 48 the multiplier moves 4e-4 from 250 steps to 2000 and 2e-5 from 1000.
   int steps = 400;
-  int krylov = 20;      ///< Arnoldi vectors (one period of the stepper each)
+  int krylov = 20;      ///< Arnoldi vectors at most (one period of the stepper each)
+  /// Stop sooner, once the leading multiplier's Ritz estimate ‖P x − μ x‖ (unit x) is ≤ tolerance or
+  /// ≤ relative·|1 − |μ|| (a fraction of its distance from neutral: a growth rate far from 0 need not be
+  /// known as closely); 0 and 0: never.
+  double tolerance = 0.0, relative = 0.0;
+  /// Arnoldi's start (before its first period), e.g. the leading mode of a neighbouring problem on the same
+  /// grid; empty or of another size: a random vector (seed).
+  std::vector<double> start;
   int count = 6;        ///< multipliers reported, largest |μ| first
   unsigned seed = 12345;
 };
@@ -74,6 +86,7 @@ struct FloquetResult {
   int harmonics = 0;              ///< harmonics of the base kept
   double truncation = 0.0;        ///< the base's PeriodicBase::truncation
   double seconds = 0.0;           ///< wall time, s
+  std::vector<double> mode;       ///< the leading multiplier's Ritz vector at phase 0 (its real part)
 };
 
 /// The leading Floquet multipliers at spanwise wavenumber β (1/m, ≥ 0) of the periodic base (states on

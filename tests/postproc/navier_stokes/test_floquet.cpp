@@ -57,10 +57,12 @@ TEST_CASE("[ns][floquet] a steady base: the period map is e^{lambda T}, to secon
   base.cos_part = {zero}, base.sin_part = {zero};
   const std::complex<double> lead = eig.eigenvalues.front();  // rightmost, Im ≥ 0 first (D/U = 1 s)
   std::vector<double> err;
+  FloquetResult cold;
   for (int steps : {100, 200, 400}) {
     FloquetOptions o;
     o.steps = steps;
     const FloquetResult r = floquet_multipliers(p, base, beta, o);
+    if (steps == 400) cold = r;
     REQUIRE(!r.multipliers.empty());
     const std::complex<double> mu = r.multipliers[0], exact = std::exp(lead * base.T);
     const double e = std::min(std::abs(mu - exact), std::abs(mu - std::conj(exact)));
@@ -73,4 +75,48 @@ TEST_CASE("[ns][floquet] a steady base: the period map is e^{lambda T}, to secon
   // Measured: 0.0260, 0.00652, 0.00163 (|μ| = 1.25), order 2.00.
   CHECK(err[2] < 2e-3);
   CHECK(std::fabs(order - 2.0) < 0.1);
+  // Started from the mode found, Arnoldi stops at its tolerance as soon as it may (count + 2 vectors) on
+  // the same multiplier: the warm start a neighbouring Reynolds number gets in the onset search.
+  FloquetOptions warm;
+  warm.steps = 400, warm.start = cold.mode, warm.tolerance = 1e-6;
+  const FloquetResult w = floquet_multipliers(p, base, beta, warm);
+  INFO("warm start: " << w.periods << " periods, μ " << w.multipliers[0] << " (cold: " << cold.periods << ")");
+  CHECK(w.periods == warm.count + 3);  // the start's period and count + 2 vectors
+  CHECK(cold.periods == FloquetOptions{}.krylov + 1);  // no tolerance: every vector
+  CHECK(std::abs(std::abs(w.multipliers[0]) - std::abs(cold.multipliers[0])) < 1e-6);
+}
+
+TEST_CASE("[ns][floquet] canonical_phase: every shift of an orbit lands on one phase", "[ns][floquet]") {
+  // A synthetic orbit with two harmonics, ζ(t) = A cos(ωt + 0.3) + B sin(2ωt − 1.1), sampled by the
+  // Fourier accumulator from two different starting times: the two series describe one orbit, and
+  // canonical_phase must take both to the same phase, where the first harmonic of Σζ is a pure cosine.
+  const size_t nodes = 50;
+  const int N = 32;
+  const double T = 4.0, w = 2.0 * M_PI / T;
+  std::vector<double> A(nodes), B(nodes);
+  for (size_t q = 0; q < nodes; ++q) A[q] = std::sin(0.7 * double(q) + 0.2), B[q] = std::cos(1.3 * double(q));
+  auto series = [&](double t0) {
+    FourierAccumulator acc(nodes, N, 3, T);
+    for (int n = 0; n < N; ++n) {
+      const double t = t0 + n * T / N;
+      NsState s;
+      s.psi.assign(nodes, 0.0), s.zeta.assign(nodes, 0.0);
+      for (size_t q = 0; q < nodes; ++q)
+        s.zeta[q] = A[q] * std::cos(w * t + 0.3) + B[q] * std::sin(2.0 * w * t - 1.1), s.psi[q] = 0.5 * s.zeta[q];
+      acc.add(n, s);
+    }
+    return canonical_phase(acc.base());
+  };
+  const PeriodicBase a = series(0.0), b = series(1.37);
+  double C = 0.0, S = 0.0, gap = 0.0;
+  for (size_t q = 0; q < nodes; ++q) {
+    C += a.cos_part[0].zeta[q], S += a.sin_part[0].zeta[q];
+    for (size_t k = 0; k < 2; ++k)
+      gap = std::max({gap, std::fabs(a.cos_part[k].zeta[q] - b.cos_part[k].zeta[q]),
+                      std::fabs(a.sin_part[k].zeta[q] - b.sin_part[k].zeta[q]),
+                      std::fabs(a.cos_part[k].psi[q] - b.cos_part[k].psi[q])});
+  }
+  CHECK(gap < 1e-12);
+  CHECK(std::fabs(S) < 1e-12);
+  CHECK(C > 0.0);
 }
