@@ -52,14 +52,25 @@ namespace {
 
 /// The scan at Reynolds number Re (the steady state and its 2D eigenvalues first, as the CLI does).
 SpanwiseEvaluation evaluate(const NsParams& p, const std::vector<double>& beta_D, double Re,
-                            const std::string& eigensolver) {
+                            const std::string& eigensolver, const std::vector<std::vector<double>>& starts) {
   const auto t0 = std::chrono::steady_clock::now();
   const NsParams q = with_parameter(p, HopfParameter::reynolds, Re);
   SpanwiseEvaluation e;
   e.Re = Re;
-  e.scan = spanwise_stability(q, steady_stability(q, eigensolver), beta_D, eigensolver);
+  e.scan = spanwise_stability(q, steady_stability(q, eigensolver), beta_D, eigensolver, {}, starts);
   e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return e;
+}
+
+/// Arnoldi's starts at Re: the Floquet modes of the orbit scanned nearest to it (none before the first).
+std::vector<std::vector<double>> nearest_modes(const std::vector<SpanwiseEvaluation>& done, double Re) {
+  const SpanwiseEvaluation* near = nullptr;
+  for (const SpanwiseEvaluation& e : done)
+    if (e.scan.periodic && (!near || std::fabs(e.Re - Re) < std::fabs(near->Re - Re))) near = &e;
+  std::vector<std::vector<double>> starts;
+  if (near)
+    for (const SpanwisePoint& pt : near->scan.points) starts.push_back(pt.mode);
+  return starts;
 }
 
 bool defined(const SpanwiseScan& s) {
@@ -81,7 +92,7 @@ SpanwiseCritical spanwise_critical(const NsParams& p, const std::vector<double>&
   // A scan that fails (no steady state, an orbit not found) ends the search, naming its Reynolds number.
   auto run = [&](double Re) -> const SpanwiseEvaluation& {
     try {
-      c.evaluations.push_back(evaluate(p, beta_D, Re, eigensolver));
+      c.evaluations.push_back(evaluate(p, beta_D, Re, eigensolver, nearest_modes(c.evaluations, Re)));
     } catch (const std::runtime_error& e) {
       throw std::runtime_error(fmt::format("the 3D onset search at Re {:.5g}: {}", Re, e.what()));
     }

@@ -3,8 +3,11 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 #include <tuple>
 
 #include "postproc/navier_stokes/orbit.hpp"
@@ -69,6 +72,20 @@ void read_scan(SpanwiseScan& s) {
     s.verdict = fmt::format("unstable to 2D disturbances first (β = 0, growth rate {:+.4f} U/D)", s.growth);
 }
 
+/// Without a start of its own, wavenumber i starts from the mode of the nearest wavenumber already done
+/// on this orbit (none yet: empty, a random start).
+std::vector<double> nearest_done_mode(const std::vector<SpanwisePoint>& points, const std::vector<bool>& done,
+                                      size_t i, std::mutex& mutex) {
+  const std::lock_guard<std::mutex> lock(mutex);
+  size_t best = points.size();
+  for (size_t k = 0; k < points.size(); ++k)
+    if (done[k] && !points[k].mode.empty() &&
+        (best == points.size() || std::fabs(points[k].beta_D - points[i].beta_D) <
+                                      std::fabs(points[best].beta_D - points[i].beta_D)))
+      best = k;
+  return best < points.size() ? points[best].mode : std::vector<double>{};
+}
+
 }  // namespace
 
 SpanwiseScan spanwise_scan(const NsParams& p, const NsState& steady, const std::vector<double>& beta_D,
@@ -93,7 +110,8 @@ SpanwiseScan spanwise_scan(const NsParams& p, const NsState& steady, const std::
 }
 
 SpanwiseScan floquet_scan(const NsParams& p, const std::vector<double>& beta_D, double t_end,
-                          const std::function<void(const SpanwisePoint&)>& on_point) {
+                          const std::function<void(const SpanwisePoint&)>& on_point,
+                          const std::vector<std::vector<double>>& starts) {
   if (beta_D.empty()) throw std::invalid_argument("floquet_scan: no wavenumbers");
   const PolarGrid g = ns_grid(p);
   NsState start = impulsive_start(p, g);
@@ -104,24 +122,54 @@ SpanwiseScan floquet_scan(const NsParams& p, const std::vector<double>& beta_D, 
   if (!run.orbit.converged)
     throw std::runtime_error("the shedding orbit did not converge (" + run.orbit.message + ")");
   const double T = run.orbit.T, unit = stability_speed(p) / (2.0 * p.a);  // U/D in 1/s
-  const PeriodicBase base = orbit_series(p, run.orbit);
+  // Phase 0 where the wake's first harmonic peaks, the same on every orbit: a neighbouring Reynolds
+  // number's modes then start Arnoldi near the answer.
+  const PeriodicBase base = canonical_phase(orbit_series(p, run.orbit));
   SpanwiseScan s;
   s.periodic = true, s.T = T * unit;
-  FloquetOptions fo;
-  fo.krylov = 30;
-  for (double b : beta_D) {
-    const FloquetResult r = floquet_multipliers(p, base, b / (2.0 * p.a), fo);
-    SpanwisePoint pt;
-    pt.beta_D = b, pt.found = !r.multipliers.empty() && r.multipliers.front() != 0.0;
-    if (pt.found) {
-      pt.multiplier = r.multipliers.front();
-      pt.lambda = std::log(pt.multiplier) / (T * unit);
-      pt.covered = r.residuals.front() < 1e-3;  // the Ritz estimate of the leading multiplier
+  s.points.resize(beta_D.size());
+  for (size_t k = 0; k < beta_D.size(); ++k) s.points[k].beta_D = beta_D[k];
+  // The wavenumbers on the cores at once, each its own stepper; reported in order as they finish.
+  std::mutex mutex;
+  std::atomic<size_t> next{0};
+  size_t reported = 0;
+  std::vector<bool> done(beta_D.size(), false);
+  std::string error;
+  auto work = [&] {
+    for (size_t i; (i = next++) < beta_D.size();) {
+      FloquetOptions fo;
+      fo.krylov = 30, fo.tolerance = kFloquetTolerance, fo.relative = kFloquetRelative;
+      fo.start = i < starts.size() ? starts[i] : nearest_done_mode(s.points, done, i, mutex);
+      SpanwisePoint pt;
+      pt.beta_D = beta_D[i];
+      try {
+        const FloquetResult r = floquet_multipliers(p, base, beta_D[i] / (2.0 * p.a), fo);
+        pt.found = !r.multipliers.empty() && r.multipliers.front() != 0.0;
+        if (pt.found) {
+          pt.multiplier = r.multipliers.front();
+          pt.lambda = std::log(pt.multiplier) / (T * unit);
+          pt.covered = r.residuals.front() <=
+                       std::max(kFloquetTolerance, kFloquetRelative * std::fabs(1.0 - std::abs(pt.multiplier)));
+          pt.mode = r.mode;
+        }
+        pt.seconds = r.seconds, pt.solves = r.periods * r.steps;
+      } catch (const std::exception& e) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        if (error.empty()) error = fmt::format("β·D = {:g}: {}", beta_D[i], e.what());
+        continue;
+      }
+      const std::lock_guard<std::mutex> lock(mutex);
+      s.points[i] = std::move(pt), done[i] = true;
+      for (; reported < done.size() && done[reported]; ++reported)
+        if (on_point) on_point(s.points[reported]);
     }
-    pt.seconds = r.seconds, pt.solves = r.periods * r.steps;
-    s.points.push_back(pt);
-    if (on_point) on_point(pt);
-  }
+  };
+  std::vector<std::thread> pool;
+  const size_t threads = std::min<size_t>(beta_D.size(), std::max(1u, std::thread::hardware_concurrency()));
+  for (size_t t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+  if (!error.empty()) throw std::runtime_error(error);
   read_scan(s);
   return s;
 }
@@ -140,8 +188,9 @@ HopfEvaluation steady_stability(const NsParams& p, const std::string& eigensolve
 }
 
 SpanwiseScan spanwise_stability(const NsParams& p, const HopfEvaluation& steady, const std::vector<double>& beta_D,
-                                const std::string& eigensolver, const std::function<void(const SpanwisePoint&)>& on_point) {
-  if (!steady.stability.stable) return floquet_scan(p, beta_D, 300.0 * 2.0 * p.a / p.U, on_point);
+                                const std::string& eigensolver, const std::function<void(const SpanwisePoint&)>& on_point,
+                                const std::vector<std::vector<double>>& starts) {
+  if (!steady.stability.stable) return floquet_scan(p, beta_D, 300.0 * 2.0 * p.a / p.U, on_point, starts);
   StabilityOptions o = quick_stability_options();  // per wavenumber: the default shifts, no extra ones
   o.eigensolver = eigensolver;
   return spanwise_scan(p, steady.state, beta_D, o, on_point);
