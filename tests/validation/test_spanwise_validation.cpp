@@ -39,9 +39,10 @@ TEST_CASE("[validation][spanwise] Re 100: the shedding orbit is stable at mode A
   const SpanwisePoint& pt = s.points.front();
   INFO(s.verdict << "; μ " << pt.multiplier);
   REQUIRE(pt.found);
-  // |μ| = 0.42 on this grid. Far below onset the leading multipliers crowd together (the slow far-field
-  // modes), and 30 Arnoldi vectors leave the Ritz estimate above 1e-3 (`covered` false); near onset mode A
-  // stands alone and converges.
+  // |μ| = 0.44 (0.385 − 0.215i) on this grid. Far below onset the leading multipliers crowd together (the
+  // slow far-field modes) and Arnoldi is stopped once the Ritz estimate is a tenth of |1 − |μ||: the
+  // verdict needs only the sign, so |μ| is rough here (0.42 with 30 vectors); near onset mode A stands
+  // alone and converges to 1e-3.
   CHECK(std::abs(pt.multiplier) < 0.8);
   CHECK(s.T == Approx(1.0 / 0.1644).epsilon(0.05));  // St within 5% of the consensus 0.1644 on this grid
 }
