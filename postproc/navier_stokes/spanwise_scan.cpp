@@ -148,8 +148,7 @@ SpanwiseScan floquet_scan(const NsParams& p, const std::vector<double>& beta_D, 
         if (pt.found) {
           pt.multiplier = r.multipliers.front();
           pt.lambda = std::log(pt.multiplier) / (T * unit);
-          pt.covered = r.residuals.front() <=
-                       std::max(kFloquetTolerance, kFloquetRelative * std::fabs(1.0 - std::abs(pt.multiplier)));
+          pt.covered = fo.met(pt.multiplier, r.residuals.front());
           pt.mode = r.mode;
         }
         pt.seconds = r.seconds, pt.solves = r.periods * r.steps;

@@ -22,6 +22,8 @@
 // eigenvalues (the first test). At β = 0 the orbit's own phase mode would have μ = 1 if the orbit solved
 // these equations; it solves the (ψ, ζ) model's, a second discretisation, and the phase multiplier comes
 // out below 1 (README).
+#include <algorithm>
+#include <cmath>
 #include <complex>
 #include <string>
 #include <vector>
@@ -69,6 +71,10 @@ struct FloquetOptions {
   /// ≤ relative·|1 − |μ|| (a fraction of its distance from neutral: a growth rate far from 0 need not be
   /// known as closely); 0 and 0: never.
   double tolerance = 0.0, relative = 0.0;
+  /// Whether a multiplier μ with Ritz estimate `residual` meets that: residual ≤ max(tolerance, relative·|1 − |μ||).
+  bool met(std::complex<double> mu, double residual) const {
+    return residual <= std::max(tolerance, relative * std::fabs(1.0 - std::abs(mu)));
+  }
   /// Arnoldi's start (before its first period), e.g. the leading mode of a neighbouring problem on the same
   /// grid; empty or of another size: a random vector (seed).
   std::vector<double> start;

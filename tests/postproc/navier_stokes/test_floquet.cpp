@@ -120,3 +120,14 @@ TEST_CASE("[ns][floquet] canonical_phase: every shift of an orbit lands on one p
   CHECK(std::fabs(S) < 1e-12);
   CHECK(C > 0.0);
 }
+
+TEST_CASE("[ns][floquet] FloquetOptions::met: the absolute tolerance near neutral, the relative one far from it",
+          "[ns][floquet]") {
+  FloquetOptions o;
+  o.tolerance = 1e-3, o.relative = 0.1;
+  CHECK(o.met(1.0, 9e-4));
+  CHECK(!o.met(1.0, 2e-3));  // |μ| = 1: only the absolute tolerance
+  CHECK(o.met(std::complex<double>(0.3, 0.4), 0.04));  // |μ| = 0.5: a tenth of 0.5
+  CHECK(!o.met(std::complex<double>(0.3, 0.4), 0.06));
+  CHECK(!FloquetOptions{}.met(1.0, 1e-9));  // no tolerance: never met
+}
