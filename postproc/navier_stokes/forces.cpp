@@ -11,13 +11,14 @@ namespace magnus {
 
 namespace {
 
-/// ∂ζ/∂ξ on the wall ring, one-sided second order (any ξ spacing), 1/s.
+/// ∂ζ/∂ξ on the wall ring, one-sided from the first kWallRings rings (order kWallRings − 1, any ξ
+/// spacing; fewer on a grid with fewer rings), 1/s.
 std::vector<double> wall_zeta_xi(const PolarGrid& g, const NsState& s) {
-  const int n = g.n_theta;
-  const std::array<double, 3> w = one_sided_weights(g.d_xi(0), g.d_xi(1));
-  std::vector<double> z_xi(n);
-  for (int j = 0; j < n; ++j)
-    z_xi[j] = w[0] * s.zeta[j] + w[1] * s.zeta[size_t(n) + j] + w[2] * s.zeta[size_t(2 * n) + j];
+  const int n = g.n_theta, m = std::min(kWallRings, g.n_r);
+  const std::vector<double> w = fd_weights(g.xi[0], std::vector<double>(g.xi.begin(), g.xi.begin() + m), 1);
+  std::vector<double> z_xi(n, 0.0);
+  for (int k = 0; k < m; ++k)
+    for (int j = 0; j < n; ++j) z_xi[j] += w[size_t(k)] * s.zeta[size_t(k) * n + j];
   return z_xi;
 }
 

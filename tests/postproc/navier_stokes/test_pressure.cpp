@@ -138,11 +138,12 @@ TEST_CASE("[ns] pressure field: Kovasznay's exact Navier-Stokes flow, order 2", 
 
 TEST_CASE("[ns] pressure field: a real state's wall values match the wall formula dp/dtheta = mu zeta_xi",
           "[ns]") {
-  // Re 40, α = 0.5, impulsive start, 4 convective times on n_θ = 64 and 128 (R = 8a): the field's wall
-  // values (mean removed) against viscous_surface's θ-integral of μζ_ξ, two discretisations of the same
-  // state; the gap shrinks at the scheme's order (measured 1.57, 1.84, 1.88 from n_θ = 32 to 256).
+  // Re 40, α = 0.5, impulsive start, 4 convective times on n_θ = 64, 128 and 256 (R = 8a): the field's
+  // wall values (mean removed) against viscous_surface's θ-integral of μζ_ξ, two discretisations of the
+  // same state; the gap shrinks at the scheme's order (measured 1.91, 1.80, 1.90 from n_θ = 32 to 256; the
+  // field's wall slope is three-ring, the surface's five-ring, so the gap is not monotone in its order).
   std::vector<double> gap;
-  for (int n : {64, 128}) {
+  for (int n : {64, 128, 256}) {
     NsParams p;
     p.a = 0.5, p.U = 1.0, p.nu = p.U * 2.0 * p.a / 40.0, p.omega = 0.5 * p.U / p.a;
     p.outer_over_a = 8.0, p.n_theta = n, p.threads = 1;
@@ -163,10 +164,10 @@ TEST_CASE("[ns] pressure field: a real state's wall values match the wall formul
     }
     const double q = 0.5 * kRho * p.U * p.U;
     WARN("n_theta " << n << ": wall pressure gap " << d / q << " of ½ρU² (max |p − p̄| " << size / q << ")");
-    CHECK(d < (n == 64 ? 0.08 : 0.03) * size);
+    CHECK(d < (n == 64 ? 0.08 : n == 128 ? 0.03 : 0.008) * size);
     gap.push_back(d / q);
   }
-  const double order = observed_order(gap[0], gap[1]);
+  const double order = observed_order(gap[1], gap[2]);
   WARN("observed order of the wall pressure gap " << order);
   CHECK(order == Approx(2.0).margin(0.2));
 }
