@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 
 #include "postproc/navier_stokes/forces.hpp"
 
@@ -150,6 +153,34 @@ NsState odd_part(const PolarGrid& g, NsState s) {
 
 }  // namespace
 
+namespace {
+
+/// Newton on the grid of q from `start` (a state on that grid), and the level's figures.
+SteadyLevel solve_level(const NsParams& q, bool mirror, NsState start, const NewtonOptions& no) {
+  SteadyJacobian jac(q, mirror);
+  const PolarGrid& g = jac.grid();
+  if (mirror) start = odd_part(g, std::move(start));
+  SteadyLevel lv;
+  lv.n_theta = g.n_theta, lv.n_r = g.n_r;
+  lv.h = std::sqrt(g.d_theta * std::log(g.r[1] / g.r[0]));
+  lv.newton = solve_steady(jac, start, no);
+  if (!lv.newton.converged) return lv;
+  const ViscousForces f = viscous_forces(g, q, 1.0, lv.newton.state);
+  lv.C_D = f.C_D.value_or(0.0), lv.C_L = f.C_L.value_or(0.0);
+  if (q.U > 0.0) lv.recirculation = recirculation_length(g, lv.newton.state);
+  return lv;
+}
+
+/// Joins a thread however the scope is left.
+struct Joiner {
+  std::thread& t;
+  ~Joiner() {
+    if (t.joinable()) t.join();
+  }
+};
+
+}  // namespace
+
 SteadyStudy steady_study(const NsParams& p, const SteadyStudyOptions& o, const NsState* guess) {
   const auto t0 = std::chrono::steady_clock::now();
   if (o.scales.empty() || o.scales.back() != 1.0)
@@ -158,50 +189,90 @@ SteadyStudy steady_study(const NsParams& p, const SteadyStudyOptions& o, const N
     if (!(o.scales[k] > o.scales[k - 1])) throw std::invalid_argument("steady study: grid scales must increase");
   SteadyStudy st;
   st.mirror = o.mirror && p.omega == 0.0 && p.U > 0.0;  // every level has the case's ω and U
-  NsState prev;
-  PolarGrid prev_grid;
-  bool have_prev = false;
-  std::string skipped;
+  std::vector<size_t> ks;  // the levels solved (the coarse ones too coarse to say anything left out)
   for (size_t k = 0; k < o.scales.size(); ++k) {
-    const bool last = k + 1 == o.scales.size();
     const NsParams q = level_params(p, o.scales[k]);
-    if (!last && (q.n_theta < kMinStudyTheta || ns_grid(q).n_r < kMinStudyRings)) continue;  // too coarse
-    SteadyJacobian jac(q, st.mirror);
-    const PolarGrid& g = jac.grid();
-    NsState start = have_prev ? interpolate_state(prev_grid, prev, g)
-                    : guess && k == 0 ? *guess
-                                      : potential_guess(q, g);
-    if (st.mirror) start = odd_part(g, std::move(start));
+    if (k + 1 < o.scales.size() && (q.n_theta < kMinStudyTheta || ns_grid(q).n_r < kMinStudyRings)) continue;
+    ks.push_back(k);
+  }
+  // The last two levels side by side, both from the level before them, when there are two threads.
+  const size_t together = o.overlap && p.threads >= 2 && ks.size() >= 3 ? ks.size() - 2 : ks.size();
+  std::mutex report;
+  auto options = [&](size_t k) {
     NewtonOptions no = o.newton;
     no.on_iteration = nullptr;
     if (st.levels.empty() && o.plain_first) no.chord_ratio = 0.0;
-    if (o.on_iteration) no.on_iteration = [&o, k](int it, double r) { o.on_iteration(int(k), it, r); };
-    SteadyLevel lv;
-    lv.n_theta = g.n_theta, lv.n_r = g.n_r;
-    lv.h = std::sqrt(g.d_theta * std::log(g.r[1] / g.r[0]));
-    lv.newton = solve_steady(jac, start, no);
+    if (o.on_iteration)
+      no.on_iteration = [&o, &report, k](int it, double r) {
+        const std::lock_guard<std::mutex> lock(report);
+        o.on_iteration(int(k), it, r);
+      };
+    return no;
+  };
+  NsState prev;
+  PolarGrid prev_grid;
+  bool have_prev = false;
+  auto start_on = [&](size_t k, const NsParams& q) {
+    const PolarGrid g = ns_grid(q);
+    return have_prev ? interpolate_state(prev_grid, prev, g) : guess && k == 0 ? *guess : potential_guess(q, g);
+  };
+  std::string skipped;
+  // Takes level k's result: false when the study stops there (the case's own grid did not converge).
+  auto accept = [&](size_t k, SteadyLevel lv) {
+    const bool last = k + 1 == o.scales.size();
+    const NsParams q = level_params(p, o.scales[k]);
     if (!lv.newton.converged && !last) {  // a coarse grid without a steady state: the next from scratch
-      skipped += fmt::format("{}{} x {}", skipped.empty() ? "" : ", ", g.n_theta, g.n_r);
+      skipped += fmt::format("{}{} x {}", skipped.empty() ? "" : ", ", lv.n_theta, lv.n_r);
       have_prev = false;
-      continue;
+      return true;
     }
     if (!lv.newton.converged) {
-      st.message = fmt::format("grid {} x {} (level {} of {}): {}", g.n_theta, g.n_r, k + 1, o.scales.size(),
+      st.message = fmt::format("grid {} x {} (level {} of {}): {}", lv.n_theta, lv.n_r, k + 1, o.scales.size(),
                                lv.newton.message);
       st.levels.push_back(std::move(lv));
-      st.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      return st;
+      return false;
     }
-    const ViscousForces f = viscous_forces(g, q, 1.0, lv.newton.state);
-    lv.C_D = f.C_D.value_or(0.0), lv.C_L = f.C_L.value_or(0.0);
-    if (q.U > 0.0) lv.recirculation = recirculation_length(g, lv.newton.state);
     if (!last)
-      prev = std::move(lv.newton.state), have_prev = true;
+      prev = std::move(lv.newton.state), prev_grid = ns_grid(q), have_prev = true;
     else
       st.state = std::move(lv.newton.state);
     lv.newton.state = NsState{};
-    prev_grid = g;
     st.levels.push_back(std::move(lv));
+    return true;
+  };
+  auto stamp = [&] { st.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  for (size_t u = 0; u < together; ++u) {
+    const NsParams q = level_params(p, o.scales[ks[u]]);
+    if (!accept(ks[u], solve_level(q, st.mirror, start_on(ks[u], q), options(ks[u])))) {
+      stamp();
+      return st;
+    }
+  }
+  if (together < ks.size()) {
+    const size_t ka = ks[together], kb = ks[together + 1];
+    const NsParams qa = level_params(p, o.scales[ka]), qb = level_params(p, o.scales[kb]);
+    SteadyLevel a;
+    std::exception_ptr failed;
+    NsState start_a = start_on(ka, qa);
+    const NewtonOptions no_a = options(ka);
+    std::thread side([&] {
+      try {
+        a = solve_level(qa, st.mirror, std::move(start_a), no_a);
+      } catch (...) {
+        failed = std::current_exception();
+      }
+    });
+    SteadyLevel b;
+    {
+      const Joiner join{side};
+      b = solve_level(qb, st.mirror, start_on(kb, qb), options(kb));
+    }
+    if (failed) std::rethrow_exception(failed);
+    accept(ka, std::move(a));
+    if (!accept(kb, std::move(b))) {
+      stamp();
+      return st;
+    }
   }
   st.converged = true;
   if (p.U > 0.0 && st.levels.size() >= 2) {

@@ -5,6 +5,8 @@
 #include <dlfcn.h>
 #include <umfpack.h>
 
+#include <mutex>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -114,17 +116,30 @@ long symbolic_in_grid_order(long n, const std::vector<long>& q,
   return status;
 }
 
+namespace {
+
+/// How many SingleThreadBlas live, and the thread count the first one found (restored by the last).
+std::mutex blas_mutex;
+int blas_holders = 0;
+int blas_saved = 1;
+
+}  // namespace
+
 SingleThreadBlas::SingleThreadBlas() {
   get_ = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
   set_ = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
-  if (get_ && set_) {
-    saved_ = get_();
-    if (saved_ != 1) set_(1);
+  if (!get_ || !set_) return;
+  const std::lock_guard<std::mutex> lock(blas_mutex);
+  if (blas_holders++ == 0) {
+    blas_saved = get_();
+    if (blas_saved != 1) set_(1);
   }
 }
 
 SingleThreadBlas::~SingleThreadBlas() {
-  if (get_ && set_ && saved_ > 1) set_(saved_);
+  if (!get_ || !set_) return;
+  const std::lock_guard<std::mutex> lock(blas_mutex);
+  if (--blas_holders == 0 && blas_saved > 1) set_(blas_saved);
 }
 
 }  // namespace magnus

@@ -42,7 +42,8 @@ long symbolic_in_grid_order(long n, const std::vector<long>& q,
 /// OpenBLAS on one thread while it lives (restored after): UMFPACK's frontal matrices are small. On the
 /// shared 2-core machine the default grid's factorisation (90625 unknowns, 3.1 GFlop) took 1.0–1.6 s with
 /// OPENBLAS_NUM_THREADS=1 against 1.4–2.3 s with 2 (same CPU seconds: the second thread only waits).
-/// Found at run time, so any other BLAS is left alone.
+/// Found at run time, so any other BLAS is left alone. Nested or on several threads at once, the first
+/// sets one thread and the last restores the count.
 class SingleThreadBlas {
  public:
   SingleThreadBlas();
@@ -53,7 +54,6 @@ class SingleThreadBlas {
  private:
   int (*get_)() = nullptr;
   void (*set_)(int) = nullptr;
-  int saved_ = 1;
 };
 
 }  // namespace magnus

@@ -146,6 +146,36 @@ TEST_CASE("[steady] the grid study: sequenced Newton gives the direct solve's st
   CHECK_THROWS_AS(steady_study(p, bad), std::invalid_argument);
 }
 
+TEST_CASE("[steady] on two threads the last two levels overlap and find the same figures", "[steady]") {
+  NsParams p;
+  p.a = 0.5, p.U = 1.0, p.nu = 1.0 / 20.0, p.omega = 2.0 * 0.3;  // Re 20, α 0.3
+  p.n_theta = 64, p.outer_over_a = 20.0, p.threads = 2;
+  SteadyStudyOptions o;
+  std::vector<int> levels_reported;
+  o.on_iteration = [&levels_reported](int level, int, double) { levels_reported.push_back(level); };
+  const SteadyStudy both = steady_study(p, o);
+  o.overlap = false;
+  const SteadyStudy one = steady_study(p, o);
+  INFO(both.message << " | " << one.message);
+  REQUIRE((both.converged && one.converged));
+  REQUIRE(both.levels.size() == 4);
+  REQUIRE(one.levels.size() == 4);
+  for (size_t k = 0; k < 4; ++k) {
+    CHECK(both.levels[k].n_theta == one.levels[k].n_theta);
+    CHECK(both.levels[k].C_D == Approx(one.levels[k].C_D).epsilon(1e-9));
+    CHECK(both.levels[k].C_L == Approx(one.levels[k].C_L).epsilon(1e-9));
+  }
+  // The finest level started from the second, not the third: its first residual is larger.
+  CHECK(both.levels[3].newton.residuals.front() > one.levels[3].newton.residuals.front());
+  CHECK(both.levels[2].newton.residuals == one.levels[2].newton.residuals);
+  REQUIRE((both.C_D && one.C_D));
+  CHECK(both.C_D->value == Approx(one.C_D->value).epsilon(1e-9));
+  // Every level reported its residuals, the overlapping ones from two threads.
+  for (int level = 0; level < 4; ++level)
+    CHECK(std::count(levels_reported.begin(), levels_reported.end(), level) >=
+          int(both.levels[size_t(level)].newton.residuals.size()));
+}
+
 TEST_CASE("[steady] without spin the study solves the mirror half, and finds the whole grid's figures",
           "[steady]") {
   NsParams p;

@@ -83,7 +83,7 @@ TEST_CASE("[ns][newton] the analytic Jacobian is the derivative of the residual"
     NsWallClosure closure = NsWallClosure::thom;
   };
   const NsWallClosure jensen = NsWallClosure::jensen;
-  for (const auto& [stokes, order, order_xi, q, closure] :
+  for (const auto& [stokes, order, order_xi, refinement, closure] :
        {Variant{false, 2, 2, 1.0}, Variant{true, 2, 2, 1.0}, Variant{false, 4, 2, 1.0},
         Variant{false, 2, 4, 1.0}, Variant{false, 4, 4, 1.0}, Variant{false, 2, 2, 4.0},
         Variant{false, 4, 4, 4.0}, Variant{false, 2, 2, 1.0, jensen}, Variant{false, 2, 2, 4.0, jensen}}) {
@@ -91,7 +91,7 @@ TEST_CASE("[ns][newton] the analytic Jacobian is the derivative of the residual"
     p.stokes = stokes;
     p.wall_closure = closure;
     p.advection_order = order, p.advection_order_xi = order_xi;
-    p.wall_refinement = q, p.wall_layer = 0.5;
+    p.wall_refinement = refinement, p.wall_layer = 0.5;
     SteadyJacobian jac(p);
     const PolarGrid& g = jac.grid();
     NsState s = potential_guess(p, g);
@@ -112,7 +112,7 @@ TEST_CASE("[ns][newton] the analytic Jacobian is the derivative of the residual"
     for (size_t q = 0; q < x.size(); ++q)
       err = std::max(err, std::fabs((Fp[q] - Fm[q]) / (2.0 * eps) - Jv[q]));
     INFO("stokes " << stokes << ", advection order " << order << ", in xi " << order_xi << ", wall refinement "
-                   << q << ", Jensen's wall " << (closure == jensen) << ": |J v − FD| = " << err << ", |J v| = " << max_abs(Jv));
+                   << refinement << ", Jensen's wall " << (closure == jensen) << ": |J v − FD| = " << err << ", |J v| = " << max_abs(Jv));
     CHECK(err < 1e-7 * max_abs(Jv));
     // The factors solve the system they were made from (and its transpose).
     const std::vector<double> y = jac.solve(Jv);
