@@ -195,8 +195,9 @@ SteadyStudy steady_study(const NsParams& p, const SteadyStudyOptions& o, const N
     if (k + 1 < o.scales.size() && (q.n_theta < kMinStudyTheta || ns_grid(q).n_r < kMinStudyRings)) continue;
     ks.push_back(k);
   }
-  // The last two levels side by side, both from the level before them, when there are two threads.
-  const size_t together = o.overlap && p.threads >= 2 && ks.size() >= 3 ? ks.size() - 2 : ks.size();
+  // The last two levels side by side, both from the level before them, on a machine with two cores.
+  const bool two_cores = std::thread::hardware_concurrency() >= 2;
+  const size_t together = o.overlap && two_cores && ks.size() >= 3 ? ks.size() - 2 : ks.size();
   std::mutex report;
   auto options = [&](size_t k) {
     NewtonOptions no = o.newton;

@@ -31,10 +31,10 @@ struct SteadyStudyOptions {
   /// the same steady state to round-off for about a third of the cost. Off: the whole grid (the symmetric
   /// state all the same; Newton does not break the symmetry).
   bool mirror = true;
-  /// With two threads (NsParams::threads ≥ 2) and three levels or more, solve the last two side by side,
-  /// both started from the level before them: the finest level, most of the cost, no longer waits for the
-  /// next-finest (Re 40, 288 × 450: the study in 1.9 s instead of 2.5 s). Off: one after another, each
-  /// from the one before.
+  /// On a machine with two cores or more and with three levels or more, solve the last two side by
+  /// side, both started from the level before them, as a run's companion uses the second core: the
+  /// finest level, most of the cost, no longer waits for the next-finest (Re 40, 288 × 450: the study in
+  /// 2.2 s instead of 3.1 s). Off: one after another, each from the one before.
   bool overlap = true;
   /// After each residual: (level, iteration, scaled max-norm residual); iteration 0 = the level's guess.
   /// Called from two threads when the levels overlap, never at once.
