@@ -122,7 +122,11 @@ TEST_CASE(
   compare("|C_L|", std::fabs(C_L.value), C_L.error, 5.48, "SBD 2002");
   compare("C_D", C_D.value, C_D.error, 0.46, "SBD 2002");
   CHECK(C_D.observed);
-  CHECK(C_D.order == Approx(2.0).margin(0.1));  // second order in the rings
+  // Second order in the rings at least. With the five-ring wall derivative C_D's differences shrink
+  // faster on these grids (observed 2.82 over 236/471/941, 2.91 over 333/471/666): the field's h² error
+  // and the derivative's higher terms nearly cancel here. C_L shows the field's order (1.86, 1.89).
+  CHECK(C_D.order >= 1.9);
+  CHECK(C_L.order == Approx(2.0).margin(0.15));
   CHECK(C_D.error < 1e-3);
   CHECK(C_L.value < 0.0);  // counter-clockwise spin lifts towards −y
   CHECK(std::fabs(C_L.value) == Approx(5.48).epsilon(0.02));
