@@ -179,6 +179,108 @@ struct Joiner {
   }
 };
 
+/// A study's levels in sequence: each starts from the last converged level's state (or the guess, or the
+/// potential flow), and its result is taken into the study.
+struct Sequencer {
+  const NsParams& p;
+  const SteadyStudyOptions& o;
+  const NsState* guess;
+  SteadyStudy& st;
+  std::mutex report;  // on_iteration from two threads, one call at a time
+  NsState prev;       // the last converged level's state, on prev_grid
+  PolarGrid prev_grid;
+  bool have_prev = false;
+  std::string skipped;  // the coarse levels without a steady state
+
+  NsParams level(size_t k) const { return level_params(p, o.scales[k]); }
+
+  NewtonOptions options(size_t k) {
+    NewtonOptions no = o.newton;
+    no.on_iteration = nullptr;
+    if (st.levels.empty() && o.plain_first) no.chord_ratio = 0.0;
+    if (o.on_iteration)
+      no.on_iteration = [this, k](int it, double r) {
+        const std::lock_guard<std::mutex> lock(report);
+        o.on_iteration(int(k), it, r);
+      };
+    return no;
+  }
+
+  NsState start_on(size_t k, const NsParams& q) const {
+    const PolarGrid g = ns_grid(q);
+    return have_prev ? interpolate_state(prev_grid, prev, g) : guess && k == 0 ? *guess : potential_guess(q, g);
+  }
+
+  /// Takes level k's result: false when the study stops there (the case's own grid did not converge).
+  bool accept(size_t k, SteadyLevel lv) {
+    const bool last = k + 1 == o.scales.size();
+    if (!lv.newton.converged && !last) {  // a coarse grid without a steady state: the next from scratch
+      skipped += fmt::format("{}{} x {}", skipped.empty() ? "" : ", ", lv.n_theta, lv.n_r);
+      have_prev = false;
+      return true;
+    }
+    if (!lv.newton.converged) {
+      st.message = fmt::format("grid {} x {} (level {} of {}): {}", lv.n_theta, lv.n_r, k + 1, o.scales.size(),
+                               lv.newton.message);
+      st.levels.push_back(std::move(lv));
+      return false;
+    }
+    if (!last)
+      prev = std::move(lv.newton.state), prev_grid = ns_grid(level(k)), have_prev = true;
+    else
+      st.state = std::move(lv.newton.state);
+    lv.newton.state = NsState{};
+    st.levels.push_back(std::move(lv));
+    return true;
+  }
+
+  bool solve_in_turn(size_t k) {
+    const NsParams q = level(k);
+    return accept(k, solve_level(q, st.mirror, start_on(k, q), options(k)));
+  }
+
+  /// Levels ka < kb at once, both from the current start: ka on a second thread.
+  bool solve_together(size_t ka, size_t kb) {
+    const NsParams qa = level(ka), qb = level(kb);
+    SteadyLevel a, b;
+    std::exception_ptr failed;
+    NsState start_a = start_on(ka, qa);
+    const NewtonOptions no_a = options(ka);
+    std::thread side([&] {
+      try {
+        a = solve_level(qa, st.mirror, std::move(start_a), no_a);
+      } catch (...) {
+        failed = std::current_exception();
+      }
+    });
+    {
+      const Joiner join{side};
+      b = solve_level(qb, st.mirror, start_on(kb, qb), options(kb));
+    }
+    if (failed) std::rethrow_exception(failed);
+    accept(ka, std::move(a));  // not the last level: never stops the study
+    return accept(kb, std::move(b));
+  }
+};
+
+/// The Richardson values and the one-line account of a study whose every level converged.
+void conclude(SteadyStudy& st, const NsParams& p, const std::string& skipped) {
+  st.converged = true;
+  if (p.U > 0.0 && st.levels.size() >= 2) {
+    std::vector<double> h, cd, cl, lr;
+    for (const SteadyLevel& lv : st.levels)
+      h.push_back(lv.h), cd.push_back(lv.C_D), cl.push_back(lv.C_L), lr.push_back(lv.recirculation);
+    st.C_D = richardson(cd, h);
+    st.C_L = richardson(cl, h);
+    st.recirculation = richardson(lr, h);
+  }
+  int steps = 0, factors = 0;
+  for (const SteadyLevel& lv : st.levels) steps += lv.newton.iterations, factors += lv.newton.factorisations;
+  st.message = fmt::format("{} grids, {} Newton steps ({} factorisations)", st.levels.size(), steps, factors);
+  if (st.mirror) st.message += ", each on the mirror-symmetric half";
+  if (!skipped.empty()) st.message += "; not converged on " + skipped + ", left out";
+}
+
 }  // namespace
 
 SteadyStudy steady_study(const NsParams& p, const SteadyStudyOptions& o, const NsState* guess) {
@@ -198,97 +300,11 @@ SteadyStudy steady_study(const NsParams& p, const SteadyStudyOptions& o, const N
   // The last two levels side by side, both from the level before them, on a machine with two cores.
   const bool two_cores = std::thread::hardware_concurrency() >= 2;
   const size_t together = o.overlap && two_cores && ks.size() >= 3 ? ks.size() - 2 : ks.size();
-  std::mutex report;
-  auto options = [&](size_t k) {
-    NewtonOptions no = o.newton;
-    no.on_iteration = nullptr;
-    if (st.levels.empty() && o.plain_first) no.chord_ratio = 0.0;
-    if (o.on_iteration)
-      no.on_iteration = [&o, &report, k](int it, double r) {
-        const std::lock_guard<std::mutex> lock(report);
-        o.on_iteration(int(k), it, r);
-      };
-    return no;
-  };
-  NsState prev;
-  PolarGrid prev_grid;
-  bool have_prev = false;
-  auto start_on = [&](size_t k, const NsParams& q) {
-    const PolarGrid g = ns_grid(q);
-    return have_prev ? interpolate_state(prev_grid, prev, g) : guess && k == 0 ? *guess : potential_guess(q, g);
-  };
-  std::string skipped;
-  // Takes level k's result: false when the study stops there (the case's own grid did not converge).
-  auto accept = [&](size_t k, SteadyLevel lv) {
-    const bool last = k + 1 == o.scales.size();
-    const NsParams q = level_params(p, o.scales[k]);
-    if (!lv.newton.converged && !last) {  // a coarse grid without a steady state: the next from scratch
-      skipped += fmt::format("{}{} x {}", skipped.empty() ? "" : ", ", lv.n_theta, lv.n_r);
-      have_prev = false;
-      return true;
-    }
-    if (!lv.newton.converged) {
-      st.message = fmt::format("grid {} x {} (level {} of {}): {}", lv.n_theta, lv.n_r, k + 1, o.scales.size(),
-                               lv.newton.message);
-      st.levels.push_back(std::move(lv));
-      return false;
-    }
-    if (!last)
-      prev = std::move(lv.newton.state), prev_grid = ns_grid(q), have_prev = true;
-    else
-      st.state = std::move(lv.newton.state);
-    lv.newton.state = NsState{};
-    st.levels.push_back(std::move(lv));
-    return true;
-  };
-  auto stamp = [&] { st.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
-  for (size_t u = 0; u < together; ++u) {
-    const NsParams q = level_params(p, o.scales[ks[u]]);
-    if (!accept(ks[u], solve_level(q, st.mirror, start_on(ks[u], q), options(ks[u])))) {
-      stamp();
-      return st;
-    }
-  }
-  if (together < ks.size()) {
-    const size_t ka = ks[together], kb = ks[together + 1];
-    const NsParams qa = level_params(p, o.scales[ka]), qb = level_params(p, o.scales[kb]);
-    SteadyLevel a;
-    std::exception_ptr failed;
-    NsState start_a = start_on(ka, qa);
-    const NewtonOptions no_a = options(ka);
-    std::thread side([&] {
-      try {
-        a = solve_level(qa, st.mirror, std::move(start_a), no_a);
-      } catch (...) {
-        failed = std::current_exception();
-      }
-    });
-    SteadyLevel b;
-    {
-      const Joiner join{side};
-      b = solve_level(qb, st.mirror, start_on(kb, qb), options(kb));
-    }
-    if (failed) std::rethrow_exception(failed);
-    accept(ka, std::move(a));
-    if (!accept(kb, std::move(b))) {
-      stamp();
-      return st;
-    }
-  }
-  st.converged = true;
-  if (p.U > 0.0 && st.levels.size() >= 2) {
-    std::vector<double> h, cd, cl, lr;
-    for (const SteadyLevel& lv : st.levels)
-      h.push_back(lv.h), cd.push_back(lv.C_D), cl.push_back(lv.C_L), lr.push_back(lv.recirculation);
-    st.C_D = richardson(cd, h);
-    st.C_L = richardson(cl, h);
-    st.recirculation = richardson(lr, h);
-  }
-  int steps = 0, factors = 0;
-  for (const SteadyLevel& lv : st.levels) steps += lv.newton.iterations, factors += lv.newton.factorisations;
-  st.message = fmt::format("{} grids, {} Newton steps ({} factorisations)", st.levels.size(), steps, factors);
-  if (st.mirror) st.message += ", each on the mirror-symmetric half";
-  if (!skipped.empty()) st.message += "; not converged on " + skipped + ", left out";
+  Sequencer seq{p, o, guess, st, {}, {}, {}, false, {}};
+  bool going = true;
+  for (size_t u = 0; going && u < together; ++u) going = seq.solve_in_turn(ks[u]);
+  if (going && together < ks.size()) going = seq.solve_together(ks[together], ks[together + 1]);
+  if (going) conclude(st, p, seq.skipped);
   st.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return st;
 }
