@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <exception>
+#include <future>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -171,14 +171,6 @@ SteadyLevel solve_level(const NsParams& q, bool mirror, NsState start, const New
   return lv;
 }
 
-/// Joins a thread however the scope is left.
-struct Joiner {
-  std::thread& t;
-  ~Joiner() {
-    if (t.joinable()) t.join();
-  }
-};
-
 /// A study's levels in sequence: each starts from the last converged level's state (or the guess, or the
 /// potential flow), and its result is taken into the study.
 struct Sequencer {
@@ -239,26 +231,15 @@ struct Sequencer {
     return accept(k, solve_level(q, st.mirror, start_on(k, q), options(k)));
   }
 
-  /// Levels ka < kb at once, both from the current start: ka on a second thread.
+  /// Levels ka < kb at once, both from the current start: ka beside, as a run's companion is.
   bool solve_together(size_t ka, size_t kb) {
     const NsParams qa = level(ka), qb = level(kb);
-    SteadyLevel a, b;
-    std::exception_ptr failed;
-    NsState start_a = start_on(ka, qa);
-    const NewtonOptions no_a = options(ka);
-    std::thread side([&] {
-      try {
-        a = solve_level(qa, st.mirror, std::move(start_a), no_a);
-      } catch (...) {
-        failed = std::current_exception();
-      }
-    });
-    {
-      const Joiner join{side};
-      b = solve_level(qb, st.mirror, start_on(kb, qb), options(kb));
-    }
-    if (failed) std::rethrow_exception(failed);
-    accept(ka, std::move(a));  // not the last level: never stops the study
+    std::future<SteadyLevel> side =
+        std::async(std::launch::async, [qa, mirror = st.mirror, start = start_on(ka, qa), no = options(ka)]() mutable {
+          return solve_level(qa, mirror, std::move(start), no);
+        });
+    SteadyLevel b = solve_level(qb, st.mirror, start_on(kb, qb), options(kb));  // a throw waits for side
+    accept(ka, side.get());  // not the last level: never stops the study
     return accept(kb, std::move(b));
   }
 };

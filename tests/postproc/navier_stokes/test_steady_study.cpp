@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <cmath>
+#include <thread>
 #include <vector>
 
 #include "io/report_steady.hpp"
@@ -146,10 +147,10 @@ TEST_CASE("[steady] the grid study: sequenced Newton gives the direct solve's st
   CHECK_THROWS_AS(steady_study(p, bad), std::invalid_argument);
 }
 
-TEST_CASE("[steady] on two threads the last two levels overlap and find the same figures", "[steady]") {
+TEST_CASE("[steady] on two cores the last two levels overlap and find the same figures", "[steady]") {
   NsParams p;
   p.a = 0.5, p.U = 1.0, p.nu = 1.0 / 20.0, p.omega = 2.0 * 0.3;  // Re 20, α 0.3
-  p.n_theta = 64, p.outer_over_a = 20.0, p.threads = 2;
+  p.n_theta = 64, p.outer_over_a = 20.0;
   SteadyStudyOptions o;
   std::vector<int> levels_reported;
   o.on_iteration = [&levels_reported](int level, int, double) { levels_reported.push_back(level); };
@@ -165,8 +166,11 @@ TEST_CASE("[steady] on two threads the last two levels overlap and find the same
     CHECK(both.levels[k].C_D == Approx(one.levels[k].C_D).epsilon(1e-9));
     CHECK(both.levels[k].C_L == Approx(one.levels[k].C_L).epsilon(1e-9));
   }
-  // The finest level started from the second, not the third: its first residual is larger.
-  CHECK(both.levels[3].newton.residuals.front() > one.levels[3].newton.residuals.front());
+  // With two cores the finest level started from the second, not the third: its first residual is larger.
+  if (std::thread::hardware_concurrency() >= 2)
+    CHECK(both.levels[3].newton.residuals.front() > one.levels[3].newton.residuals.front());
+  else
+    CHECK(both.levels[3].newton.residuals == one.levels[3].newton.residuals);
   CHECK(both.levels[2].newton.residuals == one.levels[2].newton.residuals);
   REQUIRE((both.C_D && one.C_D));
   CHECK(both.C_D->value == Approx(one.C_D->value).epsilon(1e-9));
