@@ -6,16 +6,15 @@
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
-#include <thread>
 
 #include "postproc/navier_stokes/continuation_row.hpp"
 #include "postproc/navier_stokes/run.hpp"
 #include "postproc/navier_stokes/unsteady.hpp"
+#include "postproc/navier_stokes/work_queue.hpp"
 
 namespace magnus {
 
@@ -138,7 +137,6 @@ NsMap ns_map(const Case& c, const NsMapOptions& o) {
   std::vector<std::vector<NsMapPoint>> results(rows.size());
   std::vector<std::string> errors(rows.size());
   std::mutex mu;
-  std::atomic<size_t> next{0};
   auto done = [&](const NsMapPoint& m) {
     if (!o.on_point) return;
     std::lock_guard<std::mutex> lock(mu);
@@ -160,19 +158,13 @@ NsMap ns_map(const Case& c, const NsMapOptions& o) {
       if (first) state = std::move(first);
     }
   } else {
-    auto work = [&] {
-      for (size_t i; (i = next++) < rows.size();) {
-        try {
-          results[i] = solve_row(c, o, rows[i], map.reynolds[size_t(rows[i])], done);
-        } catch (const std::exception& e) {
-          errors[i] = fmt::format("Re = {:g}: {}", map.reynolds[size_t(rows[i])], e.what());
-        }
+    for_each_index(rows.size(), size_t(map.threads), [&](size_t i) {
+      try {
+        results[i] = solve_row(c, o, rows[i], map.reynolds[size_t(rows[i])], done);
+      } catch (const std::exception& e) {
+        errors[i] = fmt::format("Re = {:g}: {}", map.reynolds[size_t(rows[i])], e.what());
       }
-    };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < map.threads; ++t) pool.emplace_back(work);
-    work();
-    for (auto& t : pool) t.join();
+    });
   }
   for (const auto& e : errors)
     if (!e.empty()) throw std::runtime_error(e);

@@ -3,7 +3,6 @@
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
@@ -12,6 +11,7 @@
 
 #include "postproc/navier_stokes/orbit.hpp"
 #include "postproc/navier_stokes/run_paths.hpp"
+#include "postproc/navier_stokes/work_queue.hpp"
 #include "solver/navier_stokes/floquet.hpp"
 
 namespace magnus {
@@ -131,43 +131,35 @@ SpanwiseScan floquet_scan(const NsParams& p, const std::vector<double>& beta_D, 
   for (size_t k = 0; k < beta_D.size(); ++k) s.points[k].beta_D = beta_D[k];
   // The wavenumbers on the cores at once, each its own stepper; reported in order as they finish.
   std::mutex mutex;
-  std::atomic<size_t> next{0};
   size_t reported = 0;
   std::vector<bool> done(beta_D.size(), false);
   std::string error;
-  auto work = [&] {
-    for (size_t i; (i = next++) < beta_D.size();) {
-      FloquetOptions fo;
-      fo.krylov = 30, fo.tolerance = kFloquetTolerance, fo.relative = kFloquetRelative;
-      fo.start = i < starts.size() ? starts[i] : nearest_done_mode(s.points, done, i, mutex);
-      SpanwisePoint pt;
-      pt.beta_D = beta_D[i];
-      try {
-        const FloquetResult r = floquet_multipliers(p, base, beta_D[i] / (2.0 * p.a), fo);
-        pt.found = !r.multipliers.empty() && r.multipliers.front() != 0.0;
-        if (pt.found) {
-          pt.multiplier = r.multipliers.front();
-          pt.lambda = std::log(pt.multiplier) / (T * unit);
-          pt.covered = fo.met(pt.multiplier, r.residuals.front());
-          pt.mode = r.mode;
-        }
-        pt.seconds = r.seconds, pt.solves = r.periods * r.steps;
-      } catch (const std::exception& e) {
-        const std::lock_guard<std::mutex> lock(mutex);
-        if (error.empty()) error = fmt::format("β·D = {:g}: {}", beta_D[i], e.what());
-        continue;
+  for_each_index(beta_D.size(), std::max(1u, std::thread::hardware_concurrency()), [&](size_t i) {
+    FloquetOptions fo;
+    fo.krylov = 30, fo.tolerance = kFloquetTolerance, fo.relative = kFloquetRelative;
+    fo.start = i < starts.size() ? starts[i] : nearest_done_mode(s.points, done, i, mutex);
+    SpanwisePoint pt;
+    pt.beta_D = beta_D[i];
+    try {
+      const FloquetResult r = floquet_multipliers(p, base, beta_D[i] / (2.0 * p.a), fo);
+      pt.found = !r.multipliers.empty() && r.multipliers.front() != 0.0;
+      if (pt.found) {
+        pt.multiplier = r.multipliers.front();
+        pt.lambda = std::log(pt.multiplier) / (T * unit);
+        pt.covered = fo.met(pt.multiplier, r.residuals.front());
+        pt.mode = r.mode;
       }
+      pt.seconds = r.seconds, pt.solves = r.periods * r.steps;
+    } catch (const std::exception& e) {
       const std::lock_guard<std::mutex> lock(mutex);
-      s.points[i] = std::move(pt), done[i] = true;
-      for (; reported < done.size() && done[reported]; ++reported)
-        if (on_point) on_point(s.points[reported]);
+      if (error.empty()) error = fmt::format("β·D = {:g}: {}", beta_D[i], e.what());
+      return;
     }
-  };
-  std::vector<std::thread> pool;
-  const size_t threads = std::min<size_t>(beta_D.size(), std::max(1u, std::thread::hardware_concurrency()));
-  for (size_t t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
+    const std::lock_guard<std::mutex> lock(mutex);
+    s.points[i] = std::move(pt), done[i] = true;
+    for (; reported < done.size() && done[reported]; ++reported)
+      if (on_point) on_point(s.points[reported]);
+  });
   if (!error.empty()) throw std::runtime_error(error);
   read_scan(s);
   return s;
