@@ -64,8 +64,9 @@ struct HopfOptions {
   int max_evaluations = 24;
   int count = 6;       ///< eigenvalues kept per full search
   int track_krylov = 24;  ///< Arnoldi vectors of a tracking search (one shift at the predicted pair)
-  /// The full search at the ends, auto's cheaper one: the pair wanted leads at the unstable end.
-  StabilityOptions full = quick_stability_options();
+  /// The full search at the ends, auto's cheaper one: the pair wanted leads at the unstable end. Its shifts
+  /// on two threads (a search's points are solved one after another).
+  StabilityOptions full = lone_search(quick_stability_options());
 };
 
 /// The steady state at parameter value x and its eigenvalues. The state: by continuation from `from` (a

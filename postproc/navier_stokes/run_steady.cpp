@@ -201,7 +201,7 @@ AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g, boo
   try {
     // Cheaper than `magnus stability` (the status says when the strip right of the leading eigenvalue was
     // not covered).
-    st = leading_eigenvalues(p, nr.state, 4, quick_stability_options());
+    st = leading_eigenvalues(p, nr.state, 4, lone_search(quick_stability_options()));
   } catch (const std::exception& e) {
     a.why = fmt::format("auto: marched in time (stability not computed: {}); ", e.what());
     return a;

@@ -167,7 +167,7 @@ SpanwiseScan floquet_scan(const NsParams& p, const std::vector<double>& beta_D, 
 
 HopfEvaluation steady_stability(const NsParams& p, const std::string& eigensolver) {
   HopfOptions honest;  // the converged search: every shift to convergence, shifts added for gaps
-  honest.full = StabilityOptions{};
+  honest.full = lone_search(StabilityOptions{});
   honest.full.eigensolver = eigensolver;
   const double alpha = p.a * p.omega / p.U;
   HopfEvaluation s = hopf_evaluation(p, HopfParameter::spin_ratio, alpha, nullptr, std::nullopt, honest);

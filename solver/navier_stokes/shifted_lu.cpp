@@ -3,6 +3,7 @@
 #include <umfpack.h>
 
 #include <cmath>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -83,6 +84,10 @@ ShiftedLu::ShiftedLu(const EigenProblem& ep, cplx sigma, void** symbolic) {
   double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
   umfpack_zl_defaults(control);
   // The problem's order (the grid's nested dissection, as for the real Jacobian: J − σM has J's pattern).
+  // Searches at several shifts may start at once: the first makes the analysis, the others wait for it
+  // (one lock for every search: an analysis takes about a second, a search tens).
+  static std::mutex analysis;
+  std::unique_lock<std::mutex> lock(analysis);
   if (!*symbolic) {
     const long st = symbolic_in_grid_order(
         n, ep.order,
@@ -99,6 +104,7 @@ ShiftedLu::ShiftedLu(const EigenProblem& ep, cplx sigma, void** symbolic) {
                                std::to_string(st) + ")");
     }
   }
+  lock.unlock();
   const SingleThreadBlas one_thread;
   const long st = umfpack_zl_numeric(Ap_.data(), Ai_.data(), Ax_.data(), Az_.data(), *symbolic, &numeric_,
                                      control, info);

@@ -14,7 +14,8 @@ namespace magnus {
 /// entry in every column that M touches (the Γ_R column has none in J).
 class ShiftedLu {
  public:
-  /// Factors J − σM (σ in 1/s); symbolic: the UMFPACK symbolic analysis, made at the first call and reused.
+  /// Factors J − σM (σ in 1/s); symbolic: the UMFPACK symbolic analysis, made at the first call and reused
+  /// (calls on several threads with the same symbolic wait for the first to make it).
   ShiftedLu(const EigenProblem& ep, std::complex<double> sigma, void** symbolic);
   ~ShiftedLu();
   ShiftedLu(const ShiftedLu&) = delete;

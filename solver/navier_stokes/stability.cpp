@@ -3,12 +3,15 @@
 #include <umfpack.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <future>
 #include <optional>
 #include <random>
 #include <stdexcept>
+#include <thread>
 
 #include "solver/navier_stokes/arakawa.hpp"
 #include "solver/navier_stokes/lu.hpp"
@@ -159,6 +162,8 @@ StabilityOptions quick_stability_options() {
   return o;
 }
 
+int lone_search_threads() { return std::thread::hardware_concurrency() >= 2 ? 2 : 1; }
+
 StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, int count) {
   return leading_eigenvalues(p, steady, count, StabilityOptions{});
 }
@@ -189,6 +194,7 @@ StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, in
 void check_stability_options(int count, const StabilityOptions& o) {
   if (count < 1) throw std::invalid_argument("leading_eigenvalues: count must be ≥ 1");
   if (o.shifts.empty()) throw std::invalid_argument("leading_eigenvalues: no shifts");
+  if (o.threads < 1) throw std::invalid_argument("leading_eigenvalues: threads must be ≥ 1");
   if (!known_eigensolver(o.eigensolver))
     throw std::invalid_argument("leading_eigenvalues: unknown eigensolver \"" + o.eigensolver + "\" (expected " +
                                 eigensolver_names() + ")");
@@ -199,16 +205,38 @@ StabilityResult search_eigenvalues(const EigenProblem& ep, double unit, int coun
   const auto t0 = std::chrono::steady_clock::now();
   StabilityResult res;
   void* symbolic = nullptr;
-  std::mt19937 rng(o.seed);
   std::vector<ShiftSearch> searches;
   const bool arpack = o.eigensolver == "arpack";
-  auto search = [&](cplx s_unit) {
+  // Shift k's search, its start vector from a generator of its own (seed, k): the same on any thread.
+  auto search_at = [&](cplx s_unit, unsigned k) {
+    std::seed_seq seq{o.seed, k};
+    std::mt19937 rng(seq);
     const int krylov = std::max(o.krylov, count + 10);
-    searches.push_back(arpack ? shift_invert_arpack(ep, s_unit * unit, o.want, krylov, o.restarts, o.tol,
-                                                    o.arpack_tol, &symbolic, rng)
-                              : shift_invert_arnoldi(ep, s_unit * unit, o.want, krylov, o.restarts, o.tol,
-                                                     &symbolic, rng));
+    return arpack ? shift_invert_arpack(ep, s_unit * unit, o.want, krylov, o.restarts, o.tol, o.arpack_tol,
+                                        &symbolic, rng)
+                  : shift_invert_arnoldi(ep, s_unit * unit, o.want, krylov, o.restarts, o.tol, &symbolic, rng);
+  };
+  auto search = [&](cplx s_unit) {
+    searches.push_back(search_at(s_unit, unsigned(searches.size())));
     res.solves += searches.back().solves;
+  };
+  // The given shifts on o.threads threads (the first to factor makes the symbolic analysis the others
+  // reuse), kept in the order given.
+  auto given_shifts = [&] {
+    std::vector<ShiftSearch> found(o.shifts.size());
+    std::atomic<size_t> next{0};
+    auto worker = [&] {
+      for (size_t k; (k = next++) < found.size();) found[k] = search_at(o.shifts[k], unsigned(k));
+    };
+    std::vector<std::future<void>> others;
+    for (int t = 1; t < std::min(o.threads, int(found.size())); ++t)
+      others.push_back(std::async(std::launch::async, worker));
+    worker();
+    for (auto& f : others) f.get();
+    for (auto& r : found) {
+      res.solves += r.solves;
+      searches.push_back(std::move(r));
+    }
   };
   // The rightmost accepted eigenvalue so far, U/D (−∞ when none).
   auto rightmost = [&] {
@@ -218,7 +246,7 @@ StabilityResult search_eigenvalues(const EigenProblem& ep, double unit, int coun
     return x;
   };
   try {
-    for (const cplx& s : o.shifts) search(s);
+    given_shifts();
     // The check that nothing lies right of the leading eigenvalue unseen: the strip from it to the
     // imaginary axis (the stability boundary), up to the highest shift's frequency, must lie inside the
     // shifts' disks. (Disks centred right of the axis that cover a point on it cover as much right of it.)

@@ -48,6 +48,9 @@ struct StabilityOptions {
   /// pair at −0.167 + 1.399i was reported as leading, above the slow real modes near −0.001.
   int restarts = 8;
   int want = 3;  ///< Ritz values nearest each shift that must converge (they make the shift's disk)
+  /// Shifts searched at once, each with its own complex LU (memory ×threads): the given shifts after the
+  /// first (which makes the symbolic analysis they share). 1 where the caller already runs in parallel.
+  int threads = 1;
   /// Shifts added where the disks leave a gap in the strip from the leading eigenvalue to the imaginary
   /// axis, up to the highest shift's frequency.
   int extra_shifts = 3;
@@ -115,6 +118,16 @@ inline double eigen_strouhal(std::complex<double> lambda) { return std::fabs(lam
 /// The cheaper search of `time.mode = "auto"` and of the onset search's ends: the default shifts with at most
 /// four restarts each and no shifts added for gaps (the result's `covered` says when the strip was left open).
 StabilityOptions quick_stability_options();
+
+/// Threads for a search that runs alone (auto's, the onset search's, `magnus stability`'s): 2 on a machine
+/// with two cores or more, else 1.
+int lone_search_threads();
+
+/// o with threads = lone_search_threads().
+inline StabilityOptions lone_search(StabilityOptions o) {
+  o.threads = lone_search_threads();
+  return o;
+}
 
 /// The leading eigenvalues at a steady state of p (a converged solve_steady state on ns_grid(p)). Throws
 /// std::invalid_argument for a state of the wrong size, std::runtime_error when a factorisation fails.

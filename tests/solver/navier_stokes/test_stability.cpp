@@ -84,6 +84,30 @@ TEST_CASE("[ns][stability] Re 100, α 3: the slow real modes lead, found by ever
   for (double res : r.residuals) CHECK(res <= StabilityOptions{}.tol);
 }
 
+TEST_CASE("[ns][stability] on two threads the shifts find what they find on one, in the same order",
+          "[ns][stability]") {
+  // Each shift draws its start vector from a generator of its own, so the thread that runs it does not
+  // matter: the same solves, eigenvalues and disks, to the last bit.
+  const NsParams p = coarse_params(80.0, 0.0, 32);
+  const NsState steady = newton(p);
+  StabilityOptions one = quick_stability_options(), two = one;
+  two.threads = 2;
+  const StabilityResult a = leading_eigenvalues(p, steady, 4, one), b = leading_eigenvalues(p, steady, 4, two);
+  CHECK(a.solves == b.solves);
+  REQUIRE(a.shifts.size() == b.shifts.size());
+  for (size_t k = 0; k < a.shifts.size(); ++k) {
+    CHECK(a.shifts[k].sigma == b.shifts[k].sigma);
+    CHECK(a.shifts[k].radius == b.shifts[k].radius);
+  }
+  REQUIRE(a.eigenvalues.size() == b.eigenvalues.size());
+  REQUIRE(!a.eigenvalues.empty());
+  for (size_t k = 0; k < a.eigenvalues.size(); ++k) CHECK(a.eigenvalues[k] == b.eigenvalues[k]);
+  CHECK(a.eigenvalues.front().real() > 0.0);  // Re 80 sheds: the wake's pair grows
+  StabilityOptions none = one;
+  none.threads = 0;
+  CHECK_THROWS_WITH(leading_eigenvalues(p, steady, 4, none), Catch::Contains("threads must be"));
+}
+
 TEST_CASE("[ns][stability] Re 80: the time stepper grows and turns at the leading pair", "[ns][stability]") {
   const NsParams p = coarse_params(80.0, 0.0);
   const NsState steady = newton(p);
