@@ -14,7 +14,7 @@
 #include "postproc/navier_stokes/continuation_row.hpp"
 #include "postproc/navier_stokes/run.hpp"
 #include "postproc/navier_stokes/unsteady.hpp"
-#include "postproc/navier_stokes/work_queue.hpp"
+#include "solver/work_queue.hpp"
 
 namespace magnus {
 

@@ -11,7 +11,7 @@
 
 #include "postproc/navier_stokes/orbit.hpp"
 #include "postproc/navier_stokes/run_paths.hpp"
-#include "postproc/navier_stokes/work_queue.hpp"
+#include "solver/work_queue.hpp"
 #include "solver/navier_stokes/floquet.hpp"
 
 namespace magnus {

@@ -3,11 +3,9 @@
 #include <umfpack.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <future>
 #include <optional>
 #include <random>
 #include <stdexcept>
@@ -17,6 +15,7 @@
 #include "solver/navier_stokes/lu.hpp"
 #include "solver/navier_stokes/newton.hpp"
 #include "solver/navier_stokes/shift_invert.hpp"
+#include "solver/work_queue.hpp"
 
 namespace magnus {
 
@@ -162,7 +161,10 @@ StabilityOptions quick_stability_options() {
   return o;
 }
 
-int lone_search_threads() { return std::thread::hardware_concurrency() >= 2 ? 2 : 1; }
+StabilityOptions lone_search(StabilityOptions o) {
+  o.threads = std::thread::hardware_concurrency() >= 2 ? 2 : 1;
+  return o;
+}
 
 StabilityResult leading_eigenvalues(const NsParams& p, const NsState& steady, int count) {
   return leading_eigenvalues(p, steady, count, StabilityOptions{});
@@ -224,15 +226,8 @@ StabilityResult search_eigenvalues(const EigenProblem& ep, double unit, int coun
   // reuse), kept in the order given.
   auto given_shifts = [&] {
     std::vector<ShiftSearch> found(o.shifts.size());
-    std::atomic<size_t> next{0};
-    auto worker = [&] {
-      for (size_t k; (k = next++) < found.size();) found[k] = search_at(o.shifts[k], unsigned(k));
-    };
-    std::vector<std::future<void>> others;
-    for (int t = 1; t < std::min(o.threads, int(found.size())); ++t)
-      others.push_back(std::async(std::launch::async, worker));
-    worker();
-    for (auto& f : others) f.get();
+    for_each_index(found.size(), size_t(o.threads),
+                   [&](size_t k) { found[k] = search_at(o.shifts[k], unsigned(k)); });
     for (auto& r : found) {
       res.solves += r.solves;
       searches.push_back(std::move(r));

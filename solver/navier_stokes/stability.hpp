@@ -119,15 +119,9 @@ inline double eigen_strouhal(std::complex<double> lambda) { return std::fabs(lam
 /// four restarts each and no shifts added for gaps (the result's `covered` says when the strip was left open).
 StabilityOptions quick_stability_options();
 
-/// Threads for a search that runs alone (auto's, the onset search's, `magnus stability`'s): 2 on a machine
-/// with two cores or more, else 1.
-int lone_search_threads();
-
-/// o with threads = lone_search_threads().
-inline StabilityOptions lone_search(StabilityOptions o) {
-  o.threads = lone_search_threads();
-  return o;
-}
+/// o with threads for a search that runs alone (auto's, the onset search's, `magnus stability`'s): 2 on a
+/// machine with two cores or more, else 1.
+StabilityOptions lone_search(StabilityOptions o);
 
 /// The leading eigenvalues at a steady state of p (a converged solve_steady state on ns_grid(p)). Throws
 /// std::invalid_argument for a state of the wrong size, std::runtime_error when a factorisation fails.
