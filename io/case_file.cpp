@@ -82,7 +82,7 @@ void check_model_keys(const Reader& r, bool ns, const std::string& circulation_m
     for (const auto& k : case_key_table().at("time")) ns_only.push_back("time." + k);
     ns_only.insert(ns_only.end(), {"output.snapshots", "output.snapshot_interval", "solver.advection_order",
                                    "solver.advection_order_xi", "solver.wall_closure", "solver.implicit_rotation", "grid.wall_refinement", "grid.wall_layer",
-                                   "grid.refine"});
+                                   "grid.refine", "domain.absorbing_layer", "domain.absorbing_strength"});
     for (const auto& k : ns_only)
       if (has_key(r, k)) r.fail(k, "is only used with model.flow = \"navier-stokes\"");
   }
@@ -258,6 +258,16 @@ void read_navier_stokes(const Reader& r, Case& c) {
   c.grid.wall_layer = r.number(
       "grid", "wall_layer", c.grid.wall_layer, [span](double v) { return v > 0.0 && v <= span; },
       "> 0 and <= ln(R/a), R/a = domain.outer_radius (the ξ-length of the spacing's transition)");
+  const double R = c.grid.outer_radius;
+  const std::string layer_range =
+      fmt::format("0 (none) or > 1 and < {:g} = domain.outer_radius (r/a where the layer begins)", R);
+  c.grid.absorbing_layer = r.number(
+      "domain", "absorbing_layer", rule_absorbing_layer(scene_sheds(c), R),
+      [R](double v) { return v == 0.0 || (v > 1.0 && v < R); },
+      layer_range.c_str());
+  c.grid.absorbing_strength = r.number(
+      "domain", "absorbing_strength", c.grid.absorbing_strength, [](double v) { return v > 0.0 && v <= 100.0; },
+      "> 0 and <= 100 (the sink λ at R, in U/D)");
   c.grid.wall_refinement_given = r.has("grid", "wall_refinement");
   c.grid.wall_layer_given = r.has("grid", "wall_layer");
   // The scene's scheme goes with the scene's grid (grid_rule.hpp): Jensen's wall closure, and fourth order

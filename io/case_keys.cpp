@@ -15,7 +15,7 @@ const std::map<std::string, std::vector<std::string>>& case_key_table() {
       {"cylinder", {"radius", "spin", "spin_ratio", "rpm", "span"}},
       {"flow", {"speed", "direction", "course", "density", "pressure", "viscosity", "reynolds"}},
       {"circulation", {"model", "value"}},
-      {"domain", {"outer_radius", "far_field"}},
+      {"domain", {"outer_radius", "far_field", "absorbing_layer", "absorbing_strength"}},
       {"grid", {"n_theta", "n_r", "spacing", "tolerance", "wall_refinement", "wall_layer", "refine"}},
       {"solver", {"method", "stencil", "advection_order", "advection_order_xi", "wall_closure", "implicit_rotation"}},
       {"time", {"mode", "end", "dt", "cfl", "mean_tolerance", "stop_on_drift", "checkpoint_interval"}},

@@ -93,6 +93,9 @@ std::string to_toml(const Case& c) {
   }
   t += fmt::format("\n[domain]\nouter_radius = {}\n", num(c.grid.outer_radius));
   if (!ns) t += fmt::format("far_field = {}\n", str(to_string(c.grid.far_field)));
+  if (ns)  // as resolved: the scene's rule chose the layer unless the case gave it
+    t += fmt::format("absorbing_layer = {}\nabsorbing_strength = {}\n", num(c.grid.absorbing_layer),
+                     num(c.grid.absorbing_strength));
   t += grid_toml(c, ns);
   if (!ns) {
     t += fmt::format("\n[solver]\nmethod = {}\n", str(to_string(c.solver.method)));

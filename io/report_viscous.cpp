@@ -340,6 +340,10 @@ std::string viscous_summary_text(const FlowResult& r, const std::string& output_
           : std::string("geometric spacing (uniform in ξ)");
   s += labelled("grid", fmt::format("n_θ × n_r = {} × {} ({} nodes), {}, R/a = {:.6g}", g.n_theta, g.n_r,
                                     g.nodes(), rings, g.outer_radius() / g.a));
+  if (c.grid.absorbing_layer > 0.0)
+    s += labelled("", fmt::format("absorbing layer from r/a = {:.6g} to R: the vorticity fades at up to {:.3g} {} "
+                                  "(domain.absorbing_layer, absorbing_strength)",
+                                  c.grid.absorbing_layer, c.grid.absorbing_strength, rate_unit_name(c.scene)));
   s += labelled("", scene_grid_text(c));
   s += wall_text(r, cells, raise);
   s += run_text(r);

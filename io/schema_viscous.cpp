@@ -50,6 +50,14 @@ std::vector<AttrSpec> viscous_parameter_rows() {
                                 P, "wall_layer", "1", "grid.wall_layer: ξ-length of the rings' transition",
                                 [](const FlowResult& r) { return opt(r.c.grid.wall_layer); },
                                 [](FlowResult& r, double v) { r.c.grid.wall_layer = v; })),
+      only(Models::viscous, num(
+                                P, "absorbing_layer", "1", "domain.absorbing_layer: r/a where the absorbing layer begins (0: none)",
+                                [](const FlowResult& r) { return opt(r.c.grid.absorbing_layer); },
+                                [](FlowResult& r, double v) { r.c.grid.absorbing_layer = v; })),
+      only(Models::viscous, num(
+                                P, "absorbing_strength", "1", "domain.absorbing_strength: the layer's sink λ at R, in U/D",
+                                [](const FlowResult& r) { return opt(r.c.grid.absorbing_strength); },
+                                [](FlowResult& r, double v) { r.c.grid.absorbing_strength = v; })),
   };
 }
 

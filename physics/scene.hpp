@@ -97,6 +97,10 @@ struct GridRequest {
   double refine_solved = 0.0;
   bool wall_refinement_given = false;  ///< grid.wall_refinement was stated (navier-stokes)
   bool wall_layer_given = false;       ///< grid.wall_layer was stated (navier-stokes)
+  /// navier-stokes: where the absorbing layer begins, r_s/a (domain.absorbing_layer; 0: none), and its
+  /// sink at R, λ_R in U_ref/D (domain.absorbing_strength): λ(r) = λ_R·((r − r_s)/(R − r_s))² beyond r_s.
+  double absorbing_layer = 0.0;
+  double absorbing_strength = 2.0;
 };
 
 /// The linear solver and the stencil (potential flow); the advection's order in θ (navier-stokes).

@@ -34,6 +34,8 @@ NsParams ns_params(const Case& c) {
   p.advection_order_xi = c.solver.advection_order_xi;
   p.wall_closure = c.solver.wall_closure == "jensen" ? NsWallClosure::jensen : NsWallClosure::thom;
   p.implicit_rotation = c.solver.implicit_rotation;
+  p.absorbing_start = c.grid.absorbing_layer;
+  p.absorbing_rate = c.grid.absorbing_strength / s.time_unit();  // λ_R: U_ref/D in 1/s
   p.dt = c.time.dt > 0.0 && s.reference_speed() > 0.0 ? c.time.dt * s.time_unit() : 0.0;
   apply_scene_grid(c, p);
   return p;

@@ -231,15 +231,26 @@ std::string stop_reason(const UnsteadyResult& res, size_t first_fine, double t, 
   return "";
 }
 
+/// The radius (m) by which the starting vortex, carried at U, has faded by e⁻⁶ in the absorbing layer:
+/// ∫λ dt = λ_R (R − r_s) x³/(3U) = 6 at x = (r − r_s)/(R − r_s), i.e. x = (18U/(λ_R (R − r_s)))^{1/3}
+/// (at most 1); R without a layer.
+double vortex_fade_radius(const NsParams& p, const PolarGrid& g) {
+  const double R = g.outer_radius(), rs = p.absorbing_start * p.a;
+  if (!(p.absorbing_start > 0.0) || !(p.absorbing_rate > 0.0) || !(p.U > 0.0)) return R;
+  const double x = std::cbrt(18.0 * p.U / (p.absorbing_rate * (R - rs)));
+  return x >= 1.0 ? R : rs + x * (R - rs);
+}
+
 /// The time before which a run never stops, s: o.t_min if set, else the warm start's end, else when the
-/// starting vortex has left (U > 0) and the impulsive transient is over: (R − a)/U + 10·D/U (10·D/U_ref
-/// without a freestream).
+/// starting vortex has left (U > 0) and the impulsive transient is over: (r_f − a)/U + 10·D/U, r_f = R or,
+/// with an absorbing layer, the radius where it has faded (vortex_fade_radius); 10·D/U_ref without a
+/// freestream.
 double earliest_stop(const NsParams& p, const UnsteadyOptions& o, const PolarGrid& g, double t_fine,
                      double U_ref) {
   const double t_conv = 2.0 * p.a / U_ref;
   return o.t_min >= 0.0 ? o.t_min
          : t_fine > 0.0 ? t_fine
-         : p.U > 0.0    ? (g.outer_radius() - p.a) / U_ref + 10.0 * t_conv
+         : p.U > 0.0    ? (vortex_fade_radius(p, g) - p.a) / U_ref + 10.0 * t_conv
                         : 10.0 * t_conv;
 }
 

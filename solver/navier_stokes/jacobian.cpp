@@ -91,7 +91,7 @@ void interior_rows(TripletSink& sink, const Unknowns& u, const PolarGrid& g, con
     const XiFlux xf = xi_flux(g, i);  // the rows of ring i are scaled by h_i²
     const double h = xf.h, q2 = (h / g.d_theta) * (h / g.d_theta), Jh2 = h * h * g.r[i] * g.r[i];
     const double cN = -h * h / p.nu / (12.0 * g.d_theta * h) * s_zeta;  // ∂/∂(term) of −(h_i²/ν)·N, scaled
-    const double c0 = -xf.c_m - xf.c_p - 2.0 * q2;
+    const double c0 = -xf.c_m - xf.c_p - 2.0 * q2, c_s = -h * h * absorbing_shift(g, p, i);
     for (int j = 0; j < n; ++j) {
       const int e = u.wrap(j + 1), w = u.wrap(j - 1);
       const long rp = u.cp(i, j), rz = u.cz(i, j);
@@ -100,7 +100,7 @@ void interior_rows(TripletSink& sink, const Unknowns& u, const PolarGrid& g, con
       sink.add(rp, u.cp(i, e), q2 * s_psi), sink.add(rp, u.cp(i, w), q2 * s_psi);
       sink.add(rp, u.cz(i, j), Jh2 * s_psi);
       sink.add(rz, u.cz(i + 1, j), xf.c_p * s_zeta), sink.add(rz, u.cz(i - 1, j), xf.c_m * s_zeta);
-      sink.add(rz, u.cz(i, j), c0 * s_zeta);
+      sink.add(rz, u.cz(i, j), (c0 + c_s) * s_zeta);
       sink.add(rz, u.cz(i, e), q2 * s_zeta), sink.add(rz, u.cz(i, w), q2 * s_zeta);
       if (!p.stokes) advection_entries(sink, u, p, g.n_r, i, j, cN);
     }
@@ -135,6 +135,19 @@ void outer_rows(TripletSink& sink, const Unknowns& u, const PolarGrid& g, const 
   }
 }
 
+/// The Γ_R row's entries of the absorbing layer's −∫∫ λ ζ dA (absorbed_circulation), on the rings it reaches.
+void absorbing_rows(TripletSink& sink, const Unknowns& u, const PolarGrid& g, const NsParams& p, double s_zeta,
+                    long gamma) {
+  const int n = g.n_theta, iN = g.n_r - 1;
+  const double ff = g.d_xi(iN - 1) / (2.0 * M_PI * p.nu) * s_zeta * g.d_theta;  // outer_rows' flux scale
+  for (int i = 1; i < iN; ++i) {
+    const double lambda = absorbing_rate_at(p, g.r[i]);
+    if (lambda == 0.0) continue;
+    const double c = -lambda * g.r[i] * g.r[i] * g.ring_width(i) * ff;
+    for (int j = 0; j < n; ++j) sink.add(gamma, u.cz(i, j), c);
+  }
+}
+
 }  // namespace
 
 void SteadyJacobian::assemble(const std::vector<double>& x) {
@@ -160,6 +173,7 @@ void SteadyJacobian::assemble(const std::vector<double>& x) {
   }
   interior_rows(sink, u, grid_, p_, s_psi_, s_zeta_);
   outer_rows(sink, u, grid_, p_, s_psi_, s_zeta_, size_ - 1);
+  absorbing_rows(sink, u, grid_, p_, s_zeta_, size_ - 1);
   if (!first && sink.k != Slot_.size()) throw std::logic_error("SteadyJacobian: the pattern changed");
   if (first) {
     triplet_pattern(size_, Ti_, Tj_, Ap_, Ai_, Map_);

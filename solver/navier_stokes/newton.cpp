@@ -92,7 +92,7 @@ std::vector<double> SteadyJacobian::residual(const std::vector<double>& x) const
   for (int i = 1; i < iN; ++i) {
     const XiFlux xf = xi_flux(grid_, i);
     const double hi2 = xf.h * xf.h, q2 = hi2 / (dth * dth), Jh2 = hi2 * grid_.r[i] * grid_.r[i];
-    const double h2_nu = hi2 / p_.nu;
+    const double h2_nu = hi2 / p_.nu, h2_s = hi2 * absorbing_shift(grid_, p_, i);
     for (int j = 0; j < n; ++j) {
       const int e = east(j, n), w = west(j, n);
       const size_t q = size_t(i) * n + j;
@@ -101,7 +101,7 @@ std::vector<double> SteadyJacobian::residual(const std::vector<double>& x) const
       const SecondDifferences dz =
           second_differences(row(s.zeta, i - 1), row(s.zeta, i), row(s.zeta, i + 1), j, e, w, xf);
       F[2 * q] = (dp.xi + q2 * dp.theta + Jh2 * Z(i, j)) * s_psi_;
-      F[2 * q + 1] = (dz.xi + q2 * dz.theta - h2_nu * N[q]) * s_zeta_;
+      F[2 * q + 1] = (dz.xi + q2 * dz.theta - h2_s * Z(i, j) - h2_nu * N[q]) * s_zeta_;
     }
   }
   for (int j = 0; j < n; ++j) {

@@ -32,6 +32,10 @@ void check_params(const NsParams& p, double dt) {
   if (!(p.wall_refinement >= 1.0 && p.wall_refinement <= 100.0) || !(p.wall_layer > 0.0) ||
       !finite(p.wall_layer))
     throw std::invalid_argument("NsOperator: need 1 <= wall_refinement <= 100 and wall_layer > 0");
+  if (p.absorbing_start != 0.0 &&
+      !(p.absorbing_start > 1.0 && p.absorbing_start < p.outer_over_a && p.absorbing_rate >= 0.0 &&
+        finite(p.absorbing_rate)))
+    throw std::invalid_argument("NsOperator: need 1 < absorbing_start < R/a and a finite absorbing_rate >= 0");
   if (!(dt > 0.0) || !finite(dt)) throw std::invalid_argument("NsOperator: dt must be positive and finite");
 }
 
@@ -172,7 +176,8 @@ NsOperator::NsOperator(const NsParams& p, double dt) : p_(p), dt_(dt) {
   const int nr = grid_.n_r, n = grid_.n_theta;
   impl_ = std::make_unique<Impl>();
   std::vector<double> sigma(nr), zero(nr, 0.0);
-  for (int i = 0; i < nr; ++i) sigma[i] = 2.0 * grid_.r[i] * grid_.r[i] / (p.nu * dt);
+  for (int i = 0; i < nr; ++i)  // the implicit diffusion's shift, and the absorbing layer's (stages.hpp)
+    sigma[i] = 2.0 * grid_.r[i] * grid_.r[i] / (p.nu * dt) + (i > 0 && i + 1 < nr ? absorbing_shift(grid_, p, i) : 0.0);
   impl_->helmholtz = std::make_unique<ModeSolver>(grid_, sigma, OuterBoundary::dirichlet, p.threads);
   impl_->poisson = std::make_unique<ModeSolver>(grid_, zero, OuterBoundary::neumann, p.threads);
   plan_fields(*impl_, nr, n, p.threads);

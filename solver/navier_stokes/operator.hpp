@@ -24,6 +24,9 @@
 // (AB2) by the exact balance dΓ_R/dt = ∮ (−u_r ζ + ν ∂ζ/∂r) R dθ. This is mode 0: the wall and the
 // vorticity inside decide it, nothing imposes it. Vorticity at R: ζ = 0 where u_r < 0 (inflow); where the
 // wake leaves, the convective condition ζ_t + (u_r/r) ζ_ξ = 0, i.e. ζ_t + (ψ_θ/J) ζ_ξ = 0 (explicit upwind).
+// An absorbing layer (NsParams::absorbing_start) adds −J λ(r) ζ to the right of the vorticity equation:
+// Crank–Nicolson with the diffusion (a ring-dependent addition s_i = J_i λ_i/ν to the Helmholtz shift), and
+// −∫∫ λ ζ dA to dΓ_R/dt, the circulation it removes.
 #include <chrono>
 #include <memory>
 #include <stdexcept>
@@ -77,6 +80,12 @@ struct NsParams {
   /// The wall's spin in the time step: its potential vortex ψ_ref = −a²ω ξ advected by Crank–Nicolson with
   /// the diffusion, the rest by AB2 (rotation.hpp), so the spin does not shrink Δt; false: all by AB2.
   bool implicit_rotation = true;
+  /// The absorbing layer: beyond r_s = absorbing_start·a the vorticity equation gains the sink −λ(r) ζ,
+  ///     λ(r) = absorbing_rate·((r − r_s)/(R − r_s))²   (1/s),
+  /// so the wake's vortices fade before they reach R, where the outflow condition reflects them; the
+  /// circulation they take away leaves Γ_R too (circulation_flux). 0: no layer (the default).
+  double absorbing_start = 0.0;  ///< r_s/a, 1 < r_s/a < R/a, or 0 (none)
+  double absorbing_rate = 0.0;   ///< λ at R, 1/s
 
   /// Re = U·2a/ν (0 when U = 0).
   double reynolds() const { return nu > 0.0 ? U * 2.0 * a / nu : 0.0; }

@@ -105,15 +105,18 @@ struct Rows {
   double nu, beta;
   std::vector<long> ti, tj;
   std::vector<double> tx, scale, mass;
+  const NsParams* params;  ///< the absorbing layer's λ(r) (stages.hpp)
   void add(long row, long col, double v) {
     if (v != 0.0) ti.push_back(row), tj.push_back(col), tx.push_back(v);
   }
-  /// −U_r f_r − (U_θ/r) f_θ + ν(∇₂²f − β²f) + diag·f at (i, j) of the field numbered by at(i, j), at radius r,
-  /// with the ξ-derivatives' weights d1, d2 there.
+  /// −U_r f_r − (U_θ/r) f_θ + ν(∇₂²f − β²f) + (diag − λ(r))·f at (i, j) of the field numbered by at(i, j), at
+  /// radius r, with the ξ-derivatives' weights d1, d2 there (λ: the absorbing layer's sink on the velocity, as
+  /// on the 2D vorticity).
   template <class At>
   void transport(long row, At at, int i, int j, double Ub, double Vb, double r, const Weights3& d1,
                  const Weights3& d2, double diag) {
     const double c = nu / (r * r), k = m.k;
+    diag -= absorbing_rate_at(*params, r);
     add(row, at(i - 1, j), -Ub / r * d1.m + c * d2.m);
     add(row, at(i + 1, j), -Ub / r * d1.p + c * d2.p);
     add(row, at(i, j + 1), -Vb / (2.0 * r * k) + c / (k * k));
@@ -263,7 +266,7 @@ EigenProblem spanwise_problem(const NsParams& p, const NsState& base, double bet
   const double U = stability_speed(p), s_mom = p.a / (U * U);
   EigenProblem ep;
   ep.n = m.unknowns();
-  Rows R{m, b, p.nu, beta, {}, {}, {}, std::vector<double>(size_t(ep.n), 0.0), std::vector<double>(size_t(ep.n), 0.0)};
+  Rows R{m, b, p.nu, beta, {}, {}, {}, std::vector<double>(size_t(ep.n), 0.0), std::vector<double>(size_t(ep.n), 0.0), &p};
   // With no outflow column (a closed box) and β = 0 the pressure is free up to a constant: p = 0 in one cell
   // instead of that cell's continuity (redundant there: the sum of all the others).
   bool closed = beta == 0.0;

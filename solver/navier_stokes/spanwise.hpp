@@ -10,6 +10,8 @@
 //     w̃_t   = −[U_r w̃_r + (U_θ/r) w̃_θ] + β p + ν[∇₂²w̃ − β² w̃]
 //     0     = (1/r)(r u_r)_r + (1/r) u_θ,θ + β w̃
 // (p the kinematic pressure, m²/s²). Continuity is a constraint: the pressure is its multiplier.
+// With an absorbing layer (NsParams::absorbing_start) each momentum equation gains −λ(r)·u, the velocity
+// form of the 2D vorticity's sink −λζ (they differ by ∇λ × u, small where λ varies slowly).
 // The staggered grid: u_r on the rings ξ_i at θ_{j+½}, u_θ at the ring midpoints ξ_{i+½} and θ_j, w̃ and p
 // at the cell centres (ξ_{i+½}, θ_{j+½}); the base's Ψ on the nodes (ξ_i, θ_j) gives U_r = Ψ_θ/r on the
 // u_r points and U_θ = −Ψ_ξ/r on the u_θ points by one difference each, so the problem is affine in the

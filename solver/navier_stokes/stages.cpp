@@ -83,7 +83,7 @@ void diffusion_rhs_ring(const PolarGrid& g, const NsParams& p, double dt, const 
                         const double* N, const double* N_prev, double w1, double w0, double* f, double& acc) {
   const int n = g.n_theta;
   const double *zm = zeta + size_t(i - 1) * n, *z0 = zeta + size_t(i) * n, *zp = zeta + size_t(i + 1) * n;
-  const double sigma = 2.0 * g.r[i] * g.r[i] / (p.nu * dt);
+  const double sigma = 2.0 * g.r[i] * g.r[i] / (p.nu * dt) - absorbing_shift(g, p, i);
   const XiFlux x = xi_flux(g, i);
   const double inv_h2 = 1.0 / (x.h * x.h), inv_t2 = 1.0 / (g.d_theta * g.d_theta), two_nu = 2.0 / p.nu;
   double* __restrict out = f;
@@ -118,7 +118,20 @@ double circulation_flux(const PolarGrid& g, const NsParams& p, const double* psi
     const double z_xi = w[0] * z[j] + w[1] * z[j - n] + w[2] * z[j - 2 * n];
     flux += (-p_theta * z[j] + p.nu * z_xi) * g.d_theta;
   }
-  return flux;
+  return flux - absorbed_circulation(g, p, zeta);
+}
+
+double absorbed_circulation(const PolarGrid& g, const NsParams& p, const double* zeta) {
+  const int n = g.n_theta;
+  double sum = 0.0;
+  for (int i = 1; i + 1 < g.n_r; ++i) {
+    const double lambda = absorbing_rate_at(p, g.r[i]);
+    if (lambda == 0.0) continue;
+    double ring = 0.0;
+    for (int j = 0; j < n; ++j) ring += zeta[size_t(i) * n + j];
+    sum += lambda * g.r[i] * g.r[i] * g.ring_width(i) * ring * g.d_theta;
+  }
+  return sum;
 }
 
 void outer_vorticity(const PolarGrid& g, const NsParams& p, double dt, const double* psi, const double* zeta,

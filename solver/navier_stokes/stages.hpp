@@ -64,10 +64,30 @@ void advection_field(const PolarGrid& g, const NsParams& p, const double* psi, c
                      double* rate = nullptr);
 
 /// The Crank–Nicolson right-hand side on ring i (1 ≤ i ≤ n_r − 2), 1/s:
-///     f_j = −σ_i ζ_j − (ζ_ξξ + ζ_θθ)_j + (2/ν)(w1 N_j + w0 N_prev_j),   σ_i = 2J_i/(νΔt)
+///     f_j = −(σ_i − s_i) ζ_j − (ζ_ξξ + ζ_θθ)_j + (2/ν)(w1 N_j + w0 N_prev_j),   σ_i = 2J_i/(νΔt)
+/// (s_i = absorbing_shift: the layer's sink, Crank–Nicolson; the Helmholtz shift is σ_i + s_i)
 /// (N_prev null: the Euler start, N alone). Adds Σ_j f_j to acc (a finiteness check).
 void diffusion_rhs_ring(const PolarGrid& g, const NsParams& p, double dt, const double* zeta, int i,
                         const double* N, const double* N_prev, double w1, double w0, double* f, double& acc);
+
+/// λ(r) of p's absorbing layer at radius r (m), 1/s: absorbing_rate·((r − r_s)/(R − r_s))² beyond
+/// r_s = absorbing_start·a, 0 inside it or without a layer (operator.hpp).
+inline double absorbing_rate_at(const NsParams& p, double r) {
+  const double rs = p.absorbing_start * p.a, R = p.outer_over_a * p.a;
+  if (!(p.absorbing_start > 0.0) || !(r > rs)) return 0.0;
+  const double x = (r - rs) / (R - rs);
+  return p.absorbing_rate * x * x;
+}
+
+/// The layer's term on ring i in the units of the Helmholtz shift: s_i = J_i λ(r_i)/ν (dimensionless), so
+/// that the vorticity row (the equation times 1/ν) reads ζ_ξξ + ζ_θθ − s_i ζ − N/ν = 0.
+inline double absorbing_shift(const PolarGrid& g, const NsParams& p, int i) {
+  return g.r[i] * g.r[i] * absorbing_rate_at(p, g.r[i]) / p.nu;
+}
+
+/// The circulation the layer removes, ∫∫ λ ζ dA = Σ_{0<i<N} λ_i J_i h_i Σ_j ζ_ij Δθ (h_i = ring_width(i)),
+/// m²/s²; 0 without a layer.
+double absorbed_circulation(const PolarGrid& g, const NsParams& p, const double* zeta);
 
 /// ψ_θ at column j of the ring ps (central, periodic), m²/s.
 inline double psi_theta(const double* ps, int j, int n, double d_theta) {
@@ -84,7 +104,8 @@ inline bool outflow(const NsParams& p, double p_theta) {
 /// w_0 ζ_N + w_1 ζ_{N−1} + w_2 ζ_{N−2}, the weights w (1 per unit ξ).
 std::array<double, 3> outer_slope_weights(const PolarGrid& g);
 
-/// dΓ_R/dt = Σ_j (−ψ_θ ζ + ν ζ_ξ)|_R Δθ (ζ_ξ by outer_slope_weights) of the fields psi, zeta, m²/s².
+/// dΓ_R/dt = Σ_j (−ψ_θ ζ + ν ζ_ξ)|_R Δθ (ζ_ξ by outer_slope_weights) − absorbed_circulation of the fields
+/// psi, zeta, m²/s².
 double circulation_flux(const PolarGrid& g, const NsParams& p, const double* psi, const double* zeta);
 
 /// ζ on the outer ring a step dt later into out (n_θ values), 1/s: 0 on inflow; on outflow

@@ -368,7 +368,7 @@ TEST_CASE("the resolved case: potential text unchanged, navier-stokes text reads
   CHECK(n.source_text ==
         "title = \"Spinning cylinder\"\n\n[model]\nflow = \"navier-stokes\"\n\n[cylinder]\nradius = 0.005\n"
         "spin = 2.0\n\n[flow]\nspeed = 0.01\ndensity = 1.225\npressure = 0.0\nviscosity = 1e-06\n\n[domain]\n"
-        "outer_radius = 100.0\n\n[grid]\nspacing = \"geometric\"\nrefine = 1.0\n\n[solver]\n"
+        "outer_radius = 100.0\nabsorbing_layer = 50.0\nabsorbing_strength = 2.0\n\n[grid]\nspacing = \"geometric\"\nrefine = 1.0\n\n[solver]\n"
         "advection_order = 4\nadvection_order_xi = 2\nwall_closure = \"jensen\"\n\n[time]\n"
         "mode = \"auto\"\nend = 300.0\ndt = 0.0\ncfl = 0.7\nmean_tolerance = 0.001\ncheckpoint_interval = "
         "10.0\n"
@@ -455,4 +455,32 @@ TEST_CASE("navier-stokes: Re below 0.01 is refused by the key that sets it, pote
   CHECK(parse(ns_with("reynolds = 0.01\n")).scene.reynolds() == 0.01);
   CHECK(parse(ns_with("viscosity = 1.0\n"), {"flow.speed=0"}).scene.viscosity == 1.0);  // still fluid: no Re
   CHECK(parse(scene + "reynolds = 1e-3\n").scene.reynolds() == 1e-3);
+}
+
+TEST_CASE("domain.absorbing_layer: the scene's rule, as given, and refused out of range", "[io][case]") {
+  // The rule: a layer from R/2 where the wake sheds (Re ≥ 60, α ≤ 1) and R ≥ 50a; none elsewhere.
+  const Case shed = parse(ns_scene);
+  CHECK(shed.grid.absorbing_layer == 50.0);
+  CHECK(shed.grid.absorbing_strength == 2.0);
+  CHECK(ns_params(shed).absorbing_start == 50.0);
+  CHECK(ns_params(shed).absorbing_rate == Approx(2.0 * 0.01 / 0.01));  // 2 U/D in 1/s (D = 1 cm, U = 1 cm/s)
+  CHECK(parse(ns_scene, {"cylinder.spin=3.6"}).grid.absorbing_layer == 0.0);  // α 1.8: steady, no layer
+  CHECK(parse(ns_scene, {"domain.outer_radius=40"}).grid.absorbing_layer == 0.0);
+  CHECK(parse(ns_scene, {"flow.viscosity=4e-6"}).grid.absorbing_layer == 0.0);  // Re 25
+  // As given, on any scene; 0 turns the rule's layer off; both keys read back.
+  const Case given = parse(ns_scene, {"domain.absorbing_layer=30", "domain.absorbing_strength=1.5"});
+  CHECK(given.grid.absorbing_layer == 30.0);
+  CHECK(ns_params(given).absorbing_rate == Approx(1.5));
+  CHECK_THAT(given.source_text, Contains("outer_radius = 100.0\nabsorbing_layer = 30.0\nabsorbing_strength = 1.5\n"));
+  check_round_trip(given);
+  CHECK(parse(ns_scene, {"domain.absorbing_layer=0"}).grid.absorbing_layer == 0.0);
+  CHECK(parse(ns_scene, {"cylinder.spin=3.6", "domain.absorbing_layer=40"}).grid.absorbing_layer == 40.0);
+  const std::string range = " is out of range: must be 0 (none) or > 1 and < 100 = domain.outer_radius (r/a "
+                            "where the layer begins)";
+  CHECK(error_of(ns_scene + "[domain]\nabsorbing_layer = 100\n") == "test.toml: domain.absorbing_layer: 100" + range);
+  CHECK(error_of(ns_scene + "[domain]\nabsorbing_layer = 0.5\n") == "test.toml: domain.absorbing_layer: 0.5" + range);
+  CHECK(error_of(ns_scene + "[domain]\nabsorbing_strength = 0\n") ==
+        "test.toml: domain.absorbing_strength: 0 is out of range: must be > 0 and <= 100 (the sink λ at R, in U/D)");
+  CHECK(error_of(scene + "[domain]\nabsorbing_layer = 10\n") ==
+        "test.toml: domain.absorbing_layer: is only used with model.flow = \"navier-stokes\"");
 }
