@@ -261,10 +261,8 @@ void read_navier_stokes(const Reader& r, Case& c) {
   const double R = c.grid.outer_radius;
   const std::string layer_range =
       fmt::format("0 (none) or > 1 and < {:g} = domain.outer_radius (r/a where the layer begins)", R);
-  c.grid.absorbing_layer = r.number(
-      "domain", "absorbing_layer", rule_absorbing_layer(scene_sheds(c), R),
-      [R](double v) { return v == 0.0 || (v > 1.0 && v < R); },
-      layer_range.c_str());
+  c.grid.absorbing_layer = r.number("domain", "absorbing_layer", rule_absorbing_layer(scene_sheds(c), R),
+                                     [R](double v) { return v == 0.0 || (v > 1.0 && v < R); }, layer_range.c_str());
   c.grid.absorbing_strength = r.number(
       "domain", "absorbing_strength", c.grid.absorbing_strength, [](double v) { return v > 0.0 && v <= 100.0; },
       "> 0 and <= 100 (the sink λ at R, in U/D)");

@@ -12,6 +12,13 @@ const char* const F = "/forces";
 const char* const T = "/timing";
 const char* const E = "/errors";
 
+/// A dimensionless number of the case's grid request in /parameters (read back into it).
+AttrSpec grid_number(const char* name, const char* description, double GridRequest::*m) {
+  return only(Models::viscous, num(
+                                   P, name, "1", description, [m](const FlowResult& r) { return opt(r.c.grid.*m); },
+                                   [m](FlowResult& r, double v) { r.c.grid.*m = v; }));
+}
+
 /// The viscous rows of /parameters: ν, Re, the time unit and the run's settings.
 std::vector<AttrSpec> viscous_parameter_rows() {
   return {
@@ -42,22 +49,13 @@ std::vector<AttrSpec> viscous_parameter_rows() {
                P, "implicit_rotation", "1: the wall's spin advected by Crank–Nicolson (solver.implicit_rotation), 0: by AB2",
                [](const FlowResult& r) { return opt(r.c.solver.implicit_rotation ? 1.0 : 0.0); },
                [](FlowResult& r, double v) { r.c.solver.implicit_rotation = v != 0.0; })),
-      only(Models::viscous, num(
-                                P, "wall_refinement", "1", "grid.wall_refinement: Δξ_far/Δξ_wall (1: uniform ξ)",
-                                [](const FlowResult& r) { return opt(r.c.grid.wall_refinement); },
-                                [](FlowResult& r, double v) { r.c.grid.wall_refinement = v; })),
-      only(Models::viscous, num(
-                                P, "wall_layer", "1", "grid.wall_layer: ξ-length of the rings' transition",
-                                [](const FlowResult& r) { return opt(r.c.grid.wall_layer); },
-                                [](FlowResult& r, double v) { r.c.grid.wall_layer = v; })),
-      only(Models::viscous, num(
-                                P, "absorbing_layer", "1", "domain.absorbing_layer: r/a where the absorbing layer begins (0: none)",
-                                [](const FlowResult& r) { return opt(r.c.grid.absorbing_layer); },
-                                [](FlowResult& r, double v) { r.c.grid.absorbing_layer = v; })),
-      only(Models::viscous, num(
-                                P, "absorbing_strength", "1", "domain.absorbing_strength: the layer's sink λ at R, in U/D",
-                                [](const FlowResult& r) { return opt(r.c.grid.absorbing_strength); },
-                                [](FlowResult& r, double v) { r.c.grid.absorbing_strength = v; })),
+      grid_number("wall_refinement", "grid.wall_refinement: Δξ_far/Δξ_wall (1: uniform ξ)",
+                  &GridRequest::wall_refinement),
+      grid_number("wall_layer", "grid.wall_layer: ξ-length of the rings' transition", &GridRequest::wall_layer),
+      grid_number("absorbing_layer", "domain.absorbing_layer: r/a where the absorbing layer begins (0: none)",
+                  &GridRequest::absorbing_layer),
+      grid_number("absorbing_strength", "domain.absorbing_strength: the layer's sink λ at R, in U/D",
+                  &GridRequest::absorbing_strength),
   };
 }
 
