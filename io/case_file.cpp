@@ -258,14 +258,6 @@ void read_navier_stokes(const Reader& r, Case& c) {
   c.grid.wall_layer = r.number(
       "grid", "wall_layer", c.grid.wall_layer, [span](double v) { return v > 0.0 && v <= span; },
       "> 0 and <= ln(R/a), R/a = domain.outer_radius (the ξ-length of the spacing's transition)");
-  const double R = c.grid.outer_radius;
-  const std::string layer_range =
-      fmt::format("0 (none) or > 1 and < {:g} = domain.outer_radius (r/a where the layer begins)", R);
-  c.grid.absorbing_layer = r.number("domain", "absorbing_layer", rule_absorbing_layer(scene_sheds(c), R),
-                                     [R](double v) { return v == 0.0 || (v > 1.0 && v < R); }, layer_range.c_str());
-  c.grid.absorbing_strength = r.number(
-      "domain", "absorbing_strength", c.grid.absorbing_strength, [](double v) { return v > 0.0 && v <= 100.0; },
-      "> 0 and <= 100 (the sink λ at R, in U/D)");
   c.grid.wall_refinement_given = r.has("grid", "wall_refinement");
   c.grid.wall_layer_given = r.has("grid", "wall_layer");
   // The scene's scheme goes with the scene's grid (grid_rule.hpp): Jensen's wall closure, and fourth order
@@ -286,6 +278,15 @@ void read_navier_stokes(const Reader& r, Case& c) {
                 : mode == "steady"   ? TimeMode::steady
                 : mode == "periodic" ? TimeMode::periodic
                                      : TimeMode::unsteady;
+  const double R = c.grid.outer_radius;
+  const std::string layer_range =
+      fmt::format("0 (none) or > 1 and < {:g} = domain.outer_radius (r/a where the layer begins)", R);
+  const bool marched = scene_sheds(c) && c.time.mode != TimeMode::steady;  // the rule's layer: not for steady
+  c.grid.absorbing_layer = r.number("domain", "absorbing_layer", rule_absorbing_layer(marched, R),
+                                     [R](double v) { return v == 0.0 || (v > 1.0 && v < R); }, layer_range.c_str());
+  c.grid.absorbing_strength = r.number(
+      "domain", "absorbing_strength", c.grid.absorbing_strength, [](double v) { return v > 0.0 && v <= 100.0; },
+      "> 0 and <= 100 (the sink λ at R, in U/D; a|ω|/D in still fluid)");
   auto non_negative = [](double v) { return v >= 0.0; };
   c.time.end = r.number("time", "end", c.time.end, positive, "> 0 (D/U)");
   c.time.dt = r.number("time", "dt", c.time.dt, non_negative, ">= 0 (D/U; 0: from time.cfl)");

@@ -94,7 +94,7 @@ std::vector<IdentityEntry> checkpoint_identity(const Case& c) {
   id.push_back({"domain.outer_radius", num(g.outer_radius() / p.a)});
   if (p.absorbing_start > 0.0) {  // no layer: no entries, as checkpoints stored before the layer
     id.push_back({"domain.absorbing_layer", num(p.absorbing_start)});
-    id.push_back({"domain.absorbing_strength", num(p.absorbing_rate * 2.0 * p.a / std::max(p.U, std::fabs(p.a * p.omega)))});
+    id.push_back({"domain.absorbing_strength", num(c.grid.absorbing_strength)});
   }
   id.push_back({"grid.n_theta", std::to_string(g.n_theta)});
   id.push_back({"grid.n_r", std::to_string(g.n_r)});

@@ -54,7 +54,7 @@ std::vector<AttrSpec> viscous_parameter_rows() {
       grid_number("wall_layer", "grid.wall_layer: ξ-length of the rings' transition", &GridRequest::wall_layer),
       grid_number("absorbing_layer", "domain.absorbing_layer: r/a where the absorbing layer begins (0: none)",
                   &GridRequest::absorbing_layer),
-      grid_number("absorbing_strength", "domain.absorbing_strength: the layer's sink λ at R, in U/D",
+      grid_number("absorbing_strength", "domain.absorbing_strength: the layer's sink λ at R, in U_ref/D",
                   &GridRequest::absorbing_strength),
   };
 }

@@ -51,6 +51,19 @@ struct TripletSink {
     }
     ++k;
   }
+  /// add() without the merge, for a long run of distinct columns (a duplicate triplet is summed by the
+  /// pattern anyway; the merge's search would be quadratic in the run's length).
+  void add_unmerged(long row, long col, double v) {
+    if (dropped(row)) return;
+    if (first) {
+      run_row = -1;
+      slot.push_back(int(Ti.size()));
+      Ti.push_back(row), Tj.push_back(col), Tx.push_back(v);
+    } else {
+      Tx[size_t(slot[k])] += v;
+    }
+    ++k;
+  }
 };
 
 /// The unknowns' numbering (ψ_q, ζ_q interleaved per node q = i·n_θ + j) and the state x read through it.
@@ -144,7 +157,7 @@ void absorbing_rows(TripletSink& sink, const Unknowns& u, const PolarGrid& g, co
     const double lambda = absorbing_rate_at(p, g.r[i]);
     if (lambda == 0.0) continue;
     const double c = -lambda * g.r[i] * g.r[i] * g.ring_width(i) * ff;
-    for (int j = 0; j < n; ++j) sink.add(gamma, u.cz(i, j), c);
+    for (int j = 0; j < n; ++j) sink.add_unmerged(gamma, u.cz(i, j), c);
   }
 }
 

@@ -480,7 +480,11 @@ TEST_CASE("domain.absorbing_layer: the scene's rule, as given, and refused out o
   CHECK(error_of(ns_scene + "[domain]\nabsorbing_layer = 100\n") == "test.toml: domain.absorbing_layer: 100" + range);
   CHECK(error_of(ns_scene + "[domain]\nabsorbing_layer = 0.5\n") == "test.toml: domain.absorbing_layer: 0.5" + range);
   CHECK(error_of(ns_scene + "[domain]\nabsorbing_strength = 0\n") ==
-        "test.toml: domain.absorbing_strength: 0 is out of range: must be > 0 and <= 100 (the sink λ at R, in U/D)");
+        "test.toml: domain.absorbing_strength: 0 is out of range: must be > 0 and <= 100 (the sink λ at R, in U/D; "
+        "a|ω|/D in still fluid)");
+  // A steady solve of a shedding scene gets no layer from the rule: it would only add the layer's bias.
+  CHECK(parse(ns_scene, {"time.mode=steady"}).grid.absorbing_layer == 0.0);
+  CHECK(parse(ns_scene, {"time.mode=periodic"}).grid.absorbing_layer == 50.0);
   CHECK(error_of(scene + "[domain]\nabsorbing_layer = 10\n") ==
         "test.toml: domain.absorbing_layer: is only used with model.flow = \"navier-stokes\"");
 }
