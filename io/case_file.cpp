@@ -46,9 +46,10 @@ toml::table case_table(const std::string& toml_text, const std::string& origin,
   }
   reject_unknown_keys(t, origin);
   for (const auto& o : overrides) {
-    // A tolerance on the command line supersedes the file's grid and stencil.
+    // A tolerance on the command line supersedes the file's grid (its rings' map too) and stencil.
     if (o.rfind("grid.tolerance=", 0) == 0) {
-      if (auto* g = t.get_as<toml::table>("grid")) g->erase("n_theta"), g->erase("n_r");
+      if (auto* g = t.get_as<toml::table>("grid"))
+        for (const char* k : {"n_theta", "n_r", "wall_refinement", "wall_layer"}) g->erase(k);
       if (auto* s = t.get_as<toml::table>("solver")) s->erase("stencil");
     }
     overridden.push_back(apply_override(t, o));
@@ -279,8 +280,7 @@ void read_navier_stokes(const Reader& r, Case& c) {
                 : mode == "periodic" ? TimeMode::periodic
                                      : TimeMode::unsteady;
   const double R = c.grid.outer_radius;
-  const std::string layer_range =
-      fmt::format("0 (none) or > 1 and < {:g} = domain.outer_radius (r/a where the layer begins)", R);
+  const std::string layer_range = fmt::format("0 (none) or > 1 and < {:g} = domain.outer_radius (r/a where the layer begins)", R);
   const bool marched = scene_sheds(c) && c.time.mode != TimeMode::steady;  // the rule's layer: not for steady
   c.grid.absorbing_layer = r.number("domain", "absorbing_layer", rule_absorbing_layer(marched, R),
                                      [R](double v) { return v == 0.0 || (v > 1.0 && v < R); }, layer_range.c_str());

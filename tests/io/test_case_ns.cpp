@@ -488,3 +488,17 @@ TEST_CASE("domain.absorbing_layer: the scene's rule, as given, and refused out o
   CHECK(error_of(scene + "[domain]\nabsorbing_layer = 10\n") ==
         "test.toml: domain.absorbing_layer: is only used with model.flow = \"navier-stokes\"");
 }
+
+TEST_CASE("grid.tolerance on the command line supersedes the file's whole grid, its rings' map too",
+          "[io][case]") {
+  const std::string file = ns_scene + "[grid]\nn_theta = 288\nn_r = 240\nwall_refinement = 3.0\nwall_layer = 0.5\n";
+  const Case given = parse(file);
+  CHECK(given.grid.wall_refinement_given);
+  CHECK(given.grid.wall_refinement == 3.0);
+  const Case t = parse(file, {"grid.tolerance=0.001"});
+  CHECK_FALSE(t.grid.n_theta_given);
+  CHECK(t.grid.n_r == 0);
+  CHECK_FALSE(t.grid.wall_refinement_given);
+  CHECK_FALSE(t.grid.wall_layer_given);
+  CHECK(t.grid.wall_refinement == kNsDefaultWallRefinement);
+}
