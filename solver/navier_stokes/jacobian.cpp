@@ -154,9 +154,9 @@ void absorbing_rows(TripletSink& sink, const Unknowns& u, const PolarGrid& g, co
   const int n = g.n_theta, iN = g.n_r - 1;
   const double ff = g.d_xi(iN - 1) / (2.0 * M_PI * p.nu) * s_zeta * g.d_theta;  // outer_rows' flux scale
   for (int i = 1; i < iN; ++i) {
-    const double lambda = absorbing_rate_at(p, g.r[i]);
-    if (lambda == 0.0) continue;
-    const double c = -lambda * g.r[i] * g.r[i] * g.ring_width(i) * ff;
+    const double w = absorbing_weight(g, p, i);
+    if (w == 0.0) continue;
+    const double c = -w * ff;
     for (int j = 0; j < n; ++j) sink.add_unmerged(gamma, u.cz(i, j), c);
   }
 }

@@ -176,8 +176,10 @@ NsOperator::NsOperator(const NsParams& p, double dt) : p_(p), dt_(dt) {
   const int nr = grid_.n_r, n = grid_.n_theta;
   impl_ = std::make_unique<Impl>();
   std::vector<double> sigma(nr), zero(nr, 0.0);
-  for (int i = 0; i < nr; ++i)  // the implicit diffusion's shift, and the absorbing layer's (stages.hpp)
-    sigma[i] = 2.0 * grid_.r[i] * grid_.r[i] / (p.nu * dt) + (i > 0 && i + 1 < nr ? absorbing_shift(grid_, p, i) : 0.0);
+  for (int i = 0; i < nr; ++i) {  // the implicit diffusion's shift, and the absorbing layer's (stages.hpp)
+    sigma[i] = 2.0 * grid_.r[i] * grid_.r[i] / (p.nu * dt);
+    if (i > 0 && i + 1 < nr) sigma[i] += absorbing_shift(grid_, p, i);
+  }
   impl_->helmholtz = std::make_unique<ModeSolver>(grid_, sigma, OuterBoundary::dirichlet, p.threads);
   impl_->poisson = std::make_unique<ModeSolver>(grid_, zero, OuterBoundary::neumann, p.threads);
   plan_fields(*impl_, nr, n, p.threads);

@@ -125,11 +125,11 @@ double absorbed_circulation(const PolarGrid& g, const NsParams& p, const double*
   const int n = g.n_theta;
   double sum = 0.0;
   for (int i = 1; i + 1 < g.n_r; ++i) {
-    const double lambda = absorbing_rate_at(p, g.r[i]);
-    if (lambda == 0.0) continue;
+    const double w = absorbing_weight(g, p, i);
+    if (w == 0.0) continue;
     double ring = 0.0;
     for (int j = 0; j < n; ++j) ring += zeta[size_t(i) * n + j];
-    sum += lambda * g.r[i] * g.r[i] * g.ring_width(i) * ring * g.d_theta;
+    sum += w * ring * g.d_theta;
   }
   return sum;
 }

@@ -85,8 +85,14 @@ inline double absorbing_shift(const PolarGrid& g, const NsParams& p, int i) {
   return g.r[i] * g.r[i] * absorbing_rate_at(p, g.r[i]) / p.nu;
 }
 
-/// The circulation the layer removes, ∫∫ λ ζ dA = Σ_{0<i<N} λ_i J_i h_i Σ_j ζ_ij Δθ (h_i = ring_width(i)),
-/// m²/s²; 0 without a layer.
+/// Ring i's weight in the circulation the layer removes, λ_i J_i h_i (h_i = ring_width(i)), m²/s: per unit ζ
+/// and Δθ.
+inline double absorbing_weight(const PolarGrid& g, const NsParams& p, int i) {
+  return absorbing_rate_at(p, g.r[i]) * g.r[i] * g.r[i] * g.ring_width(i);
+}
+
+/// The circulation the layer removes, ∫∫ λ ζ dA = Σ_{0<i<N} absorbing_weight_i Σ_j ζ_ij Δθ, m²/s²; 0 without
+/// a layer.
 double absorbed_circulation(const PolarGrid& g, const NsParams& p, const double* zeta);
 
 /// ψ_θ at column j of the ring ps (central, periodic), m²/s.
