@@ -4,15 +4,14 @@
 
 #include <umfpack.h>
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <random>
 #include <stdexcept>
 #include <string>
 
 #include "solver/navier_stokes/lu.hpp"
+#include "solver/navier_stokes/map_arnoldi.hpp"
 #include "solver/navier_stokes/shifted_lu.hpp"
 #include "solver/navier_stokes/spanwise.hpp"
 #include "solver/navier_stokes/stages.hpp"
@@ -147,64 +146,22 @@ EigenProblem half_step_pressure(EigenProblem J0) {
   return J0;
 }
 
-/// The Ritz pairs of the k × k Hessenberg H (H(k, k − 1) the next subdiagonal), largest |μ| first: each
-/// value with its estimate |H(k, k−1) y_k|/‖y‖ of ‖P x − μ x‖ and its vector y.
-struct Ritz {
-  std::complex<double> mu;
-  double residual;
-  Eigen::VectorXcd y;
-};
-std::vector<Ritz> ritz_pairs(const Eigen::MatrixXd& H, int k) {
-  Eigen::EigenSolver<Eigen::MatrixXd> es(H.topLeftCorner(k, k));
-  std::vector<Ritz> r;
-  for (int j = 0; j < k; ++j) {
-    const Eigen::VectorXcd y = es.eigenvectors().col(j);
-    r.push_back({es.eigenvalues()(j), std::abs(H(k, k - 1) * y(k - 1)) / y.norm(), y});
-  }
-  std::sort(r.begin(), r.end(), [](const Ritz& a, const Ritz& b) { return std::abs(a.mu) > std::abs(b.mu); });
-  return r;
-}
-
-/// Arnoldi on P (classical Gram–Schmidt twice) from o.start, or a random vector, mapped once (consistent
-/// constraints); stops at o.krylov vectors, or once the leading Ritz estimate meets FloquetOptions'. The
-/// multipliers, their estimates, the periods run and the leading Ritz vector's real part into res.
+/// Arnoldi on P from o.start, or a random vector (map_arnoldi): stops at o.krylov vectors, or once the
+/// leading Ritz estimate meets FloquetOptions'. The multipliers, their estimates, the periods run and the
+/// leading Ritz vector's real part into res.
 void arnoldi(const PeriodMap& P, const FloquetOptions& o, size_t n, FloquetResult& res) {
-  const int m = std::max(o.krylov, o.count + 2);
-  Eigen::MatrixXd V(Eigen::Index(n), m + 1), H = Eigen::MatrixXd::Zero(m + 1, m);
-  std::vector<double> v = o.start;
-  if (v.size() != n) {
-    std::mt19937 rng(o.seed);
-    std::normal_distribution<double> gauss;
-    v.resize(n);
-    for (double& z : v) z = gauss(rng);
-  }
-  v = P(v), ++res.periods;
-  Eigen::Map<Eigen::VectorXd> vm(v.data(), Eigen::Index(n));
-  V.col(0) = vm / vm.norm();
-  int k = 0;
-  while (k < m) {
-    std::vector<double> x(V.col(k).data(), V.col(k).data() + n);
-    std::vector<double> w = P(x);
-    ++res.periods;
-    Eigen::Map<Eigen::VectorXd> wm(w.data(), Eigen::Index(n));
-    for (int pass = 0; pass < 2; ++pass) {
-      const Eigen::VectorXd h = V.leftCols(k + 1).transpose() * wm;
-      wm -= V.leftCols(k + 1) * h;
-      H.col(k).head(k + 1) += h;
-    }
-    H(k + 1, k) = wm.norm();
-    ++k;
-    if (!(H(k, k - 1) > 1e-14 * H.col(k - 1).head(k).norm())) break;
-    V.col(k) = wm / H(k, k - 1);
-    if (k < o.count + 2 || !(o.tolerance > 0.0 || o.relative > 0.0)) continue;
-    const Ritz lead = ritz_pairs(H, k).front();
-    if (o.met(lead.mu, lead.residual)) break;
-  }
-  const std::vector<Ritz> ritz = ritz_pairs(H, k);
-  for (int r = 0; r < std::min(o.count, int(ritz.size())); ++r)
-    res.multipliers.push_back(ritz[size_t(r)].mu), res.residuals.push_back(ritz[size_t(r)].residual);
-  const Eigen::VectorXd x = V.leftCols(k) * ritz.front().y.real();
-  res.mode.assign(x.data(), x.data() + n);
+  MapArnoldiOptions mo;
+  mo.krylov = std::max(o.krylov, o.count + 2);
+  mo.min_vectors = o.count + 2;
+  mo.start = o.start, mo.seed = o.seed;
+  const bool stops = o.tolerance > 0.0 || o.relative > 0.0;
+  const MapArnoldiResult r =
+      map_arnoldi([&](const std::vector<double>& x) { return P(x); }, n, mo,
+                  [&](const std::vector<MapRitz>& ritz) { return stops && o.met(ritz.front().mu, ritz.front().residual); });
+  res.periods += r.products;
+  for (int k = 0; k < std::min(o.count, int(r.ritz.size())); ++k)
+    res.multipliers.push_back(r.ritz[size_t(k)].mu), res.residuals.push_back(r.ritz[size_t(k)].residual);
+  res.mode = r.leading;
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "solver/gmres.hpp"
+#include "solver/navier_stokes/state_vector.hpp"
 
 namespace magnus {
 
@@ -24,46 +25,18 @@ NsState period_map(const NsOperator& op, const NsState& s, int N,
 
 namespace {
 
-/// Factors that make the blocks of a state dimensionless (multiply by them to get an unknown): ζ·D/U,
-/// ψ/(UD), N/U², Γ_R/(UD), (dΓ_R/dt)/U², and a time·U/D. U_ref = U, or a|ω| without a freestream.
-struct Scales {
-  double zeta, psi, N, Gamma, flux, time;
-};
-Scales scales_of(const NsParams& p) {
-  const double U = p.U > 0.0 ? p.U : std::fabs(p.a * p.omega), D = 2.0 * p.a;
-  return {D / U, 1.0 / (U * D), 1.0 / (U * U), 1.0 / (U * D), 1.0 / (U * U), U / D};
-}
-
-/// What the shooting keeps: the parameters, N, the node count n and the scales; counts the steps taken.
+/// What the shooting keeps: the parameters, N, the node count n and the state's scaled unknowns (c); counts
+/// the steps taken.
 struct Shooting {
   const NsParams& p;
   int N;
   size_t n;
-  Scales c;
+  StateVector c;
   const std::function<bool(const NsState&)>& on_period;
   long steps = 0;
 
-  /// The unknowns of a state: [ζ | ψ | N^{n−1} | Γ_R | dΓ_R/dt^{n−1}], scaled (an absent N^{n−1}: 0).
-  std::vector<double> pack(const NsState& s) const {
-    std::vector<double> x(3 * n + 2, 0.0);
-    for (size_t q = 0; q < n; ++q) x[q] = s.zeta[q] * c.zeta, x[n + q] = s.psi[q] * c.psi;
-    if (s.N_prev.size() == n)
-      for (size_t q = 0; q < n; ++q) x[2 * n + q] = s.N_prev[q] * c.N;
-    x[3 * n] = s.Gamma_R * c.Gamma;
-    x[3 * n + 1] = s.Gamma_flux_prev * c.flux;
-    return x;
-  }
-  /// The state of the unknowns x, at t = 0 after a step of dt (s), so that AB2 goes on with its own Δt.
-  NsState unpack(const std::vector<double>& x, double dt) const {
-    NsState s;
-    s.zeta.resize(n), s.psi.resize(n), s.N_prev.resize(n);
-    for (size_t q = 0; q < n; ++q)
-      s.zeta[q] = x[q] / c.zeta, s.psi[q] = x[n + q] / c.psi, s.N_prev[q] = x[2 * n + q] / c.N;
-    s.Gamma_R = x[3 * n] / c.Gamma;
-    s.Gamma_flux_prev = x[3 * n + 1] / c.flux;
-    s.dt_prev = dt;
-    return s;
-  }
+  std::vector<double> pack(const NsState& s) const { return c.pack(s); }
+  NsState unpack(const std::vector<double>& x, double dt) const { return c.unpack(x, dt); }
   /// Φ_T(x) on op (Δt = T/N), scaled; first (if given): the unknowns after the first step.
   std::vector<double> map(const NsOperator& op, const std::vector<double>& x, std::vector<double>* first) {
     bool at_first = true;
@@ -145,7 +118,7 @@ OrbitResult solve_periodic_orbit(const NsParams& p, const NsState& start, double
   if (!(T0 > 0.0) || !std::isfinite(T0)) throw std::invalid_argument("solve_periodic_orbit: needs a period > 0");
   if (start.zeta.size() != n || start.psi.size() != n)
     throw std::invalid_argument("solve_periodic_orbit: the state does not match the grid");
-  Shooting sh{p, o.steps, n, scales_of(p), o.on_period};
+  Shooting sh{p, o.steps, n, StateVector(p, n), o.on_period};
   OrbitResult res;
   res.steps = o.steps;
   std::vector<double> x = sh.pack(start), x_old, first;

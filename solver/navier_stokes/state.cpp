@@ -8,6 +8,7 @@
 #include "solver/navier_stokes/arakawa.hpp"
 #include "solver/navier_stokes/operator.hpp"
 #include "solver/navier_stokes/rotation.hpp"
+#include "solver/navier_stokes/state_vector.hpp"
 
 namespace magnus {
 
@@ -108,6 +109,37 @@ void ns_velocity(const PolarGrid& g, const std::vector<double>& psi, std::vector
       u_r[q] = psi_theta_at(psi, i, j, n, g.d_theta) / g.r[i];
       u_theta[q] = -psi_xi_at(psi, i, j, n, d) / g.r[i];
     }
+}
+
+}  // namespace magnus
+
+namespace magnus {
+
+StateVector::StateVector(const NsParams& p, size_t n) : nodes(n) {
+  const double U = p.U > 0.0 ? p.U : std::fabs(p.a * p.omega), D = 2.0 * p.a;
+  zeta = D / U, psi = 1.0 / (U * D), N = 1.0 / (U * U), Gamma = 1.0 / (U * D), flux = 1.0 / (U * U), time = U / D;
+}
+
+std::vector<double> StateVector::pack(const NsState& s) const {
+  const size_t n = nodes;
+  std::vector<double> x(size(), 0.0);
+  for (size_t q = 0; q < n; ++q) x[q] = s.zeta[q] * zeta, x[n + q] = s.psi[q] * psi;
+  if (s.N_prev.size() == n)
+    for (size_t q = 0; q < n; ++q) x[2 * n + q] = s.N_prev[q] * N;
+  x[3 * n] = s.Gamma_R * Gamma;
+  x[3 * n + 1] = s.Gamma_flux_prev * flux;
+  return x;
+}
+
+NsState StateVector::unpack(const std::vector<double>& x, double dt) const {
+  const size_t n = nodes;
+  NsState s;
+  s.zeta.resize(n), s.psi.resize(n), s.N_prev.resize(n);
+  for (size_t q = 0; q < n; ++q) s.zeta[q] = x[q] / zeta, s.psi[q] = x[n + q] / psi, s.N_prev[q] = x[2 * n + q] / N;
+  s.Gamma_R = x[3 * n] / Gamma;
+  s.Gamma_flux_prev = x[3 * n + 1] / flux;
+  s.dt_prev = dt;
+  return s;
 }
 
 }  // namespace magnus
