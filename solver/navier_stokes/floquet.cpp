@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "solver/gmres.hpp"
 #include "solver/navier_stokes/lu.hpp"
 #include "solver/navier_stokes/map_arnoldi.hpp"
 #include "solver/navier_stokes/shifted_lu.hpp"
@@ -19,12 +20,6 @@
 namespace magnus {
 
 namespace {
-
-double norm2(const std::vector<double>& v) {
-  double s = 0.0;
-  for (double x : v) s += x * x;
-  return std::sqrt(s);
-}
 
 /// Triplets of matrices summed with weights (compressed by compress_triplets).
 struct Triplets {

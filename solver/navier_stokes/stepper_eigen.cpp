@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "solver/gmres.hpp"
 #include "solver/navier_stokes/map_arnoldi.hpp"
 #include "solver/navier_stokes/periodic_orbit.hpp"
 #include "solver/navier_stokes/stability.hpp"
@@ -14,12 +15,6 @@
 namespace magnus {
 
 namespace {
-
-double norm2(const std::vector<double>& v) {
-  double s = 0.0;
-  for (double x : v) s += x * x;
-  return std::sqrt(s);
-}
 
 /// Whether μ is one of a complex pair (not real to rounding).
 bool complex_value(std::complex<double> mu) { return std::fabs(mu.imag()) > 1e-10 * std::abs(mu); }
