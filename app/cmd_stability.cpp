@@ -152,6 +152,7 @@ Json points_json(const HopfPoint& h) {
                  {"growth_rate", e.growth()},
                  {"frequency", e.mode.imag()},
                  {"tracked", e.tracked},
+                 {"seeded", e.seeded},
                  {"newton_seconds", e.newton_seconds},
                  {"eigenvalue_seconds", e.stability.seconds},
                  {"solves", e.stability.solves}});
@@ -170,7 +171,9 @@ void critical_report(const NsParams& p, const CriticalRange& range, const std::s
     if (!json)
       std::fprintf(stderr, "  %s = %-9.6g growth rate %+.6f U/D, St %.4f  (%s%s)\n", x, e.x, e.growth(),
                    eigen_strouhal(e.mode), e.growth() < 0.0 ? "stable" : "unstable",
-                   e.tracked ? ", the pair tracked" : "");
+                   e.seeded    ? ", the pair from the march's Arnoldi"
+                   : e.tracked ? ", the pair tracked"
+                               : "");
   });
   const double alpha = p.a * p.omega / p.U;
   text += fmt::format("critical {:<5} {:.4f} ± {:.1g}  ({}; bracket [{:.4f}, {:.4f}], {} steady states, {:.1f} s)\n",

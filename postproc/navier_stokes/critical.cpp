@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "postproc/navier_stokes/regula_falsi.hpp"
+#include "solver/navier_stokes/stepper_eigen.hpp"
 
 namespace magnus {
 
@@ -21,7 +22,9 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 NewtonResult newton_at(const NsParams& p, HopfParameter which, double x, const NsState* guess) {
   const NsParams q = with_parameter(p, which, x);
   SteadyJacobian jac(q);
-  return solve_steady(jac, guess ? *guess : potential_guess(q, jac.grid()));
+  NewtonOptions no;
+  no.chord_ratio = 0.1;  // the last steps on earlier factors while they contract ten-fold (same tolerance)
+  return solve_steady(jac, guess ? *guess : potential_guess(q, jac.grid()), no);
 }
 
 /// Natural continuation from the converged (x0, s0) to x: Newton at each step from the last state, the step
@@ -59,15 +62,16 @@ std::optional<NsState> steady_from_safe(const NsParams& p, HopfParameter which, 
   return continue_to(p, which, safe, std::move(s.state), x);
 }
 
-/// The steady state at x: from `from` by continuation, else from `guess` (a state of other parameters on
-/// the same grid), else from the potential flow, else steady_from_safe.
+/// The steady state at x: Newton from `guess` (a state of other parameters on the same grid, or one
+/// interpolated between two), else from `from` by continuation, else from the potential flow, else
+/// steady_from_safe.
 std::optional<NsState> steady_at(const NsParams& p, HopfParameter which, double x, const HopfEvaluation* from,
                                  const NsState* guess) {
-  if (from && from->converged) return continue_to(p, which, from->x, from->state, x);
   if (guess) {
     NewtonResult g = newton_at(p, which, x, guess);
     if (g.converged) return std::move(g.state);
   }
+  if (from && from->converged) return continue_to(p, which, from->x, from->state, x);
   NewtonResult r = newton_at(p, which, x, nullptr);
   if (r.converged) return std::move(r.state);
   return steady_from_safe(p, which, x);
@@ -81,18 +85,58 @@ std::complex<double> nearest_pair(const StabilityResult& r, std::complex<double>
   return best;
 }
 
-/// e's eigenvalues by one shift-invert search at `near` (U/D), and the pair nearest it as e's mode.
+/// e's eigenvalues by one shift-invert search at `near` (U/D), and the pair nearest it as e's mode; `want`
+/// Ritz values nearest the shift must converge (1 when `near` is already the eigenvalue to a few 1e-3).
 void track(const NsParams& p, HopfParameter which, HopfEvaluation& e, std::complex<double> near,
-           const HopfOptions& o) {
+           const HopfOptions& o, int want = 2) {
   StabilityOptions so;
   so.eigensolver = o.full.eigensolver;
   so.shifts = {near};
   so.extra_shifts = 0;
-  so.want = 2;
+  so.want = want;
   so.krylov = o.track_krylov;
   e.stability = leading_eigenvalues(with_parameter(p, which, e.x), e.state, o.count, so);
   e.mode = nearest_pair(e.stability, near);
   e.tracked = true;
+}
+
+/// The steady state at x (steady_at) and how long Newton took; no eigenvalues yet.
+HopfEvaluation steady_point(const NsParams& p, HopfParameter which, double x, const HopfEvaluation* from,
+                            const NsState* guess) {
+  if (!(p.U > 0.0)) throw std::invalid_argument("onset of shedding: flow.speed must be > 0 (α = aω/U, Re = 2aU/ν)");
+  HopfEvaluation e;
+  e.x = x;
+  const auto t0 = std::chrono::steady_clock::now();
+  std::optional<NsState> s = steady_at(p, which, x, from, guess);
+  e.newton_seconds = seconds_since(t0);
+  e.converged = s.has_value();
+  if (e.converged) e.state = std::move(*s);
+  return e;
+}
+
+/// e's eigenvalues by the full search, and its leading pair as the mode.
+void full_search(const NsParams& p, HopfParameter which, HopfEvaluation& e, const HopfOptions& o) {
+  e.stability = leading_eigenvalues(with_parameter(p, which, e.x), e.state, o.count, o.full);
+  e.mode = e.stability.leading_pair().value_or(0.0);
+  e.tracked = false;
+}
+
+/// e's growing pair without the full search: the linearised march's rightmost growing pair (Arnoldi,
+/// stepper_eigen.hpp), then the Jacobian's pair nearest it by one tracked shift. False, e's eigenvalues
+/// unset, when the march finds no growing pair, or the Jacobian's nearest pair does not grow or lies more than
+/// 0.05 U/D from it (another mode: the full search decides then).
+bool seeded_search(const NsParams& p, HopfParameter which, HopfEvaluation& e, const HopfOptions& o) {
+  if (!o.seed_ends) return false;
+  const StepperEigenResult r = stepper_eigenvalues(with_parameter(p, which, e.x), e.state, o.seed);
+  const auto pair = r.leading_pair();
+  if (!pair || pair->real() <= 0.0) return false;
+  HopfEvaluation t = e;
+  track(p, which, t, *pair, o, 1);
+  if (t.mode == 0.0 || t.growth() < 0.0 || std::abs(t.mode - *pair) > 0.05) return false;
+  t.stability.seconds += r.seconds;
+  t.seeded = true;
+  e = std::move(t);
+  return true;
 }
 
 }  // namespace
@@ -115,21 +159,12 @@ double HopfPoint::strouhal() const { return eigen_strouhal(lambda); }
 HopfEvaluation hopf_evaluation(const NsParams& p, HopfParameter which, double x, const HopfEvaluation* from,
                                const std::optional<std::complex<double>>& near, const HopfOptions& o,
                                const NsState* guess) {
-  if (!(p.U > 0.0)) throw std::invalid_argument("onset of shedding: flow.speed must be > 0 (α = aω/U, Re = 2aU/ν)");
-  HopfEvaluation e;
-  e.x = x;
-  const auto t0 = std::chrono::steady_clock::now();
-  std::optional<NsState> s = steady_at(p, which, x, from, guess);
-  e.newton_seconds = seconds_since(t0);
-  e.converged = s.has_value();
+  HopfEvaluation e = steady_point(p, which, x, from, guess);
   if (!e.converged) return e;
-  e.state = std::move(*s);
-  if (near) {
+  if (near)
     track(p, which, e, *near, o);
-  } else {
-    e.stability = leading_eigenvalues(with_parameter(p, which, x), e.state, o.count, o.full);
-    e.mode = e.stability.leading_pair().value_or(0.0);
-  }
+  else
+    full_search(p, which, e, o);
   return e;
 }
 
@@ -140,6 +175,16 @@ struct HopfBracket {
   HopfEvaluation lo, hi;
   Illinois weights;  ///< end 0 is lo, end 1 hi
   double root() const { return weights.root(lo.x, lo.growth(), hi.x, hi.growth()); }
+  /// The next point: the secant through the last two points solved inside the bracket when it falls inside
+  /// the current one (superlinear, and blind to the far ends' curvature), else the Illinois root.
+  double next_root(const std::vector<std::pair<double, double>>& inside) const {
+    if (inside.size() >= 2) {
+      const auto &a = inside[inside.size() - 2], &b = inside.back();
+      const double s = secant_zero(a.first, a.second, b.first, b.second);
+      if (s > std::min(lo.x, hi.x) && s < std::max(lo.x, hi.x)) return s;
+    }
+    return root();
+  }
   /// The unstable side's pairs (x, λ) in the order solved: the mode whose crossing is wanted.
   std::vector<std::pair<double, std::complex<double>>> lineage;
   /// The wanted pair predicted at x, U/D: extrapolated along a line through the two unstable-side points
@@ -155,6 +200,16 @@ struct HopfBracket {
   /// Adds e to the lineage when it grows.
   void note(const HopfEvaluation& e) {
     if (e.growth() >= 0.0) lineage.emplace_back(e.x, e.mode);
+  }
+  /// The steady state at x by linear interpolation between the ends' (Newton's start there): closer than
+  /// the nearer end's by the bracket's curvature term.
+  NsState state_at(double x) const {
+    const double w = (x - lo.x) / (hi.x - lo.x);
+    NsState s = lo.state;
+    for (size_t q = 0; q < s.psi.size(); ++q)
+      s.psi[q] += w * (hi.state.psi[q] - lo.state.psi[q]), s.zeta[q] += w * (hi.state.zeta[q] - lo.state.zeta[q]);
+    s.Gamma_R += w * (hi.state.Gamma_R - lo.state.Gamma_R);
+    return s;
   }
   /// The pair at x by linear interpolation between the ends, U/D.
   std::complex<double> pair_at(double x) const { return lo.mode + (hi.mode - lo.mode) * ((x - lo.x) / (hi.x - lo.x)); }
@@ -172,15 +227,31 @@ HopfEvaluation without_state(const HopfEvaluation& e) {
   return c;
 }
 
-/// The ends A and B with the same pair at both: the leading pair of the unstable end (full search there),
-/// tracked at the other. `keep` checks and records each.
+/// The ends A and B with the same pair at both: the growing pair of the unstable end (seeded_search, or the
+/// full search's leading pair), tracked at the other. `keep` checks and records each.
 HopfBracket hopf_ends(const NsParams& p, HopfParameter which, double A, double B, const HopfOptions& o,
                       const std::function<void(const HopfEvaluation&)>& keep, const NsState* guess) {
   HopfBracket k;
-  k.lo = hopf_evaluation(p, which, A, nullptr, std::nullopt, o, guess);
-  const bool a_unstable = k.lo.converged && k.lo.mode != 0.0 && k.lo.growth() >= 0.0;
+  k.lo = steady_point(p, which, A, nullptr, guess);
+  if (!k.lo.converged) keep(k.lo);  // throws: no steady state at A
+  // The growing pair: at A by the march's Arnoldi, else at B by it, else by the full search (A's first).
+  bool a_unstable = seeded_search(p, which, k.lo, o);
+  k.hi = steady_point(p, which, B, &k.lo, nullptr);
+  bool b_done = false;
+  if (!a_unstable) {
+    b_done = k.hi.converged && seeded_search(p, which, k.hi, o);
+    if (!b_done) {
+      full_search(p, which, k.lo, o);
+      a_unstable = k.lo.mode != 0.0 && k.lo.growth() >= 0.0;
+    }
+  }
   if (a_unstable) keep(k.lo);
-  k.hi = hopf_evaluation(p, which, B, &k.lo, a_unstable ? std::optional(k.lo.mode) : std::nullopt, o);
+  if (!b_done && k.hi.converged) {
+    if (a_unstable)
+      track(p, which, k.hi, k.lo.mode, o);
+    else
+      full_search(p, which, k.hi, o);
+  }
   if (!a_unstable && k.lo.converged && k.hi.converged && k.hi.mode != 0.0 && k.hi.growth() >= 0.0)
     track(p, which, k.lo, k.hi.mode, o);  // the stable end's eigenvalues at the mode that turns unstable
   if (!a_unstable) keep(k.lo);
@@ -222,17 +293,20 @@ HopfPoint hopf_point(const NsParams& p, HopfParameter which, double A, double B,
   HopfEvaluation far = k.lo.growth() < 0.0 ? k.lo : k.hi;  // the stable end asked for, with its state
   const double slope = std::fabs(h.at_b.growth() - h.at_a.growth()) / (h.at_b.x - h.at_a.x);
   double root = k.root();
+  std::vector<std::pair<double, double>> latest;  // the points solved inside the bracket, (x, Re λ) in order
   for (int repairs = 0;; ++repairs) {
     h.change = k.hi.x - k.lo.x;
     while (k.hi.x - k.lo.x > o.tol && h.change > 0.5 * o.tol && int(h.evaluations.size()) < o.max_evaluations) {
       const HopfEvaluation& from = std::fabs(root - k.lo.x) <= std::fabs(root - k.hi.x) ? k.lo : k.hi;
       // The pair is tracked as predicted from the unstable side's (the stable side's nearest pair may be
       // another, damped mode).
-      HopfEvaluation m = hopf_evaluation(p, which, root, &from, k.predict(root), o);
+      const NsState between = k.state_at(root);
+      HopfEvaluation m = hopf_evaluation(p, which, root, &from, k.predict(root), o, &between);
       keep(m);
       k.note(m);
+      latest.emplace_back(m.x, m.growth());
       k.replace(std::move(m));
-      const double next = k.root();
+      const double next = k.next_root(latest);
       h.change = std::fabs(next - root);
       root = next;
     }
@@ -261,6 +335,7 @@ HopfPoint hopf_point(const NsParams& p, HopfParameter which, double A, double B,
       (far.x > k.lo.x ? k.hi : k.lo) = far;
     }
     k.weights = Illinois{};
+    latest.clear();  // the stable end was tracked again: start the secant afresh
     root = k.root();
   }
   h.x_c = root, h.lo = k.lo.x, h.hi = k.hi.x;

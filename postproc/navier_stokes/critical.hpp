@@ -2,11 +2,15 @@
 // The onset of shedding as a computed point: where the steady state's leading complex pair (the wake's
 // Hopf mode) crosses the imaginary axis, Re λ(x) = 0, along the spin ratio x = α (the critical spin α_L
 // above which shedding stops) or the Reynolds number x = Re (Re_c, where it starts). The search is a
-// secant iteration on Re λ(x), kept inside its sign-change bracket (regula falsi with the Illinois
-// weight), not bisection: it converges superlinearly. Every steady state comes by Newton's method from the
-// nearest state already solved (natural continuation, the step halved where Newton fails), and only the
-// ends of the bracket get the full eigenvalue search: between them the pair is tracked by one shift-invert
-// search at its predicted position.
+// secant iteration on Re λ(x), kept inside its sign-change bracket (the secant through the last two points
+// when it falls inside, else regula falsi with the Illinois weight), not bisection: it converges
+// superlinearly. Every steady state comes by Newton's method from the state
+// interpolated between the bracket's ends (else by natural continuation from the nearest state solved, the
+// step halved where Newton fails), and only the
+// ends of the bracket get a search of their own: between them the pair is tracked by one shift-invert
+// search at its predicted position. An end's growing pair is first sought by Arnoldi on the linearised
+// march (stepper_eigen.hpp: no factorisation), then tracked there; only where that finds no growing pair
+// does an end get the full shift-invert search.
 #include <complex>
 #include <functional>
 #include <optional>
@@ -15,6 +19,7 @@
 
 #include "solver/navier_stokes/newton.hpp"
 #include "solver/navier_stokes/stability.hpp"
+#include "solver/navier_stokes/stepper_eigen.hpp"
 
 namespace magnus {
 
@@ -39,6 +44,7 @@ struct HopfEvaluation {
   double newton_seconds = 0.0;  ///< wall time of the Newton solves (continuation steps included), s
   std::complex<double> mode;    ///< the tracked pair's member with Im λ > 0, U/D (0 when none was found)
   bool tracked = false;         ///< the eigenvalues from one shift at the predicted pair, not the full search
+  bool seeded = false;          ///< that shift placed at the pair the linearised march found (stepper_eigen.hpp)
   /// Re λ of the tracked pair, U/D: the slow real far-field modes near −0.002 would otherwise bias the crossing.
   double growth() const { return mode.real(); }
 };
@@ -67,12 +73,25 @@ struct HopfOptions {
   /// The full search at the ends, auto's cheaper one: the pair wanted leads at the unstable end. Its shifts
   /// on two threads (a search's points are solved one after another).
   StabilityOptions full = lone_search(quick_stability_options());
+  /// Seek a growing pair at the ends first by Arnoldi on the linearised march, then one tracked shift there
+  /// (at Re 100 on the scene's grid: 25 products and about 25 solves instead of five shifts and 529 solves).
+  bool seed_ends = true;
+  /// That Arnoldi: the march over 2 D/U per product (|μ| = e^{2 Re λ}; frequencies up to Im λ·D/U = π/2),
+  /// stopped when the leading pair's estimate is 6% of |μ|: its λ is then within about 0.01 U/D (at Re 100,
+  /// α 1.6: 0.006 after 25 products; the estimate bounds the residual, not the eigenvalue's error), and the
+  /// tracked shift there finds the Jacobian's.
+  StepperEigenOptions seed = [] {
+    StepperEigenOptions s;
+    s.span = 2.0, s.tol = 6e-2, s.krylov = 40;
+    return s;
+  }();
 };
 
-/// The steady state at parameter value x and its eigenvalues. The state: by continuation from `from` (a
-/// converged point of the same search) in steps halved where Newton fails; without it, Newton from `guess`
-/// (a state of other parameters on the same grid), then from potential_guess, then by continuation from
-/// the safe end (α = 0, or Re = 20). The eigenvalues: the full search when `track` is empty, else one
+/// The steady state at parameter value x and its eigenvalues. The state: Newton from `guess` (a state of
+/// other parameters on the same grid, or one interpolated between two) when given; else by continuation
+/// from `from` (a converged point of the same search) in steps halved where Newton fails; else Newton from
+/// potential_guess, then by continuation from the safe end (α = 0, or Re = 20). Newton takes chord steps
+/// (NewtonOptions::chord_ratio 0.1) while they contract ten-fold. The eigenvalues: the full search when `track` is empty, else one
 /// shift-invert search at *track (U/D), whose pair nearest it is the mode. Throws std::invalid_argument
 /// when U = 0.
 HopfEvaluation hopf_evaluation(const NsParams& p, HopfParameter which, double x, const HopfEvaluation* from,
