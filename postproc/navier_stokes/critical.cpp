@@ -85,16 +85,17 @@ std::complex<double> nearest_pair(const StabilityResult& r, std::complex<double>
   return best;
 }
 
-/// e's eigenvalues by one shift-invert search at `near` (U/D), and the pair nearest it as e's mode; `want`
-/// Ritz values nearest the shift must converge (1 when `near` is already the eigenvalue to a few 1e-3).
+/// e's eigenvalues by one shift-invert search at `near` (U/D), and the pair nearest it as e's mode. sharp:
+/// `near` is already within about 0.01 U/D of the pair (the march's estimate, or extrapolated from two
+/// points of the pair), so the nearest Ritz value alone must converge, from the fewest vectors (16).
 void track(const NsParams& p, HopfParameter which, HopfEvaluation& e, std::complex<double> near,
-           const HopfOptions& o, int want = 2) {
+           const HopfOptions& o, bool sharp = false) {
   StabilityOptions so;
   so.eigensolver = o.full.eigensolver;
   so.shifts = {near};
   so.extra_shifts = 0;
-  so.want = want;
-  so.krylov = o.track_krylov;
+  so.want = sharp ? 1 : 2;
+  so.krylov = sharp ? 16 : o.track_krylov;
   e.stability = leading_eigenvalues(with_parameter(p, which, e.x), e.state, o.count, so);
   e.mode = nearest_pair(e.stability, near);
   e.tracked = true;
@@ -131,7 +132,7 @@ bool seeded_search(const NsParams& p, HopfParameter which, HopfEvaluation& e, co
   const auto pair = r.leading_pair();
   if (!pair || pair->real() <= 0.0) return false;
   HopfEvaluation t = e;
-  track(p, which, t, *pair, o, 1);
+  track(p, which, t, *pair, o, true);
   if (t.mode == 0.0 || t.growth() < 0.0 || std::abs(t.mode - *pair) > 0.05) return false;
   t.stability.seconds += r.seconds;
   t.seeded = true;
@@ -301,7 +302,8 @@ HopfPoint hopf_point(const NsParams& p, HopfParameter which, double A, double B,
       // The pair is tracked as predicted from the unstable side's (the stable side's nearest pair may be
       // another, damped mode).
       const NsState between = k.state_at(root);
-      HopfEvaluation m = hopf_evaluation(p, which, root, &from, k.predict(root), o, &between);
+      HopfEvaluation m = steady_point(p, which, root, &from, &between);
+      if (m.converged) track(p, which, m, k.predict(root), o, k.lineage.size() >= 2);
       keep(m);
       k.note(m);
       latest.emplace_back(m.x, m.growth());

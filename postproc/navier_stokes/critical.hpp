@@ -74,7 +74,7 @@ struct HopfOptions {
   /// on two threads (a search's points are solved one after another).
   StabilityOptions full = lone_search(quick_stability_options());
   /// Seek a growing pair at the ends first by Arnoldi on the linearised march, then one tracked shift there
-  /// (at Re 100 on the scene's grid: 25 products and about 25 solves instead of five shifts and 529 solves).
+  /// (at Re 100 on the scene's grid: 25 products and 17 solves instead of five shifts and 529 solves).
   bool seed_ends = true;
   /// That Arnoldi: the march over 2 D/U per product (|μ| = e^{2 Re λ}; frequencies up to Im λ·D/U = π/2),
   /// stopped when the leading pair's estimate is 6% of |μ|: its λ is then within about 0.01 U/D (at Re 100,
