@@ -50,8 +50,10 @@ TEST_CASE("[validation][onset] Re_c without spin: 46.2–46.8 at St 0.117", "[va
 
 TEST_CASE("[validation][onset] Re 200: shedding stops at alpha 1.91", "[validation][onset]") {
   // Mittal & Kumar 2003: the wake at Re 200 stops shedding at α_L = 1.91 (their DNS). The old search failed
-  // here: Newton from the potential flow found no steady state at α = 1.6.
-  const HopfPoint h = search(scene(200.0, 1.9), HopfParameter::spin_ratio, 1.6, 2.2, 0.002);
+  // here: Newton from the potential flow found no steady state at α = 1.6. Over 1.6–2.2 the steady branch
+  // crosses twice: stable at 1.6 (−0.025 U/D, the bistable region below), unstable at 1.75 (+0.105), stable
+  // again from α_L on; both ends of 1.6–2.2 decay, so the bracket holds only the upper crossing.
+  const HopfPoint h = search(scene(200.0, 1.9), HopfParameter::spin_ratio, 1.75, 2.05, 0.002);
   CHECK(h.x_c == Approx(1.91).margin(0.04));
   CHECK(h.at_a.growth() > 0.0);
   CHECK(h.at_b.growth() < 0.0);
