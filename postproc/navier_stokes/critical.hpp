@@ -82,7 +82,7 @@ struct HopfOptions {
   /// tracked shift there finds the Jacobian's.
   StepperEigenOptions seed = [] {
     StepperEigenOptions s;
-    s.span = 2.0, s.tol = 6e-2, s.krylov = 40;
+    s.tol = 6e-2;
     return s;
   }();
 };

@@ -145,11 +145,13 @@ double stability_speed(const NsParams& p) {
   return p.U > 0.0 ? p.U : std::fabs(p.a * p.omega) > 0.0 ? std::fabs(p.a * p.omega) : p.nu / p.a;
 }
 
-std::optional<std::complex<double>> StabilityResult::leading_pair() const {
+std::optional<std::complex<double>> rightmost_pair(const std::vector<std::complex<double>>& eigenvalues) {
   for (const auto& l : eigenvalues)
     if (l.imag() > 0.0) return l;
   return std::nullopt;
 }
+
+std::optional<std::complex<double>> StabilityResult::leading_pair() const { return rightmost_pair(eigenvalues); }
 
 double StabilityResult::strouhal() const {
   return eigenvalues.empty() ? 0.0 : eigen_strouhal(eigenvalues.front());

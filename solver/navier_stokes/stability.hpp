@@ -112,6 +112,10 @@ struct StabilityResult {
   std::optional<std::complex<double>> leading_pair() const;
 };
 
+/// The first member with Im λ > 0 of eigenvalues sorted rightmost first (the rightmost complex pair's upper
+/// member), if there is one.
+std::optional<std::complex<double>> rightmost_pair(const std::vector<std::complex<double>>& eigenvalues);
+
 /// The Strouhal number of an eigenvalue λ in U/D: St = f·D/U = |Im λ|/(2π).
 inline double eigen_strouhal(std::complex<double> lambda) { return std::fabs(lambda.imag()) / (2.0 * M_PI); }
 

@@ -21,11 +21,7 @@ bool complex_value(std::complex<double> mu) { return std::fabs(mu.imag()) > 1e-1
 
 }  // namespace
 
-std::optional<std::complex<double>> StepperEigenResult::leading_pair() const {
-  for (const auto& l : eigenvalues)
-    if (l.imag() > 0.0) return l;
-  return std::nullopt;
-}
+std::optional<std::complex<double>> StepperEigenResult::leading_pair() const { return rightmost_pair(eigenvalues); }
 
 StepperEigenResult stepper_eigenvalues(const NsParams& p, const NsState& steady, const StepperEigenOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();

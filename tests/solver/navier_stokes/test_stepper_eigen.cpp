@@ -57,7 +57,7 @@ TEST_CASE("[ns][stepper_eigen] Re 80: the stepper's leading pair converges to th
   int products_loose = 0;
   for (double tol : {1e-2, 1e-4}) {
     StepperEigenOptions o;
-    o.span = 2.0, o.tol = tol, o.krylov = 60;
+    o.tol = tol, o.krylov = 60;
     const StepperEigenResult r = stepper_eigenvalues(p, steady.state, o);
     REQUIRE(r.leading_pair());
     const double err = std::abs(*r.leading_pair() - lambda);
@@ -65,7 +65,6 @@ TEST_CASE("[ns][stepper_eigen] Re 80: the stepper's leading pair converges to th
                 << lambda << ", " << r.products << " products of " << r.steps / r.products << " steps");
     CHECK(r.leading_pair()->real() > 0.0);
     CHECK(err < 2.0 * tol);
-    CHECK(r.residuals.front() <= tol);
     if (tol == 1e-2) products_loose = r.products;
     else CHECK(r.products > products_loose);  // it stopped once the tolerance was met
   }
