@@ -95,7 +95,7 @@ bool expand(Krylov& K, int& k, const Op& op) {
 }  // namespace
 
 ShiftSearch shift_invert_arnoldi(const EigenProblem& ep, cplx sigma, int want, int krylov, int max_restarts,
-                                 double tol, void** symbolic, std::mt19937& rng) {
+                                 double tol, void** symbolic, std::mt19937& rng, const cvec* first) {
   ShiftSearch out;
   out.sigma = sigma;
   const ShiftedLu lu(ep, sigma, symbolic);
@@ -109,7 +109,10 @@ ShiftSearch shift_invert_arnoldi(const EigenProblem& ep, cplx sigma, int want, i
   };
   std::normal_distribution<double> gauss;
   cvec start(n);
-  for (auto& z : start) z = {gauss(rng), gauss(rng)};
+  if (first && first->size() == n)
+    start = *first;
+  else
+    for (auto& z : start) z = {gauss(rng), gauss(rng)};
   start = op(start);  // in the range of the operator: no component along the infinite eigenvalues
   const int k_max = krylov_vectors(krylov, want);
   const int keep = std::min(k_max - 10, want + k_max / 4);  // Ritz vectors kept at a restart

@@ -45,9 +45,11 @@ struct ShiftSearch {
 
 /// Shift-invert Arnoldi at σ (1/s) with `krylov` vectors, restarted (keeping the nearest Ritz vectors) up to
 /// max_restarts times until the `want` Ritz values nearest σ have a relative residual ≤ tol. symbolic: the
-/// UMFPACK symbolic analysis, made at the first call and reused.
+/// UMFPACK symbolic analysis, made at the first call and reused. start (optional, n values): the first
+/// vector before its first solve, e.g. a neighbouring problem's eigenvector (else a random one from rng).
 ShiftSearch shift_invert_arnoldi(const EigenProblem& ep, std::complex<double> sigma, int want, int krylov,
-                                 int max_restarts, double tol, void** symbolic, std::mt19937& rng);
+                                 int max_restarts, double tol, void** symbolic, std::mt19937& rng,
+                                 const std::vector<std::complex<double>>* start = nullptr);
 
 /// The same search by ARPACK-ng (znaupd/zneupd, mode 1 on OP = (J − σM)⁻¹M, which = "LM", implicit restarts
 /// with exact shifts): nev = 2·want + 4 Ritz values from ncv = max(krylov, 2·want + 10) vectors, at most

@@ -79,11 +79,37 @@ void set_mode(StabilityResult& res, const std::vector<cplx>& x, size_t nodes, si
   res.mode_Gamma_R = x.back() * scale;
 }
 
+/// f^H x.
+cplx dot(const std::vector<cplx>& f, const std::vector<cplx>& x) {
+  cplx s = 0.0;
+  for (size_t q = 0; q < f.size(); ++q) s += std::conj(f[q]) * x[q];
+  return s;
+}
+
+/// Of `found` (Im λ ≥ 0 members), the eigenpair StabilityOptions::follow or follow_near picks, into res's
+/// `followed` fields.
+void follow_mode(const std::vector<Eigenpair>& found, const StabilityOptions& o, double unit, StabilityResult& res) {
+  const std::vector<cplx>& f = o.follow;
+  const double nf = std::sqrt(std::real(dot(f, f)));
+  double best = HUGE_VAL;
+  for (const Eigenpair& e : found) {
+    if (!f.empty()) {
+      if (e.x.size() != f.size() || !(nf > 0.0)) continue;
+      const double overlap = std::abs(dot(f, e.x)) / (nf * std::sqrt(std::real(dot(e.x, e.x))));
+      if (overlap > res.followed_overlap)
+        res.followed_overlap = overlap, res.followed = e.lambda / unit, res.followed_vector = e.x;
+    } else if (o.follow_near && e.lambda.imag() > 0.0 && std::abs(e.lambda / unit - *o.follow_near) < best) {
+      best = std::abs(e.lambda / unit - *o.follow_near);
+      res.followed_overlap = 1.0, res.followed = e.lambda / unit, res.followed_vector = e.x;
+    }
+  }
+}
+
 /// The searches' eigenpairs into res (λ in U/D): each shift with its disk, the reach of the nearest
 /// search, the eigenvalues without repeats, rightmost first, a complex one followed by its conjugate (at
-/// most count), their residuals, and the leading eigenvector as the mode.
+/// most count), their residuals, the leading eigenvector as the mode, and the pair o follows (follow_mode).
 void gather_eigenpairs(std::vector<ShiftSearch>& searches, double unit, int count, size_t nodes, size_t stride,
-                       StabilityResult& res) {
+                       const StabilityOptions& o, StabilityResult& res) {
   std::vector<Eigenpair> all;
   double reach = -1.0;
   for (auto& sr : searches) {
@@ -121,6 +147,7 @@ void gather_eigenpairs(std::vector<ShiftSearch>& searches, double unit, int coun
   if (res.eigenvalues.size() > size_t(count)) res.eigenvalues.resize(size_t(count)), res.residuals.resize(size_t(count));
   res.reach = std::max(reach, 0.0);
   if (!uniq.empty()) set_mode(res, uniq.front().x, nodes, stride);
+  follow_mode(uniq, o, unit, res);
 }
 
 /// One line: stable or not, the leading eigenvalue, its growth rate and St, and whether the strip right of
@@ -218,7 +245,8 @@ StabilityResult search_eigenvalues(const EigenProblem& ep, double unit, int coun
     const int krylov = std::max(o.krylov, count + 10);
     return arpack ? shift_invert_arpack(ep, s_unit * unit, o.want, krylov, o.restarts, o.tol, o.arpack_tol,
                                         &symbolic, rng)
-                  : shift_invert_arnoldi(ep, s_unit * unit, o.want, krylov, o.restarts, o.tol, &symbolic, rng);
+                  : shift_invert_arnoldi(ep, s_unit * unit, o.want, krylov, o.restarts, o.tol, &symbolic, rng,
+                                         o.follow.empty() ? nullptr : &o.follow);
   };
   auto search = [&](cplx s_unit) {
     searches.push_back(search_at(s_unit, unsigned(searches.size())));
@@ -264,7 +292,7 @@ StabilityResult search_eigenvalues(const EigenProblem& ep, double unit, int coun
     throw;
   }
   if (symbolic) umfpack_zl_free_symbolic(&symbolic);
-  gather_eigenpairs(searches, unit, count, nodes, stride, res);
+  gather_eigenpairs(searches, unit, count, nodes, stride, o, res);
   res.stable = !res.eigenvalues.empty() && res.eigenvalues.front().real() < 0.0;
   res.message = verdict_message(res);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

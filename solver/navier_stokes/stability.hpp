@@ -70,6 +70,12 @@ struct StabilityOptions {
   /// residual test on J and the strip was left uncovered; asking for 6, 4 or 3 instead of 10 left it
   /// uncovered too.
   double arpack_tol = 1e-5;
+  /// A mode to follow (the problem's unknowns; e.g. the eigenvector found at a neighbouring state on the same
+  /// grid): each shift's Arnoldi starts from it (arnoldi only), and the result's `followed` is the accepted
+  /// eigenpair most nearly parallel to it. Empty: neither.
+  std::vector<std::complex<double>> follow;
+  /// Without `follow`: the result's `followed` is the accepted pair (Im λ > 0) nearest this eigenvalue, U/D.
+  std::optional<std::complex<double>> follow_near;
 };
 
 /// The names StabilityOptions::eigensolver takes, "arnoldi, arpack".
@@ -103,6 +109,12 @@ struct StabilityResult {
   /// The leading eigenvector (ψ, ζ fields row-major as NsState, complex; Γ_R), normalised to max |ζ| = 1.
   std::vector<std::complex<double>> mode_psi, mode_zeta;
   std::complex<double> mode_Gamma_R;
+  /// With StabilityOptions::follow: the accepted eigenvalue (Im λ ≥ 0 member, U/D) whose eigenvector x is most
+  /// nearly parallel to the followed one f, the overlap |f^H x|/(‖f‖‖x‖) (0 when nothing was accepted), and x;
+  /// with follow_near instead, the accepted pair nearest it and its x (overlap 1). x is empty when neither.
+  std::complex<double> followed;
+  double followed_overlap = 0.0;
+  std::vector<std::complex<double>> followed_vector;
   /// Growth rate Re λ and Strouhal number |Im λ|/(2π) of the leading eigenvalue (U/D units, so St = f·D/U).
   double growth_rate() const { return eigenvalues.empty() ? 0.0 : eigenvalues.front().real(); }
   double strouhal() const;
