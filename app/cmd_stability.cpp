@@ -144,7 +144,8 @@ std::string search_text(const StabilityResult& s) {
 }
 
 /// Each point the search solved, in order: its value, the tracked pair's growth rate and frequency (U/D),
-/// whether it was tracked, and what it cost (Newton and eigenvalue seconds, shifted solves).
+/// whether it was tracked (seeded by the march, or followed by its eigenvector: the overlap), and what it
+/// cost (Newton and eigenvalue seconds, shifted solves).
 Json points_json(const HopfPoint& h) {
   Json a = Json::array();
   for (const HopfEvaluation& e : h.evaluations)
@@ -153,6 +154,7 @@ Json points_json(const HopfPoint& h) {
                  {"frequency", e.mode.imag()},
                  {"tracked", e.tracked},
                  {"seeded", e.seeded},
+                 {"overlap", e.overlap},
                  {"newton_seconds", e.newton_seconds},
                  {"eigenvalue_seconds", e.stability.seconds},
                  {"solves", e.stability.solves}});
@@ -226,7 +228,9 @@ void curve_report(const NsParams& p, const CriticalRange& range, const std::stri
                                    {spin ? "critical_spin_ratio" : "critical_reynolds", h.x_c},
                                    {"change", h.change},
                                    {"onset_strouhal", h.strouhal()},
+                                   {"bracket", {h.lo, h.hi}},
                                    {"evaluations", h.evaluations.size()},
+                                   {"points", points_json(h)},
                                    {"seconds", h.seconds}}
                             : Json{{spin ? "reynolds" : "spin_ratio", pt.other}, {"undefined", pt.message}});
   });

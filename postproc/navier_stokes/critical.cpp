@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "postproc/navier_stokes/hopf_steady.hpp"
 #include "postproc/navier_stokes/regula_falsi.hpp"
 #include "solver/navier_stokes/stepper_eigen.hpp"
 
@@ -18,97 +19,54 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-/// Newton at x from `guess` (potential_guess when null); the result's state either way.
-NewtonResult newton_at(const NsParams& p, HopfParameter which, double x, const NsState* guess) {
-  const NsParams q = with_parameter(p, which, x);
-  SteadyJacobian jac(q);
-  NewtonOptions no;
-  no.chord_ratio = 0.1;  // the last steps on earlier factors while they contract ten-fold (same tolerance)
-  return solve_steady(jac, guess ? *guess : potential_guess(q, jac.grid()), no);
-}
+/// A followed pair whose eigenvector is less parallel than this to the one it follows is taken for another
+/// mode (the far field's slow pairs crowd the axis where the wake's pair crosses it).
+constexpr double kFollowOverlap = 0.5;
 
-/// Natural continuation from the converged (x0, s0) to x: Newton at each step from the last state, the step
-/// halved where Newton fails, down to 1/64 of the way. Returns the state at x, or nullopt.
-std::optional<NsState> continue_to(const NsParams& p, HopfParameter which, double x0, NsState s0, double x) {
-  const double min_step = std::fabs(x - x0) / 64.0;
-  double step = x - x0;
-  while (x0 != x) {
-    const double x1 = std::fabs(step) >= std::fabs(x - x0) ? x : x0 + step;
-    NewtonResult r = newton_at(p, which, x1, &s0);
-    if (r.converged) {
-      x0 = x1, s0 = std::move(r.state);
-      continue;
-    }
-    step *= 0.5;
-    if (std::fabs(step) < min_step) return std::nullopt;
-  }
-  return s0;
-}
-
-/// The steady state at x where Newton from the potential flow fails: continued from a safe point, first in
-/// Re at this α from Re = 60 (a spin search above it: at Re 200 Newton reaches no state from the potential
-/// flow at any α up to 1.6), then in the searched parameter from α = 0 or Re = 20.
-std::optional<NsState> steady_from_safe(const NsParams& p, HopfParameter which, double x) {
-  if (which == HopfParameter::spin_ratio && p.reynolds() > 60.0) {
-    const NsParams at_x = with_parameter(p, which, x);
-    NewtonResult s = newton_at(at_x, HopfParameter::reynolds, 60.0, nullptr);
-    if (s.converged)
-      if (auto r = continue_to(at_x, HopfParameter::reynolds, 60.0, std::move(s.state), p.reynolds())) return r;
-  }
-  const double safe = which == HopfParameter::spin_ratio ? 0.0 : std::min(20.0, x);
-  if (safe == x) return std::nullopt;
-  NewtonResult s = newton_at(p, which, safe, nullptr);
-  if (!s.converged) return std::nullopt;
-  return continue_to(p, which, safe, std::move(s.state), x);
-}
-
-/// The steady state at x: Newton from `guess` (a state of other parameters on the same grid, or one
-/// interpolated between two), else from `from` by continuation, else from the potential flow, else
-/// steady_from_safe.
-std::optional<NsState> steady_at(const NsParams& p, HopfParameter which, double x, const HopfEvaluation* from,
-                                 const NsState* guess) {
-  if (guess) {
-    NewtonResult g = newton_at(p, which, x, guess);
-    if (g.converged) return std::move(g.state);
-  }
-  if (from && from->converged) return continue_to(p, which, from->x, from->state, x);
-  NewtonResult r = newton_at(p, which, x, nullptr);
-  if (r.converged) return std::move(r.state);
-  return steady_from_safe(p, which, x);
-}
-
-/// The pair's member with Im λ > 0 nearest `near` among r's eigenvalues (0 when there is none).
-std::complex<double> nearest_pair(const StabilityResult& r, std::complex<double> near) {
-  std::complex<double> best = 0.0;
-  for (const auto& l : r.eigenvalues)
-    if (l.imag() > 0.0 && (best == 0.0 || std::abs(l - near) < std::abs(best - near))) best = l;
-  return best;
-}
-
-/// e's eigenvalues by one shift-invert search at `near` (U/D), and the pair nearest it as e's mode. sharp:
-/// `near` is already within about 0.01 U/D of the pair (the march's estimate, or extrapolated from two
-/// points of the pair), so the nearest Ritz value alone must converge, from the fewest vectors (16).
+/// e's eigenvalues by one shift-invert search at `near` (U/D), and its mode: with `like` (the pair's
+/// eigenvector at a neighbouring point) the pair whose eigenvector is most nearly parallel to it, from an
+/// Arnoldi started there (11 vectors, at most two restarts); else, or when no pair is parallel enough, the
+/// pair nearest `near`. sharp: `near` is already within about 0.01 U/D of the pair (the march's estimate, or
+/// extrapolated from two points of the pair), so the nearest Ritz value alone must converge, from the fewest
+/// vectors (16).
 void track(const NsParams& p, HopfParameter which, HopfEvaluation& e, std::complex<double> near,
-           const HopfOptions& o, bool sharp = false) {
+           const HopfOptions& o, bool sharp = false, const std::vector<std::complex<double>>* like = nullptr) {
+  const bool follow = like && !like->empty();
   StabilityOptions so;
   so.eigensolver = o.full.eigensolver;
   so.shifts = {near};
   so.extra_shifts = 0;
-  so.want = sharp ? 1 : 2;
-  so.krylov = sharp ? 16 : o.track_krylov;
-  e.stability = leading_eigenvalues(with_parameter(p, which, e.x), e.state, o.count, so);
-  e.mode = nearest_pair(e.stability, near);
+  so.want = sharp || follow ? 1 : 2;
+  so.krylov = sharp || follow ? 11 : o.track_krylov;
+  if (follow)
+    so.follow = *like, so.restarts = 2;
+  else
+    so.follow_near = near;
+  // Following: the pair alone is wanted, so 11 vectors (leading_eigenvalues keeps count + 10 at least).
+  e.stability = leading_eigenvalues(with_parameter(p, which, e.x), e.state, follow ? 1 : o.count, so);
+  StabilityResult& r = e.stability;
+  if (follow && !(r.followed_overlap >= kFollowOverlap && r.followed.imag() > 0.0)) {
+    const double seconds = r.seconds, overlap = r.followed_overlap;
+    track(p, which, e, near, o, sharp);  // another mode: the pair nearest the prediction instead
+    e.stability.seconds += seconds;
+    e.overlap = overlap;  // not followed
+    return;
+  }
+  e.mode = r.followed.imag() > 0.0 ? r.followed : 0.0;
+  e.vector = std::move(r.followed_vector);
+  r.followed_vector.clear();
+  e.overlap = r.followed_overlap;
   e.tracked = true;
 }
 
 /// The steady state at x (steady_at) and how long Newton took; no eigenvalues yet.
 HopfEvaluation steady_point(const NsParams& p, HopfParameter which, double x, const HopfEvaluation* from,
-                            const NsState* guess) {
+                            const NsState* guess, bool potential_first = false) {
   if (!(p.U > 0.0)) throw std::invalid_argument("onset of shedding: flow.speed must be > 0 (α = aω/U, Re = 2aU/ν)");
   HopfEvaluation e;
   e.x = x;
   const auto t0 = std::chrono::steady_clock::now();
-  std::optional<NsState> s = steady_at(p, which, x, from, guess);
+  std::optional<NsState> s = steady_at(p, which, x, from, guess, potential_first);
   e.newton_seconds = seconds_since(t0);
   e.converged = s.has_value();
   if (e.converged) e.state = std::move(*s);
@@ -204,14 +162,7 @@ struct HopfBracket {
   }
   /// The steady state at x by linear interpolation between the ends' (Newton's start there): closer than
   /// the nearer end's by the bracket's curvature term.
-  NsState state_at(double x) const {
-    const double w = (x - lo.x) / (hi.x - lo.x);
-    NsState s = lo.state;
-    for (size_t q = 0; q < s.psi.size(); ++q)
-      s.psi[q] += w * (hi.state.psi[q] - lo.state.psi[q]), s.zeta[q] += w * (hi.state.zeta[q] - lo.state.zeta[q]);
-    s.Gamma_R += w * (hi.state.Gamma_R - lo.state.Gamma_R);
-    return s;
-  }
+  NsState state_at(double x) const { return blend(lo.state, hi.state, (x - lo.x) / (hi.x - lo.x)); }
   /// The pair at x by linear interpolation between the ends, U/D.
   std::complex<double> pair_at(double x) const { return lo.mode + (hi.mode - lo.mode) * ((x - lo.x) / (hi.x - lo.x)); }
   /// m replaces the end of its sign; the end kept twice in a row has its growth rate halved (Illinois).
@@ -225,19 +176,56 @@ struct HopfBracket {
 HopfEvaluation without_state(const HopfEvaluation& e) {
   HopfEvaluation c = e;
   c.state = {};
+  c.vector = {};
   return c;
+}
+
+/// e with its state alone: the pair, its eigenvector and how it was found forgotten.
+void forget_pair(HopfEvaluation& e) {
+  e.stability = {};
+  e.mode = 0.0;
+  e.tracked = e.seeded = false;
+  e.vector.clear();
+  e.overlap = 0.0;
+}
+
+/// The ends solved: each checked and recorded by `keep` (A's already when a_kept), noted, and their growth
+/// rates required to differ in sign.
+HopfBracket checked_ends(HopfBracket k, HopfParameter which, double A, double B,
+                         const std::function<void(const HopfEvaluation&)>& keep, bool a_kept = false) {
+  if (!a_kept) keep(k.lo);
+  keep(k.hi);
+  k.note(k.lo), k.note(k.hi);
+  if ((k.lo.growth() < 0.0) == (k.hi.growth() < 0.0))
+    throw NoCrossing(fmt::format(
+                         "onset of shedding over {} {:g}:{:g}: the leading growth rate does not change sign (Re "
+                         "λ·D/U = {:.4g} at {:g}, {:.4g} at {:g}): widen or move the bracket",
+                         hopf_parameter_name(which), A, B, k.lo.growth(), A, k.hi.growth(), B),
+                     A, k.lo.growth(), B, k.hi.growth());
+  return k;
 }
 
 /// The ends A and B with the same pair at both: the growing pair of the unstable end (seeded_search, or the
 /// full search's leading pair), tracked at the other. `keep` checks and records each.
 HopfBracket hopf_ends(const NsParams& p, HopfParameter which, double A, double B, const HopfOptions& o,
-                      const std::function<void(const HopfEvaluation&)>& keep, const NsState* guess) {
+                      const std::function<void(const HopfEvaluation&)>& keep, const HopfStart* start) {
   HopfBracket k;
+  const NsState* guess = start ? &start->state : nullptr;
   k.lo = steady_point(p, which, A, nullptr, guess);
   if (!k.lo.converged) keep(k.lo);  // throws: no steady state at A
+  if (start && !start->vector.empty()) {  // both ends' pairs followed from the neighbouring crossing's
+    track(p, which, k.lo, start->lambda, o, false, &start->vector);
+    const bool lo_followed = k.lo.overlap >= kFollowOverlap && k.lo.mode != 0.0;
+    k.hi = steady_point(p, which, B, &k.lo, guess);
+    if (k.hi.converged)  // from A's pair where it was followed there
+      track(p, which, k.hi, lo_followed ? k.lo.mode : start->lambda, o, false, lo_followed ? &k.lo.vector : &start->vector);
+    // B's pair where it is not parallel enough to A's: the pair nearest A's, as the searched ends take it.
+    if (lo_followed && k.hi.mode != 0.0) return checked_ends(std::move(k), which, A, B, keep);
+    for (HopfEvaluation* e : {&k.lo, &k.hi}) forget_pair(*e);  // not followed: the ends' own searches
+  }
   // The growing pair: at A by the march's Arnoldi, else at B by it, else by the full search (A's first).
   bool a_unstable = seeded_search(p, which, k.lo, o);
-  k.hi = steady_point(p, which, B, &k.lo, nullptr);
+  if (!k.hi.converged) k.hi = steady_point(p, which, B, &k.lo, guess, true);
   bool b_done = false;
   if (!a_unstable) {
     b_done = k.hi.converged && seeded_search(p, which, k.hi, o);
@@ -255,21 +243,13 @@ HopfBracket hopf_ends(const NsParams& p, HopfParameter which, double A, double B
   }
   if (!a_unstable && k.lo.converged && k.hi.converged && k.hi.mode != 0.0 && k.hi.growth() >= 0.0)
     track(p, which, k.lo, k.hi.mode, o);  // the stable end's eigenvalues at the mode that turns unstable
-  if (!a_unstable) keep(k.lo);
-  keep(k.hi);
-  k.note(k.lo), k.note(k.hi);
-  if ((k.lo.growth() < 0.0) == (k.hi.growth() < 0.0))
-    throw std::invalid_argument(fmt::format(
-        "onset of shedding over {} {:g}:{:g}: the leading growth rate does not change sign (Re λ·D/U = {:.4g} "
-        "at {:g}, {:.4g} at {:g}): widen or move the bracket",
-        hopf_parameter_name(which), A, B, k.lo.growth(), A, k.hi.growth(), B));
-  return k;
+  return checked_ends(std::move(k), which, A, B, keep, a_unstable);
 }
 
 }  // namespace
 
 HopfPoint hopf_point(const NsParams& p, HopfParameter which, double A, double B, const HopfOptions& o,
-                     const std::function<void(const HopfEvaluation&)>& progress, const NsState* guess) {
+                     const std::function<void(const HopfEvaluation&)>& progress, const HopfStart* start) {
   const char* name = hopf_parameter_name(which);
   if (!std::isfinite(A) || !std::isfinite(B) || (which == HopfParameter::reynolds && !(A > 0.0)))
     throw std::invalid_argument(fmt::format("onset of shedding: the {} bracket needs finite values{} (got {}:{})",
@@ -289,7 +269,7 @@ HopfPoint hopf_point(const NsParams& p, HopfParameter which, double A, double B,
     if (progress) progress(e);
     h.evaluations.push_back(without_state(e));
   };
-  HopfBracket k = hopf_ends(p, which, A, B, o, keep, guess);
+  HopfBracket k = hopf_ends(p, which, A, B, o, keep, start);
   h.at_a = without_state(k.lo), h.at_b = without_state(k.hi);
   HopfEvaluation far = k.lo.growth() < 0.0 ? k.lo : k.hi;  // the stable end asked for, with its state
   const double slope = std::fabs(h.at_b.growth() - h.at_a.growth()) / (h.at_b.x - h.at_a.x);
@@ -303,7 +283,7 @@ HopfPoint hopf_point(const NsParams& p, HopfParameter which, double A, double B,
       // another, damped mode).
       const NsState between = k.state_at(root);
       HopfEvaluation m = steady_point(p, which, root, &from, &between);
-      if (m.converged) track(p, which, m, k.predict(root), o, k.lineage.size() >= 2);
+      if (m.converged) track(p, which, m, k.predict(root), o, k.lineage.size() >= 2, &from.vector);
       keep(m);
       k.note(m);
       latest.emplace_back(m.x, m.growth());
@@ -344,7 +324,7 @@ HopfPoint hopf_point(const NsParams& p, HopfParameter which, double A, double B,
   if (h.lo > h.hi) std::swap(h.lo, h.hi);
   h.lambda = k.pair_at(root);
   const HopfEvaluation& nearest = std::fabs(root - k.lo.x) <= std::fabs(root - k.hi.x) ? k.lo : k.hi;
-  h.state = nearest.state;
+  h.next = {nearest.state, nearest.mode, nearest.vector};
   h.seconds = seconds_since(t0);
   return h;
 }

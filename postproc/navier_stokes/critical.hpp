@@ -8,12 +8,16 @@
 // interpolated between the bracket's ends (else by natural continuation from the nearest state solved, the
 // step halved where Newton fails), and only the
 // ends of the bracket get a search of their own: between them the pair is tracked by one shift-invert
-// search at its predicted position. An end's growing pair is first sought by Arnoldi on the linearised
-// march (stepper_eigen.hpp: no factorisation), then tracked there; only where that finds no growing pair
-// does an end get the full shift-invert search.
+// search at its predicted position, which keeps the pair whose eigenvector is most nearly parallel to the
+// nearer end's (the far field's slow pairs crowd the axis where the wake's pair crosses it, so the pair
+// nearest the prediction may be one of them). An end's growing pair is first sought by Arnoldi on the
+// linearised march (stepper_eigen.hpp: no factorisation), then tracked there; only where that finds no
+// growing pair does an end get the full shift-invert search. A search started from a neighbouring one's
+// crossing (HopfStart: the curves of onset_curve.hpp) follows that crossing's pair to both ends instead.
 #include <complex>
 #include <functional>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -45,8 +49,23 @@ struct HopfEvaluation {
   std::complex<double> mode;    ///< the tracked pair's member with Im λ > 0, U/D (0 when none was found)
   bool tracked = false;         ///< the eigenvalues from one shift at the predicted pair, not the full search
   bool seeded = false;          ///< that shift placed at the pair the linearised march found (stepper_eigen.hpp)
+  /// The tracked pair's eigenvector (SteadyJacobian's unknowns; empty when it was not tracked): the next
+  /// point's search starts from it and keeps the pair most nearly parallel to it.
+  std::vector<std::complex<double>> vector;
+  /// |f^H x|/(‖f‖‖x‖) with the vector f it followed, 1 when it followed none; below 0.5 the pair was not
+  /// followed (another mode was more nearly parallel) and the mode is the pair nearest the prediction.
+  double overlap = 0.0;
   /// Re λ of the tracked pair, U/D: the slow real far-field modes near −0.002 would otherwise bias the crossing.
   double growth() const { return mode.real(); }
+};
+
+/// Where a search starts from a neighbouring one's crossing (other parameters, the same grid): Newton from
+/// its steady state, and both ends' pairs followed from its pair (one shift each at λ, the eigenvector most
+/// nearly parallel to `vector` kept) instead of searched for.
+struct HopfStart {
+  NsState state;                               ///< a steady state near the crossing
+  std::complex<double> lambda;                 ///< its wake pair (Im λ > 0), U/D
+  std::vector<std::complex<double>> vector;    ///< that pair's eigenvector (empty: Newton's start only)
 };
 
 /// The crossing Re λ(x_c) = 0 and how it was found.
@@ -59,7 +78,7 @@ struct HopfPoint {
   HopfEvaluation at_a, at_b;     ///< the two ends asked for (states dropped)
   std::vector<HopfEvaluation> evaluations;  ///< every point solved, in order (states dropped)
   double seconds = 0.0;          ///< wall time, s
-  NsState state;                 ///< the steady state of the evaluation nearest x_c (a guess for the next search)
+  HopfStart next;                ///< the evaluation nearest x_c: a start for a neighbouring search
   /// Strouhal number of the onset, |Im λ|/(2π) (λ in U/D).
   double strouhal() const;
 };
@@ -98,11 +117,19 @@ HopfEvaluation hopf_evaluation(const NsParams& p, HopfParameter which, double x,
                                const std::optional<std::complex<double>>& track, const HopfOptions& o = {},
                                const NsState* guess = nullptr);
 
-/// The crossing on [A, B] (A < B). Throws std::invalid_argument (one line, with both growth rates) when Re λ
-/// has the same sign at A and B, and std::runtime_error when no steady state or no pair is found at some x.
-/// progress (optional) is called after each point; guess (optional) starts Newton at A (see hopf_evaluation).
+/// No crossing on [A, B]: the same pair's growth rate (U/D) has one sign at both ends.
+struct NoCrossing : std::invalid_argument {
+  double A, growth_a, B, growth_b;
+  NoCrossing(const std::string& what, double a, double ga, double b, double gb)
+      : std::invalid_argument(what), A(a), growth_a(ga), B(b), growth_b(gb) {}
+};
+
+/// The crossing on [A, B] (A < B). Throws NoCrossing (one line, with both growth rates) when Re λ has the
+/// same sign at A and B, and std::runtime_error when no steady state or no pair is found at some x.
+/// progress (optional) is called after each point; start (optional): a neighbouring search's crossing
+/// (HopfStart; where its pair cannot be followed at an end, that end gets its own search).
 HopfPoint hopf_point(const NsParams& p, HopfParameter which, double A, double B, const HopfOptions& o = {},
                      const std::function<void(const HopfEvaluation&)>& progress = {},
-                     const NsState* guess = nullptr);
+                     const HopfStart* start = nullptr);
 
 }  // namespace magnus

@@ -54,3 +54,31 @@ TEST_CASE("[ns][critical] Re_c without spin: a stable first end hands the search
   CHECK(std::abs(seeded.at_b.mode - full.at_b.mode) < 1e-6);
   CHECK(std::fabs(seeded.x_c - full.x_c) < 0.1 * 0.02);
 }
+
+TEST_CASE("[ns][critical] a neighbouring crossing's pair, followed to the ends: the crossing the ends' own "
+          "searches give",
+          "[ns][critical]") {
+  // The curve α_L(Re) starts each point from the last one's crossing: its steady state for Newton, its pair
+  // and eigenvector for both ends (one shift each, the pair most nearly parallel kept), no search of their own.
+  const NsParams p = test::cylinder_flow(100.0, 1.8, 32, 20.0);
+  const HopfPoint at_100 = search(p, 1.4, 2.4, true);
+  REQUIRE(!at_100.next.vector.empty());
+  CHECK(std::fabs(at_100.next.lambda.real()) < 0.01);  // the pair at the crossing
+  const NsParams q = with_parameter(p, HopfParameter::reynolds, 110.0);
+  HopfOptions o;
+  o.tol = 0.002;
+  o.full.threads = 1;
+  const double A = at_100.x_c, B = at_100.x_c + 0.15;  // Re 110's crossing lies above Re 100's
+  const HopfPoint own = hopf_point(q, HopfParameter::spin_ratio, A, B, o);
+  const HopfPoint followed = hopf_point(q, HopfParameter::spin_ratio, A, B, o, {}, &at_100.next);
+  INFO("own searches: α_L " << own.x_c << ", pair at A " << own.at_a.mode << "; followed: α_L " << followed.x_c
+                            << ", pair at A " << followed.at_a.mode << " (overlap " << followed.at_a.overlap
+                            << "), at B " << followed.at_b.mode << " (overlap " << followed.at_b.overlap << ")");
+  CHECK(own.at_a.seeded);
+  CHECK(!followed.at_a.seeded);
+  CHECK(followed.at_a.overlap >= 0.5);  // followed, not the nearest pair
+  CHECK(followed.at_b.overlap >= 0.5);
+  CHECK(std::abs(followed.at_a.mode - own.at_a.mode) < 1e-6);  // the same eigenvalue of J
+  CHECK(std::fabs(followed.x_c - own.x_c) < 0.1 * 0.002);
+  for (const HopfEvaluation& e : followed.evaluations) CHECK(e.vector.empty());  // states and vectors dropped
+}
