@@ -37,7 +37,7 @@ void track(const NsParams& p, HopfParameter which, HopfEvaluation& e, std::compl
   so.shifts = {near};
   so.extra_shifts = 0;
   so.want = sharp || follow ? 1 : 2;
-  so.krylov = sharp || follow ? 11 : o.track_krylov;
+  so.krylov = follow ? 11 : sharp ? 16 : o.track_krylov;
   if (follow)
     so.follow = *like, so.restarts = 2;
   else
