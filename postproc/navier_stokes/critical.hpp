@@ -52,8 +52,9 @@ struct HopfEvaluation {
   /// The tracked pair's eigenvector (SteadyJacobian's unknowns; empty when it was not tracked): the next
   /// point's search starts from it and keeps the pair most nearly parallel to it.
   std::vector<std::complex<double>> vector;
-  /// |f^H x|/(‖f‖‖x‖) with the vector f it followed, 1 when it followed none; below 0.5 the pair was not
-  /// followed (another mode was more nearly parallel) and the mode is the pair nearest the prediction.
+  /// |f^H x|/(‖f‖‖x‖) with the vector f it followed; 1 when tracked without one (the pair nearest the
+  /// prediction), 0 after the full search alone; below 0.5 after following, no pair was parallel enough and
+  /// the mode is the pair nearest the prediction.
   double overlap = 0.0;
   /// Re λ of the tracked pair, U/D: the slow real far-field modes near −0.002 would otherwise bias the crossing.
   double growth() const { return mode.real(); }

@@ -76,5 +76,4 @@ std::optional<NsState> steady_at(const NsParams& p, HopfParameter which, double 
   return steady_from_safe(p, which, x);
 }
 
-
 }  // namespace magnus

@@ -17,7 +17,7 @@ NsState blend(const NsState& a, const NsState& b, double w);
 /// interpolated between two), else from `from` by continuation, else from the potential flow, else
 /// continued from a safe point (at this α from Re = 60 for a spin search above it, then from α = 0 or
 /// Re = 20). potential_first: the potential flow before the continuation (at the far end of a wide bracket
-/// one Newton solve from it, 7.5 s at Re 50, α 2.6, against 97 s of continuation from α 0.05). nullopt
+/// one Newton solve from it, 7.5 s at Re 50, α 2.6, where continuation from α 0.05 took 97 s). nullopt
 /// when none converges.
 std::optional<NsState> steady_at(const NsParams& p, HopfParameter which, double x, const HopfEvaluation* from,
                                  const NsState* guess, bool potential_first = false);

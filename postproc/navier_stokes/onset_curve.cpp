@@ -17,7 +17,7 @@ namespace {
 
 /// The crossing at one value of the other parameter: over [centre − half, centre + half] first (clamped to
 /// [A, B]); where the growth rate keeps its sign there, the next bracket runs from the end nearer zero past
-/// the secant root through both ends (half again as far, at least the same width), at most four times;
+/// the secant root through both ends (half again as far, at least the same width), at most three times;
 /// start: the last point's crossing.
 HopfPoint crossing_near(const NsParams& q, HopfParameter which, double centre, double half, double A, double B,
                         const HopfOptions& o, const HopfStart* start) {

@@ -29,7 +29,7 @@ struct OnsetPoint {
 /// next one started from the last (HopfStart) in a bracket about the predicted crossing: after one point
 /// found, about it with half-width (B − A)/8; after two, on the line through them with half their
 /// distance; after more, twice the line's error in predicting the last point; between 4·tol and (B − A)/8.
-/// Where Re λ keeps its sign there, the bracket moves past the secant root through its ends (at most four
+/// Where Re λ keeps its sign there, the bracket moves past the secant root through its ends (at most three
 /// times). A point that fails is reported and the next starts over on [A, B].
 /// progress (optional): after each point.
 std::vector<OnsetPoint> onset_curve(const NsParams& p, HopfParameter which, double A, double B,
