@@ -219,8 +219,9 @@ void curve_report(const NsParams& p, const CriticalRange& range, const std::stri
   onset_curve(p, range.which, range.A, range.B, range.others, ho, [&](const OnsetPoint& pt) {
     const HopfPoint& h = pt.point;
     const std::string line =
-        pt.found ? fmt::format("{:>8.4g}  {:>9.4f}  {:>8.1g}  {:>8.4f}  {:>7}  {:>8.1f}", pt.other, h.x_c,
-                               std::max(h.change, 1e-12), h.strouhal(), h.evaluations.size(), h.seconds)
+        pt.found ? fmt::format("{:>8.4g}  {:>9.4f}  {:>8.1g}  {:>8.4f}  {:>7}  {:>8.1f}{}", pt.other, h.x_c,
+                               std::max(h.change, 1e-12), h.strouhal(), h.evaluations.size(), h.seconds,
+                               pt.restarted.empty() ? "" : "  (searched over the whole range: the step from the last point failed)")
                  : fmt::format("{:>8.4g}  not found: {}", pt.other, pt.message);
     if (!json) std::fprintf(stderr, "%s\n", line.c_str());
     text += line + "\n";
@@ -231,7 +232,8 @@ void curve_report(const NsParams& p, const CriticalRange& range, const std::stri
                                    {"bracket", {h.lo, h.hi}},
                                    {"evaluations", h.evaluations.size()},
                                    {"points", points_json(h)},
-                                   {"seconds", h.seconds}}
+                                   {"seconds", h.seconds},
+                                   {"restarted", pt.restarted.empty() ? Json() : Json(pt.restarted)}}
                             : Json{{spin ? "reynolds" : "spin_ratio", pt.other}, {"undefined", pt.message}});
   });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

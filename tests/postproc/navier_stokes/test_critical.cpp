@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "postproc/navier_stokes/critical.hpp"
+#include "postproc/navier_stokes/regula_falsi.hpp"
 #include "support.hpp"
 
 using namespace magnus;
@@ -81,4 +82,34 @@ TEST_CASE("[ns][critical] a neighbouring crossing's pair, followed to the ends: 
   CHECK(std::abs(followed.at_a.mode - own.at_a.mode) < 1e-6);  // the same eigenvalue of J
   CHECK(std::fabs(followed.x_c - own.x_c) < 0.1 * 0.002);
   for (const HopfEvaluation& e : followed.evaluations) CHECK(e.vector.empty());  // states and vectors dropped
+
+  // Stepped from Re 100's crossing instead (the curve's way): its pair followed there, then secant steps with
+  // Re 100's slope until the growth rate changes sign; the same crossing, from fewer steady states.
+  REQUIRE(at_100.next.slope < 0.0);  // shedding stops above α_L: Re λ falls with α
+  const HopfPoint stepped = hopf_point_from(q, HopfParameter::spin_ratio, at_100.x_c, 1.4, 2.4, o, at_100.next);
+  INFO("stepped from " << at_100.x_c << ": α_L " << stepped.x_c << " in " << stepped.evaluations.size()
+                       << " steady states (the ends' own bracket: " << own.evaluations.size() << ")");
+  REQUIRE(!stepped.evaluations.empty());
+  CHECK(stepped.evaluations.front().x == at_100.x_c);
+  CHECK(stepped.evaluations.front().overlap >= 0.5);
+  CHECK(std::fabs(stepped.x_c - own.x_c) < 0.1 * 0.002);
+  CHECK(stepped.evaluations.size() < own.evaluations.size());
+}
+
+TEST_CASE("[ns][critical] the search variable: alpha squared for a spin range reaching down to 0, else the parameter",
+          "[ns][critical]") {
+  // Re λ is even in α (the flow at −α mirrors the one at α): a line in α² through two points of
+  // σ = σ0 − c·α² finds its root exactly, a line in α does not.
+  const SearchVariable v = search_variable(HopfParameter::spin_ratio, 0.05, 2.6);
+  CHECK(v.squared);
+  CHECK(!search_variable(HopfParameter::spin_ratio, -1.0, 1.0).squared);  // both signs of α
+  CHECK(!search_variable(HopfParameter::spin_ratio, 1.6, 2.2).squared);  // far from α = 0
+  CHECK(!search_variable(HopfParameter::reynolds, 40.0, 200.0).squared);
+  const auto sigma = [](double a) { return 0.015 - 0.02 * a * a; };  // root √0.75 = 0.8660
+  const double a0 = 0.05, a1 = 2.6;
+  const double in_u = v.x(secant_zero(v.u(a0), sigma(a0), v.u(a1), sigma(a1)));
+  const double in_x = secant_zero(a0, sigma(a0), a1, sigma(a1));
+  CHECK(in_u == Approx(std::sqrt(0.75)).epsilon(1e-12));
+  CHECK(std::fabs(in_x - std::sqrt(0.75)) > 0.5);
+  CHECK(v.x(v.u(1.7)) == Approx(1.7).epsilon(1e-15));
 }
