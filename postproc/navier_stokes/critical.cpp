@@ -183,6 +183,8 @@ HopfBracket hopf_ends(const NsParams& p, HopfParameter which, double A, double B
 }
 
 /// hopf_point_from's bracket, stepped from `at` (see there); false when start's pair is not followed at `at`.
+/// Throws std::runtime_error when a step's pair is not followed (another mode taken for it: no sign change
+/// it shows can be trusted) or no step stays inside [A, B], and NoCrossing after four steps of one sign.
 bool stepped_ends(const NsParams& p, HopfParameter which, double at, double A, double B, const HopfOptions& o,
                   const Keep& keep, const HopfStart& start, HopfBracket& k) {
   const SearchVariable& v = k.var;
@@ -196,11 +198,15 @@ bool stepped_ends(const NsParams& p, HopfParameter which, double at, double A, d
   for (int step = 0; step < 4; ++step) {
     const double d = 1.25 * (v.x(v.u(a.x) - a.growth() / slope) - a.x);  // past the predicted root
     if (!std::isfinite(d)) break;
-    const double x = std::clamp(a.x + std::copysign(std::clamp(std::fabs(d), 0.5 * o.tol, (B - A) / 4.0), d), A, B);
+    const double step_x = std::min(std::max(std::fabs(d), 0.5 * o.tol), (B - A) / 4.0);
+    const double x = std::clamp(a.x + std::copysign(step_x, d), A, B);
     if (x == a.x) break;  // at an end of [A, B]
     HopfEvaluation b = steady_point(p, which, x, &a, &a.state);
     if (b.converged) track_pair(p, which, b, a.mode, o, false, &a.vector);
     keep(b);
+    if (!(b.overlap >= kFollowOverlap))
+      throw std::runtime_error(fmt::format("onset of shedding: the pair followed from the last crossing was lost at "
+                                           "{} = {:g} (overlap {:.2f})", hopf_parameter_name(which), b.x, b.overlap));
     if ((b.growth() < 0.0) != (a.growth() < 0.0)) {
       const bool a_first = a.x < b.x;
       k.lo = std::move(a_first ? a : b);
@@ -212,6 +218,10 @@ bool stepped_ends(const NsParams& p, HopfParameter which, double at, double A, d
     before = a.x, g_before = a.growth();
     a = std::move(b);
   }
+  if (before == a.x)
+    throw std::runtime_error(fmt::format("onset of shedding: from the predicted crossing {} = {:g} (Re λ·D/U = {:.4g}) "
+                                         "no step toward the root stays inside {:g}:{:g}: widen the range",
+                                         hopf_parameter_name(which), a.x, a.growth(), A, B));
   throw no_crossing(which, std::min(before, a.x), before < a.x ? g_before : a.growth(), std::max(before, a.x),
                     before < a.x ? a.growth() : g_before);
 }
@@ -233,13 +243,13 @@ Keep recorder(HopfPoint& h, HopfParameter which, const std::function<void(const 
 }
 
 /// The bracket's crossing by the secant search (HopfBracket::next_root), written into h: its first ends, the
-/// crossing, its pair, and the start it leaves for a neighbouring search.
-void refine(const NsParams& p, HopfParameter which, const HopfOptions& o, HopfBracket k, const Keep& keep,
-            HopfPoint& h) {
+/// crossing, its pair, and the start it leaves for a neighbouring search. slope: |d(Re λ)/dx| the growth
+/// rate may change by across the final bracket, ten times over, before the bracket is taken for a jump.
+void refine(const NsParams& p, HopfParameter which, const HopfOptions& o, HopfBracket k, double slope,
+            const Keep& keep, HopfPoint& h) {
   const char* name = hopf_parameter_name(which);
   h.at_a = without_state(k.lo), h.at_b = without_state(k.hi);
   HopfEvaluation far = k.lo.growth() < 0.0 ? k.lo : k.hi;  // the stable end asked for, with its state
-  const double slope = std::fabs(h.at_b.growth() - h.at_a.growth()) / (h.at_b.x - h.at_a.x);
   double root = k.root();
   std::vector<std::pair<double, double>> latest;  // the points solved inside the bracket, (x, Re λ) in order
   for (int repairs = 0;; ++repairs) {
@@ -260,7 +270,7 @@ void refine(const NsParams& p, HopfParameter which, const HopfOptions& o, HopfBr
       root = next;
     }
     // A crossing the secant can trust: across the final bracket the growth rate changes no faster than
-    // ten times its mean slope over [A, B]. A jump instead is the stable end's pair being another mode
+    // ten times `slope` (the mean over the ends asked for, or the last crossing's). A jump instead is the stable end's pair being another mode
     // (tracked from a poor prediction: it is tracked again, at most twice), or a fold of the steady branch.
     if (std::fabs(k.hi.growth() - k.lo.growth()) <= 10.0 * slope * (k.hi.x - k.lo.x) + 1e-9) break;
     if (repairs == 2)
@@ -294,6 +304,9 @@ void refine(const NsParams& p, HopfParameter which, const HopfOptions& o, HopfBr
   h.next = {nearest.state, nearest.mode, nearest.vector, k.slope()};
 }
 
+/// |d(Re λ)/dx| between the bracket's ends.
+double mean_slope(const HopfBracket& k) { return std::fabs(k.hi.growth() - k.lo.growth()) / (k.hi.x - k.lo.x); }
+
 /// Throws std::invalid_argument (one line) for a bracket [A, B] or a tolerance no search can use.
 void check_search(HopfParameter which, double A, double B, const HopfOptions& o) {
   const char* name = hopf_parameter_name(which);
@@ -313,7 +326,9 @@ HopfPoint hopf_point(const NsParams& p, HopfParameter which, double A, double B,
   HopfPoint h;
   h.parameter = which;
   const Keep keep = recorder(h, which, progress);
-  refine(p, which, o, hopf_ends(p, which, A, B, o, keep, start ? &start->state : nullptr, start), keep, h);
+  HopfBracket k = hopf_ends(p, which, A, B, o, keep, start ? &start->state : nullptr, start);
+  const double slope = mean_slope(k);
+  refine(p, which, o, std::move(k), slope, keep, h);
   h.seconds = seconds_since(t0);
   return h;
 }
@@ -331,12 +346,15 @@ HopfPoint hopf_point_from(const NsParams& p, HopfParameter which, double at, dou
   HopfBracket k;
   k.var = search_variable(which, A, B);
   const bool followed = !start.vector.empty() && start.slope != 0.0 && stepped_ends(p, which, at, A, B, o, keep, start, k);
+  // The jump test's slope: the last crossing's, in x (du/dx = 2x in α²), not the steps' own bracket's.
+  double slope = std::fabs(start.slope) * (k.var.squared ? 2.0 * at : 1.0);
   if (!followed) {  // the ends' own searches about `at`, Newton from start's state
     const double w = (B - A) / 8.0;
     k = hopf_ends(p, which, std::max(A, at - w), std::min(B, at + w), o, keep, &start.state, nullptr);
     k.var = search_variable(which, A, B);
+    slope = mean_slope(k);
   }
-  refine(p, which, o, std::move(k), keep, h);
+  refine(p, which, o, std::move(k), slope, keep, h);
   h.seconds = seconds_since(t0);
   return h;
 }

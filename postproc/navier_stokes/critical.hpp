@@ -84,6 +84,8 @@ struct HopfStart {
   std::complex<double> lambda;                 ///< its wake pair (Im λ > 0), U/D
   std::vector<std::complex<double>> vector;    ///< that pair's eigenvector (empty: Newton's start only)
   /// d(Re λ)/du across the crossing's final bracket (u of SearchVariable), U/D per unit of u; 0: unknown.
+  /// In the u of the range that search ran over: a search started from it must run over the same range
+  /// (the curves of onset_curve.hpp do).
   double slope = 0.0;
 };
 
@@ -158,7 +160,8 @@ HopfPoint hopf_point(const NsParams& p, HopfParameter which, double A, double B,
 /// steps); the last two points are the bracket the secant search refines. A prediction within tol/3 of the
 /// crossing costs two steady states. Where the pair is not followed at `at`, the search runs as hopf_point's
 /// over [at − (B − A)/8, at + (B − A)/8] ∩ [A, B] with start's state alone. Throws NoCrossing (the last two
-/// points) when the steps reach A or B, or four, without a sign change.
+/// points) when four steps, or steps reaching A or B, keep one sign, and std::runtime_error when a step's
+/// pair is not followed (another mode) or no step stays inside [A, B].
 HopfPoint hopf_point_from(const NsParams& p, HopfParameter which, double at, double A, double B,
                           const HopfOptions& o, const HopfStart& start,
                           const std::function<void(const HopfEvaluation&)>& progress = {});
