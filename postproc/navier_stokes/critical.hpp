@@ -45,7 +45,7 @@ NsParams with_parameter(const NsParams& p, HopfParameter which, double x);
 /// The variable a search solves in, u: α² for the spin ratio over a range that reaches down near α = 0
 /// (0 ≤ A < B − A: the flow at −α is the mirror image of the flow at α, so Re λ is a smooth, even function
 /// of α, flat in α near α = 0 but nearly linear in α²), else u = x (away from α = 0 the square only adds
-/// curvature: at Re 100 over 1.6:2.2 the search in α² took six steady states, in α five).
+/// curvature: at Re 100 over 1.6:2.2 the growth rate is already convex in α).
 struct SearchVariable {
   bool squared = false;  ///< u = x² (else u = x)
   double u(double x) const { return squared ? x * x : x; }
