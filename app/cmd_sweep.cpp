@@ -34,7 +34,7 @@ struct SweepOptions {
   std::string case_path, spin_ratio, circulation, csv, output, plot, size, reynolds, shard;
   std::vector<std::string> sets;
   int threads = 1;
-  bool quiet = false, json = false, steady_only = false, no_error_bars = false;
+  bool quiet = false, json = false, steady_only = false, no_error_bars = false, orbits = false;
   std::string stability = "eigenvalues";
 };
 
@@ -88,7 +88,11 @@ void command_ns_sweep(const SweepOptions& o, const Case& c, const SweepRange& al
         "--plot {}: the plot shows S/(2πρa²) = C_L/C_L,ideal, undefined at α = 0 (the ideal lift is 0): "
         "give spin ratios above 0, or leave out --plot",
         o.plot));
+  if (o.orbits && o.steady_only)
+    throw std::runtime_error("--orbits and --steady-only: --orbits computes the shedding points that --steady-only "
+                             "leaves out; give one of them");
   mo.threads = o.threads;
+  mo.orbits = o.orbits;
   if (!o.steady_only) {
     mo.stability = make_stability_hook(o.stability == "march" ? StabilityMethod::march : StabilityMethod::eigenvalues);
     mo.stability_method = o.stability;
@@ -97,10 +101,12 @@ void command_ns_sweep(const SweepOptions& o, const Case& c, const SweepRange& al
   mo.error_estimate = !o.no_error_bars;
   if (!o.quiet)
     mo.on_point = [](const NsMapPoint& p) {
+      const std::string orbit =
+          fmt::format(", the shedding orbit (from {}, {:.0f} periods of time steps)", p.orbit_start, p.orbit_periods);
       std::fprintf(stderr, "magnus: Re %g, α %.4g: %s%s (%.2f s)\n", p.reynolds, p.alpha,
                    p.converged ? "steady" : (p.fold ? "fold" : "no steady state"),
-                   p.source == MapSource::marched_steady
-                       ? ", unstable: marched from rest to another steady state"
+                   p.source == MapSource::marched_steady ? ", unstable: marched from rest to another steady state"
+                   : p.source == MapSource::orbit        ? orbit.c_str()
                    : p.source == MapSource::steady || p.source == MapSource::none ? ""
                                                                                  : ", time-averaged",
                    p.seconds);
@@ -165,9 +171,10 @@ void command_sweep(const SweepOptions& o) {
       throw std::runtime_error("--circulation: a navier-stokes sweep varies the spin ratio (--spin-ratio)");
     return command_ns_sweep(o, c, range);
   }
-  if (!o.reynolds.empty() || !o.shard.empty() || o.steady_only || o.stability != "eigenvalues" || o.no_error_bars)
+  if (!o.reynolds.empty() || !o.shard.empty() || o.steady_only || o.stability != "eigenvalues" || o.no_error_bars ||
+      o.orbits)
     throw std::runtime_error(fmt::format(
-        "{}: --reynolds, --shard, --steady-only, --stability and --no-error-bars need a navier-stokes case",
+        "{}: --reynolds, --shard, --steady-only, --stability, --no-error-bars and --orbits need a navier-stokes case",
         o.case_path));
   if (o.json && is_stdout(o.csv))
     throw std::runtime_error("--json and --csv -: both would go to standard output; name a file for one");
@@ -246,6 +253,9 @@ void add_sweep_command(CLI::App& app) {
   sweep->add_flag("--no-error-bars", o->no_error_bars,
                   "navier-stokes: no per-point error bars (they cost a steady solve on the grid twice as coarse, "
                   "and a companion march beside each marched point)");
+  sweep->add_flag("--orbits", o->orbits,
+                  "navier-stokes: each shedding point as its periodic orbit (Newton–GMRES shooting), continued "
+                  "from the previous α's orbit or started on the growing mode, instead of a march from rest");
   sweep->add_option("--stability", o->stability,
                     "navier-stokes: eigenvalues (the Jacobian's leading pair, default) or march (the linearised "
                     "time stepper's growth: cheaper on coarse grids)")

@@ -243,7 +243,10 @@ std::string describe_sweep(const ResultFile& f) {
   for (const char* k : {"title", "model", "variable", "stability"})
     if (f.has_attr("/", k)) s += fmt::format("{}: {}\n", k, f.attr_string("/", k));
   if (f.has_attr("/", "averaged"))
-    s += fmt::format("unstable points: {}\n", f.attr_int("/", "averaged") ? "marched from rest" : "not marched");
+    s += fmt::format("unstable points: {}\n", !f.attr_int("/", "averaged") ? "not marched"
+                                                 : f.has_attr("/", "orbits") && f.attr_int("/", "orbits")
+                                                     ? "shedding orbits (marched from rest where none was found)"
+                                                     : "marched from rest");
   if (f.has_attr("/", "shards"))
     s += fmt::format("shard: {} of {}\n", f.attr_int("/", "shard"), f.attr_int("/", "shards"));
   if (f.has_attr("/", "case")) s += fmt::format("case (resolved):\n{}\n", f.attr_string("/", "case"));

@@ -24,7 +24,9 @@ std::string stability_text(const NsMap& m) {
   if (m.stability_method.empty()) return "stability method not recorded";
   if (m.stability_method == "none") return "no stability test (--steady-only)";
   return fmt::format("stability by {}{}", m.stability_method == "march" ? "the marching test" : "eigenvalues",
-                     m.averaged ? ", unstable points marched from rest" : "");
+                     !m.averaged ? ""
+                     : m.orbits  ? ", unstable points as shedding orbits (marched from rest where none was found)"
+                                 : ", unstable points marched from rest");
 }
 
 std::string stable_text(const NsMapPoint& p) { return p.stable ? (*p.stable ? "yes" : "no") : "—"; }
@@ -39,6 +41,8 @@ std::string source_short(MapSource s) {
       return "mean (no steady)";
     case MapSource::marched_steady:
       return "steady (march)";
+    case MapSource::orbit:
+      return "mean (orbit)";
     case MapSource::none:
       break;
   }
@@ -114,7 +118,7 @@ std::string ns_map_json(const NsMap& m, const std::vector<std::string>& written)
   put_values(j, attr_values(ns_map_attributes(), m, Shown::json_only));
   j["grid"] = {{"n_theta", count(m.n_theta)}, {"n_r", count(m.n_r)}, {"outer_radius", quantity(m.outer_over_a, "a")}};
   j["shard"] = {{"k", count(m.shard)}, {"n", count(m.shards)}};
-  j["stability"] = {{"method", m.stability_method}, {"averaged", m.averaged}};
+  j["stability"] = {{"method", m.stability_method}, {"averaged", m.averaged}, {"orbits", m.orbits}};
   j["axes"] = {{"alpha", quantity(m.alphas, "1")}, {"reynolds", quantity(m.reynolds, "1")}};
   j["timing"] = {{"total_s", quantity(m.total_s, "s")}, {"threads", count(m.threads)}};
   Json cols = Json::object();
@@ -207,10 +211,10 @@ NsMap merge_ns_maps(const std::vector<NsMap>& shards, const std::vector<std::str
       throw std::runtime_error(
           fmt::format("merge: {} ({} × {}, R/a {:g}) and {} ({} × {}, R/a {:g}) have different grids",
                       paths[0], a.n_theta, a.n_r, a.outer_over_a, name, s.n_theta, s.n_r, s.outer_over_a));
-    if (s.stability_method != a.stability_method || s.averaged != a.averaged)
+    if (s.stability_method != a.stability_method || s.averaged != a.averaged || s.orbits != a.orbits)
       throw std::runtime_error(fmt::format(
           "merge: {} ({}) and {} ({}) decided stability differently: compute every shard with the same "
-          "--stability and --steady-only",
+          "--stability, --steady-only and --orbits",
           paths[0], stability_text(a), name, stability_text(s)));
     if (s.alphas != a.alphas || s.reynolds != a.reynolds)
       throw std::runtime_error(fmt::format("merge: {} and {} map different α or Re values", paths[0], name));

@@ -53,10 +53,11 @@ const std::vector<Column<NsMapPoint>>& ns_map_columns() {
              }},
       Column<NsMapPoint>{"source", "1",
              "0 steady, 1 time-averaged (steady state unstable), 2 time-averaged (no steady state), 3 none, "
-             "4 steady, reached by marching from rest (the continued state unstable or not found)",
+             "4 steady, reached by marching from rest (the continued state unstable or not found), "
+             "5 time-averaged over the shedding orbit found by shooting (--orbits)",
              [](const NsMapPoint& p) { return double(int(p.source)); },
              [](NsMapPoint& p, double v) {
-               p.source = v >= 0.0 && v <= 4.0 ? MapSource(int(v)) : MapSource::none;
+               p.source = v >= 0.0 && v <= 5.0 ? MapSource(int(v)) : MapSource::none;
              }},
       NS_COL("cl_rel_estimate", "1",
              "relative error bar of cl: |f − f_c|/|f| against the grid twice as coarse (fill value: undefined)",
@@ -102,6 +103,9 @@ std::vector<Attr<NsMap>> make_ns_map_attributes() {
       R::shown(file, R::integer(
                          "/", "averaged", "1: unstable points were marched from rest (not --steady-only)",
                          [](const NsMap& m) { return opt(m.averaged); }, [](NsMap& m, double v) { m.averaged = v != 0.0; })),
+      R::shown(file, R::integer(
+                         "/", "orbits", "1: shedding points as periodic orbits by shooting (--orbits), marched where none was found",
+                         [](const NsMap& m) { return opt(m.orbits); }, [](NsMap& m, double v) { m.orbits = v != 0.0; })),
       R::shown(file, R::num(P, "radius", "m", "cylinder radius a", [](const NsMap& m) { return opt(m.base.scene.radius); })),
       R::shown(file, R::num(P, "speed", "m/s", "freestream speed U", [](const NsMap& m) { return opt(m.base.scene.speed); })),
       R::shown(file, R::num(P, "density", "kg/m^3", "fluid density ρ", [](const NsMap& m) { return opt(m.base.scene.density); })),

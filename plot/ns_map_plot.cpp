@@ -39,7 +39,8 @@ void plot_ns_map(const NsMap& m, const std::string& png, PlotSize size, const st
   avg.marker = 5;
   for (const auto& p : m.points)
     if (std::isfinite(p.ratio) &&
-        (p.source == MapSource::averaged_unstable || p.source == MapSource::averaged_no_steady))
+        (p.source == MapSource::averaged_unstable || p.source == MapSource::averaged_no_steady ||
+         p.source == MapSource::orbit))
       avg.points.push_back({by_re ? p.reynolds : p.alpha, p.ratio});
   // Where the computed 3D onset says the flow is three-dimensional: the 2D answer is not the real flow.
   PointSet three;

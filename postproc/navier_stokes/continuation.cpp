@@ -28,6 +28,8 @@ const char* to_string(MapSource s) {
       return "time-averaged (no steady state found)";
     case MapSource::marched_steady:
       return "steady, reached by marching from rest (another state than the continued one)";
+    case MapSource::orbit:
+      return "time-averaged over the shedding orbit (by shooting)";
     case MapSource::none:
       break;
   }
@@ -102,10 +104,17 @@ std::optional<bool> stability_by_marching(const NsParams& p, const NsState& stea
 StabilityHook make_stability_hook(StabilityMethod m) {
   if (m == StabilityMethod::march)
     return [](const NsParams& p, const NsState& s) { return stability_by_marching(p, s); };
-  return [](const NsParams& p, const NsState& s) -> std::optional<bool> {
-    const StabilityResult r = leading_eigenvalues(p, s);
-    if (r.eigenvalues.empty()) return std::nullopt;
-    return r.stable;
+  return [](const NsParams& p, const NsState& s) -> StabilityVerdict {
+    StabilityResult r = leading_eigenvalues(p, s);
+    if (r.eigenvalues.empty()) return {};
+    StabilityVerdict v(r.stable);
+    const std::complex<double> lead = r.eigenvalues.front();
+    if (lead.real() > 0.0 && lead.imag() > 0.0 && !r.mode_zeta.empty()) {  // the mode is the leading one's
+      v.pair = lead;
+      v.mode_psi = std::move(r.mode_psi), v.mode_zeta = std::move(r.mode_zeta);
+      v.mode_Gamma_R = r.mode_Gamma_R;
+    }
+    return v;
   };
 }
 
@@ -129,6 +138,7 @@ NsMap ns_map(const Case& c, const NsMapOptions& o) {
   map.shard = o.shard, map.shards = o.shards;
   map.stability_method = o.stability ? o.stability_method : "none";
   map.averaged = o.average_unstable && bool(o.stability);
+  map.orbits = map.averaged && o.orbits;
   const NsParams p = ns_params(c);
   const PolarGrid g = ns_grid(p);
   map.n_theta = g.n_theta, map.n_r = g.n_r, map.outer_over_a = p.outer_over_a;
@@ -147,11 +157,12 @@ NsMap ns_map(const Case& c, const NsMapOptions& o) {
     // steady state (sequential, so one thread).
     map.threads = 1;
     std::optional<NsState> state;
+    OrbitChain orbits;  // the shedding orbit continued in Re too (o.orbits)
     for (size_t i = 0; i < rows.size(); ++i) {
       std::optional<NsState> first;
       try {
         results[i] = solve_row(c, o, rows[i], map.reynolds[size_t(rows[i])], done, state ? &*state : nullptr,
-                               &first);
+                               &first, &orbits);
       } catch (const std::exception& e) {
         errors[i] = fmt::format("Re = {:g}: {}", map.reynolds[size_t(rows[i])], e.what());
       }

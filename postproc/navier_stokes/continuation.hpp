@@ -17,6 +17,7 @@
 // unstable (or that has none) is marched in time from rest (run_case on its case) and reports what the
 // march gives: the time-averaged C_L, C_D, C_M and St of a shedding wake, or the steady state the march
 // settles on, and is marked so.
+#include <complex>
 #include <functional>
 #include <optional>
 #include <string>
@@ -27,8 +28,20 @@
 
 namespace magnus {
 
-/// Linear stability of a steady state: true stable, false unstable, empty when undecided.
-using StabilityHook = std::function<std::optional<bool>(const NsParams&, const NsState&)>;
+/// A stability hook's verdict on a steady state.
+struct StabilityVerdict {
+  std::optional<bool> stable;  ///< true stable, false unstable, empty when undecided
+  /// The leading eigenvalue when it is a growing pair (the wake's Hopf mode; Im λ > 0 member, U/D), with its
+  /// mode as StabilityResult holds it (ψ, ζ row-major, Γ_R; max |ζ| = 1): the start of the shedding orbit
+  /// (hopf_start). Empty when the hook found none (or does not compute modes).
+  std::optional<std::complex<double>> pair;
+  std::vector<std::complex<double>> mode_psi, mode_zeta;
+  std::complex<double> mode_Gamma_R;
+  StabilityVerdict(std::optional<bool> s = std::nullopt) : stable(s) {}  // NOLINT: a bare verdict converts
+};
+
+/// Linear stability of a steady state.
+using StabilityHook = std::function<StabilityVerdict(const NsParams&, const NsState&)>;
 
 /// The interim hook: march the steady state plus a weak off-axis vortex (circulation 1e-4·U·D) with the
 /// time stepper for `span` convective times D/U and fit the growth rate σ of the perturbation's norm
@@ -46,7 +59,8 @@ enum class MapSource {
   averaged_unstable = 1,
   averaged_no_steady = 2,
   none = 3,
-  marched_steady = 4
+  marched_steady = 4,
+  orbit = 5  ///< the means over one period of the shedding orbit, by shooting (NsMapOptions::orbits)
 };
 const char* to_string(MapSource);
 
@@ -74,6 +88,10 @@ struct NsMapPoint {
   /// is not, NaN when C_D's bar is undefined.
   double meets_tolerance;
   double seconds = 0.0;  ///< wall time of this point (steady, stability, averaging)
+  /// An orbit point only (not written to the map's files): how its orbit started ("continued", "hopf mode",
+  /// "rest") and the periods of time steps it cost (short march, Newton's GMRES products, the summary).
+  std::string orbit_start;
+  double orbit_periods = 0.0;
 };
 
 /// What to compute.
@@ -87,6 +105,13 @@ struct NsMapOptions {
   std::string stability_method = "none";
   bool average_unstable = true;  ///< march unstable points and points without a steady state from rest
   bool error_estimate = true;    ///< each point's error bars from the grid twice as coarse (NsMapPoint)
+  /// A shedding point (steady state unstable, or none) as its periodic orbit by Newton–GMRES shooting
+  /// instead of a march from rest: continued from the row's previous point when that was an orbit too (in a
+  /// map continued in Re, from the previous Re's),
+  /// else from the steady state plus its growing pair's mode (hopf_start), else from rest; a point where no
+  /// orbit is found (the start settles, or Newton stalls) is marched from rest as without this option.
+  bool orbits = false;
+  double orbit_tol = 1e-7;       ///< the orbits' Newton residual (OrbitOptions::tol)
   double newton_tol = 1e-10;     ///< scaled max-norm residual
   int newton_max = 12;           ///< Newton steps per solve before arclength takes over
   int max_arclength_steps = 40;  ///< per gap between two α
@@ -104,6 +129,7 @@ struct NsMap {
   int shard = 1, shards = 1;
   std::string stability_method = "none";  ///< "eigenvalues", "march" or "none"; "" in files that predate it
   bool averaged = true;                   ///< unstable points were marched (not --steady-only)
+  bool orbits = false;                    ///< shedding points as periodic orbits (NsMapOptions::orbits)
   std::vector<NsMapPoint> points;  ///< the computed rows, row-major (row, then column)
   int threads = 1;
   double total_s = 0.0;

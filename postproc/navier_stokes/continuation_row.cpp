@@ -9,6 +9,7 @@
 #include "postproc/navier_stokes/error_estimate.hpp"
 #include "postproc/navier_stokes/forces.hpp"
 #include "postproc/navier_stokes/grid_rule.hpp"
+#include "postproc/navier_stokes/map_orbits.hpp"
 #include "postproc/navier_stokes/steady_study.hpp"
 #include "postproc/run_case.hpp"
 #include "solver/navier_stokes/newton.hpp"
@@ -147,14 +148,22 @@ NsMapPoint blank_point(const Case& base, int row, int col, double re, double alp
   return m;
 }
 
-/// The reported figures: steady when stable (or undecided); else what the flow does when it is marched
-/// in time from rest: the time average of a shedding wake, or the steady state it settles on. The march
+/// The reported figures: steady when stable (or undecided); else the shedding orbit's means (o.orbits), or
+/// what the flow does when it is marched in time from rest: the time average of a shedding wake, or the steady state it settles on. The march
 /// starts at once: a Newton solve from the potential flow (time.mode = "auto") may land on another steady
 /// state than the continued one and would report that as the point's average without marching.
-void finish_point(const Case& base, const NsMapOptions& o, NsMapPoint& m) {
+/// With o.orbits a shedding point is first sought as its periodic orbit (map_orbits.hpp): continued from
+/// the chain's, else from the steady state `steady` (null: none) and the verdict's growing mode, else from rest; only
+/// where none is found is it marched.
+void finish_point(const Case& base, const NsMapOptions& o, const NsParams& p, const NsState* steady,
+                  const StabilityVerdict& verdict, OrbitChain& chain, NsMapPoint& m) {
   if (m.converged && m.stable != std::optional<bool>(false)) {
+    chain = {};  // the next shedding point starts its orbit afresh
     m.source = MapSource::steady;
     m.cl = m.cl_steady, m.cd = m.cd_steady, m.cm = m.cm_steady;
+  } else if (o.average_unstable && o.orbits &&
+             orbit_point(map_point_case(base, m.reynolds, m.alpha), p, steady, verdict, o, chain, m)) {
+    // m holds the orbit's means and bars
   } else if (o.average_unstable) {
     Case c = map_point_case(base, m.reynolds, m.alpha);
     c.time.mode = TimeMode::automatic;
@@ -237,7 +246,7 @@ double meets_tolerance(const NsMapPoint& m) {
 
 std::vector<NsMapPoint> solve_row(const Case& base, const NsMapOptions& o, int row, double re,
                                   const std::function<void(const NsMapPoint&)>& done, const NsState* guess,
-                                  std::optional<NsState>* first) {
+                                  std::optional<NsState>* first, OrbitChain* orbits) {
   const std::vector<double>& al = o.alphas;
   const Case c0 = map_point_case(base, re, al.front());
   const NsParams p0 = ns_params(c0);
@@ -254,6 +263,8 @@ std::vector<NsMapPoint> solve_row(const Case& base, const NsMapOptions& o, int r
   std::vector<double> x1, x2;
   double a1 = 0.0, a2 = 0.0;
   bool have1 = false, have2 = false;
+  OrbitChain own;  // the row's last shedding orbit (o.orbits)
+  OrbitChain& chain = orbits ? *orbits : own;
   for (size_t k = 0; k < al.size(); ++k) {
     const auto t0 = Clock::now();
     NsMapPoint m = blank_point(base, row, int(k), re, al[k]);
@@ -272,18 +283,21 @@ std::vector<NsMapPoint> solve_row(const Case& base, const NsMapOptions& o, int r
         arclength_to(R, prob, o, x1, a1, al[k], m, x);
       }
     }
+    std::optional<NsState> s;
+    StabilityVerdict verdict;
     if (m.converged) {
-      const NsState s = R.jac.unpack(x);
-      set_forces(m, p, g, rho, s);
-      if (companion) estimate_steady(*companion, g, s, rho, m);
-      if (k == 0 && first) *first = s;
-      if (o.stability) m.stable = o.stability(p, s);
+      s = R.jac.unpack(x);
+      set_forces(m, p, g, rho, *s);
+      if (companion) estimate_steady(*companion, g, *s, rho, m);
+      if (k == 0 && first) *first = *s;
+      if (o.stability) verdict = o.stability(p, *s);
+      m.stable = verdict.stable;
       x2 = std::move(x1), a2 = a1, have2 = have1;
-      x1 = R.jac.pack(s), a1 = al[k], have1 = true;
+      x1 = R.jac.pack(*s), a1 = al[k], have1 = true;
     } else {
       have1 = have2 = false;  // the branch is lost: the next α starts afresh
     }
-    finish_point(base, o, m);
+    finish_point(base, o, p, s ? &*s : nullptr, verdict, chain, m);
     m.seconds = since(t0);
     done(m);
     out.push_back(m);

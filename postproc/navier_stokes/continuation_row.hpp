@@ -7,14 +7,17 @@
 #include <vector>
 
 #include "postproc/navier_stokes/continuation.hpp"
+#include "postproc/navier_stokes/map_orbits.hpp"
 
 namespace magnus {
 
 /// One row: continuation along α (sequential). guess: a steady state to start the row's first point from
-/// (the previous row's, continuing in Re); first: set to the first point's steady state when it converged.
-/// done: called after each point.
+/// (the previous row's, continuing in Re); first: set to the first point's steady state when it converged;
+/// orbits: the last shedding orbit before the row (the previous row's, continuing in Re), updated to the
+/// row's last (null: the row's own chain, starting empty). done: called after each point.
 std::vector<NsMapPoint> solve_row(const Case& base, const NsMapOptions& o, int row, double re,
                                   const std::function<void(const NsMapPoint&)>& done,
-                                  const NsState* guess = nullptr, std::optional<NsState>* first = nullptr);
+                                  const NsState* guess = nullptr, std::optional<NsState>* first = nullptr,
+                                  OrbitChain* orbits = nullptr);
 
 }  // namespace magnus

@@ -125,6 +125,24 @@ std::string orbit_history_text(const OrbitResult& orbit, double time_unit) {
                          orbit.krylov_total);
 }
 
+NsState hopf_start(const NsState& steady, const std::vector<std::complex<double>>& mode_psi,
+                   const std::vector<std::complex<double>>& mode_zeta, std::complex<double> mode_Gamma_R,
+                   double size) {
+  if (mode_psi.size() != steady.psi.size() || mode_zeta.size() != steady.zeta.size())
+    throw std::invalid_argument("hopf_start: the mode is not of the steady state's grid");
+  double zeta_max = 0.0, mode_max = 0.0;
+  for (double z : steady.zeta) zeta_max = std::max(zeta_max, std::fabs(z));
+  for (const auto& z : mode_zeta) mode_max = std::max(mode_max, std::abs(z));
+  NsState s;
+  s.psi = steady.psi, s.zeta = steady.zeta, s.Gamma_R = steady.Gamma_R;
+  if (!(mode_max > 0.0)) return s;
+  const double eps = size * zeta_max / mode_max;
+  for (size_t i = 0; i < s.psi.size(); ++i) s.psi[i] += eps * mode_psi[i].real();
+  for (size_t i = 0; i < s.zeta.size(); ++i) s.zeta[i] += eps * mode_zeta[i].real();
+  s.Gamma_R += eps * mode_Gamma_R.real();
+  return s;
+}
+
 OrbitRun periodic_orbit_run(const NsParams& p, const OrbitRunOptions& o, NsState start) {
   const auto clock0 = std::chrono::steady_clock::now();
   OrbitRun run;

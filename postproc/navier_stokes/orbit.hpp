@@ -3,8 +3,10 @@
 // a short march from the start until the lift's first periods look alike, its period from the lift's mean
 // crossings, then Newton–GMRES shooting on the period map, and the orbit's summary (means, amplitudes, St)
 // from one period of its forces, in the march's terms (UnsteadyResult).
+#include <complex>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "postproc/navier_stokes/unsteady.hpp"
 #include "solver/navier_stokes/floquet.hpp"
@@ -50,6 +52,21 @@ constexpr double kOrbitMinAmplitude = 1e-4;
 /// period by t_end, or an orbit that is the steady state) or is interrupted; a Newton solve that stalls
 /// returns with result.converged = false.
 OrbitRun periodic_orbit_run(const NsParams& p, const OrbitRunOptions& o, NsState start);
+
+/// The relative size of a start on the Hopf mode (hopf_start): the mode's largest vorticity is this
+/// fraction of the steady state's. Large enough that the short march does not spend its time growing the
+/// mode out of round-off, small enough to stay near the steady state's unstable manifold.
+constexpr double kHopfStartSize = 0.02;
+
+/// A short march's start near the shedding orbit's onset: the unstable steady state plus the real part of
+/// the growing pair's mode (ψ, ζ on every node as NsState, Γ_R; max |ζ_mode| = 1, as StabilityResult holds
+/// it), scaled so that its largest vorticity is size·max|ζ_steady| (1/s). No starting vortex has to leave
+/// the domain, and the mirror symmetry is broken by the mode itself: the march may stop as soon as the
+/// lift's periods agree (OrbitRunOptions::t_min = 0). The AB2 history is left empty (Euler first step).
+/// Throws std::invalid_argument for a mode of another size than the state.
+NsState hopf_start(const NsState& steady, const std::vector<std::complex<double>>& mode_psi,
+                   const std::vector<std::complex<double>>& mode_zeta, std::complex<double> mode_Gamma_R,
+                   double size = kHopfStartSize);
 
 /// The summary of one period of a converged orbit in the march's terms (OrbitRun::result without the steps
 /// and seconds of the march and the solve).

@@ -29,13 +29,14 @@ bool analyse_periodic_from(const std::vector<ForceSample>& h, size_t first, doub
   return true;
 }
 
-/// The rate (1/s) whose product with Δt advance() compares with kNsCflLimit, or a bound above it:
-/// cfl_number's (every ring; of ψ − ψ_ref when the rotation is implicit) and the wall ring's |ω|/Δθ (not
-/// when the rotation is implicit).
+}  // namespace
+
 double step_rate(const NsParams& p, const PolarGrid& g, const NsState& s) {
   const double r = cfl_number(g, s.psi, 1.0, p.advection_order, p.advection_order_xi, reference_psi_xi(p));
   return p.stokes || rotation_implicit(p) ? r : std::max(r, std::fabs(p.omega) / g.d_theta);
 }
+
+namespace {
 
 /// The Δt (s) for the next step from the state s, the current dt (returned unchanged unless it must move).
 /// A user's time.dt (p.dt > 0) is replaced only when its CFL number passes 0.95·kNsCflLimit. Magnus's own

@@ -104,6 +104,11 @@ struct UnsteadyResult {
 /// says when an asked Δt was clamped.
 double choose_time_step(const NsParams& p, const PolarGrid& g, const NsState& s, std::string* note);
 
+/// The rate r (1/s) whose product with Δt advance() compares with kNsCflLimit, or a bound above it:
+/// cfl_number's (every ring; of ψ − ψ_ref when the rotation is implicit) and the wall ring's |ω|/Δθ (not
+/// when the rotation is implicit). A march of magnus's own Δt keeps r·Δt near p.cfl.
+double step_rate(const NsParams& p, const PolarGrid& g, const NsState& s);
+
 /// Run from `start` (e.g. impulsive_start, or a checkpoint's state with its `history` so far). U = 0 is a
 /// spinning cylinder in still fluid (needs ω ≠ 0): the time unit and the CFL floor use U_ref = a|ω|, no
 /// coefficients. Throws std::invalid_argument when U = 0 and ω = 0 (nothing moves) or U < 0; never

@@ -160,7 +160,7 @@ OrbitResult solve_periodic_orbit(const NsParams& p, const NsState& start, double
 }
 
 OrbitResult continue_orbit(const NsParams& p, const OrbitResult& near, OrbitOptions o) {
-  o.steps = near.steps;
+  if (o.steps <= 0) o.steps = near.steps;
   return solve_periodic_orbit(p, near.state, near.T, o);
 }
 

@@ -68,7 +68,8 @@ NsState period_map(const NsOperator& op, const NsState& s, int N,
 OrbitResult solve_periodic_orbit(const NsParams& p, const NsState& start, double T0, const OrbitOptions& o);
 
 /// One step of natural continuation: the orbit of p (a neighbouring Re or α) from a converged orbit of
-/// other parameters on the same grid, its state and period the start, its N kept (o.steps ignored).
+/// other parameters on the same grid, its state and period the start; N = o.steps, or near's when
+/// o.steps ≤ 0 (a larger N where p's CFL limit asks for a shorter Δt than near's T/N).
 OrbitResult continue_orbit(const NsParams& p, const OrbitResult& near, OrbitOptions o);
 
 }  // namespace magnus

@@ -1,8 +1,8 @@
 // The navier-stokes command line beyond runs and shards: the S(Re, α) map's --reynolds alone (one branch
-// continued in Re), what an unstable point reports, merge refusing shards that decided stability
-// differently, the plot refused before solving when nothing would be drawable, `magnus stability` with its
-// refusals, the bench's options, "auto" marching an unstable state, Ctrl-C before the march, and the
-// progress line on a terminal.
+// continued in Re), what an unstable point reports, --orbits (shedding points as orbits), merge refusing
+// shards that decided stability differently, the plot refused before solving when nothing would be
+// drawable, `magnus stability` with its refusals, the bench's options, "auto" marching an unstable state,
+// Ctrl-C before the march, and the progress line on a terminal.
 #include <catch2/catch.hpp>
 
 #include <sys/wait.h>
@@ -115,6 +115,43 @@ TEST_CASE("navier-stokes map: an unstable point is marched from rest and says wh
   CHECK(c.cl == Approx(j["forces"]["cl"]["value"].get<double>()).epsilon(1e-4));
 }
 
+TEST_CASE("navier-stokes map --orbits: shedding points as orbits in the file, inspect and JSON, and its refusals",
+          "[app][sweep]") {
+  const std::string dir = temp_dir("ns-map-orbits");
+  const Outcome o = magnus_cmd({"sweep", s_map, "--spin-ratio", "0:0.25:0.25", "--reynolds", "100:100:1", "--orbits",
+                                "-o", dir + "/m.h5", "--json"},
+                               dir);
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  // The progress lines say how each orbit started: the first on the growing mode, the next continued.
+  CHECK(o.err.find("α 0: steady, the shedding orbit (from hopf mode") != std::string::npos);
+  CHECK(o.err.find("α 0.25: steady, the shedding orbit (from continued") != std::string::npos);
+  const auto j = nlohmann::json::parse(o.out);
+  CHECK(j["stability"]["orbits"].get<bool>());
+  const NsMap m = read_ns_map_hdf5(dir + "/m.h5");
+  CHECK(m.orbits);
+  REQUIRE(m.points.size() == 2);
+  for (const NsMapPoint& p : m.points) {
+    CHECK(p.source == MapSource::orbit);
+    CHECK(p.strouhal == Approx(0.155).epsilon(0.01));  // the map grid's shedding at Re 100
+  }
+  const Outcome i = magnus_cmd({"inspect", dir + "/m.h5"}, dir);
+  CHECK(i.out.find("unstable points: shedding orbits (marched from rest where none was found)") != std::string::npos);
+  // --orbits computes what --steady-only leaves out; a potential case has no shedding.
+  const Outcome both = magnus_cmd({"sweep", s_map, "--spin-ratio", "0:1:1", "--reynolds", "100:100:1", "--orbits",
+                                   "--steady-only", "-o", dir + "/b.h5"},
+                                  dir);
+  CHECK(both.status != 0);
+  CHECK(one_line(both.err));
+  CHECK(both.err.find("--orbits and --steady-only") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir + "/b.h5"));
+  const Outcome pot = magnus_cmd(
+      {"sweep", std::string(MAGNUS_SOURCE_DIR) + "/cases/spin_ratio_1.toml", "--spin-ratio", "0:1:1", "--orbits"}, dir);
+  CHECK(pot.status != 0);
+  CHECK(one_line(pot.err));
+  CHECK(pot.err.find("--orbits need a navier-stokes case") != std::string::npos);
+}
+
 TEST_CASE("navier-stokes merge: shards that decided stability differently are refused", "[app][merge]") {
   const std::string dir = temp_dir("ns-merge-stability");
   write_case(dir + "/c.toml", 32, 0.0);
@@ -129,8 +166,9 @@ TEST_CASE("navier-stokes merge: shards that decided stability differently are re
   REQUIRE(shard("1/2", "s1.h5", {}) == 0);
   REQUIRE(shard("2/2", "steady.h5", {"--steady-only"}) == 0);
   REQUIRE(shard("2/2", "march.h5", {"--stability", "march"}) == 0);
+  REQUIRE(shard("2/2", "orbits.h5", {"--orbits"}) == 0);
   REQUIRE(shard("2/2", "s2.h5", {}) == 0);
-  for (const std::string other : {"steady.h5", "march.h5"}) {
+  for (const std::string other : {"steady.h5", "march.h5", "orbits.h5"}) {
     const Outcome b = magnus_cmd({"merge", dir + "/bad.h5", dir + "/s1.h5", dir + "/" + other}, dir);
     INFO(other << ": " << b.err);
     CHECK(b.status != 0);
@@ -411,5 +449,5 @@ TEST_CASE("map error bars: in the CSV and the file, the same values either way, 
       dir);
   CHECK(p.status != 0);
   CHECK(one_line(p.err));
-  CHECK(p.err.find("--no-error-bars need a navier-stokes case") != std::string::npos);
+  CHECK(p.err.find("--no-error-bars and --orbits need a navier-stokes case") != std::string::npos);
 }

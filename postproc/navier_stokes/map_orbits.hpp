@@ -1,0 +1,32 @@
+#pragma once
+// The shedding points of a map row as periodic orbits (NsMapOptions::orbits): each orbit is continued from
+// the row's previous one, the way the steady branch is, or started from the steady state and its growing
+// pair's mode, or from rest; its error bars from the same orbit on the grid twice as coarse, continued
+// alongside. continuation_row.cpp calls it for each point whose steady state is unstable or missing.
+#include <optional>
+
+#include "postproc/navier_stokes/continuation.hpp"
+#include "solver/navier_stokes/periodic_orbit.hpp"
+
+namespace magnus {
+
+/// The row's last orbit on the map's grid and on the companion grid (empty after a point that was not an
+/// orbit: the next orbit starts afresh).
+struct OrbitChain {
+  std::optional<OrbitResult> fine, coarse;
+  std::optional<NsState> steady;  ///< the (unstable) steady state at the last orbit's point, if it had one
+};
+
+/// The orbit of map point m at parameters p on the row's grid: continued from chain.fine when it holds the
+/// previous column's orbit (its state shifted by the steady branch's change from chain.steady to `steady`
+/// where both exist), else a short march from hopf_start(steady, v's mode) when v has a growing pair,
+/// else from rest (impulsive start, mirror symmetry broken), then Newton–GMRES shooting to o.orbit_tol. On
+/// success sets m's cl, cd, cm (the means over one period), strouhal, source = orbit, orbit_start,
+/// orbit_periods, and with
+/// o.error_estimate its bars from the same orbit on the companion grid; updates the chain and returns true.
+/// Returns false, m and the chain's fine orbit cleared, when no orbit is found: the short march settles, no
+/// period appears by time.end, Newton stalls, or the orbit is the steady state (the caller marches then).
+bool orbit_point(const Case& point_case, const NsParams& p, const NsState* steady, const StabilityVerdict& v,
+                 const NsMapOptions& o, OrbitChain& chain, NsMapPoint& m);
+
+}  // namespace magnus
