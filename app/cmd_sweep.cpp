@@ -105,7 +105,9 @@ void command_ns_sweep(const SweepOptions& o, const Case& c, const SweepRange& al
           fmt::format(", the shedding orbit (from {}, {:.0f} periods of time steps)", p.orbit_start, p.orbit_periods);
       std::fprintf(stderr, "magnus: Re %g, α %.4g: %s%s (%.2f s)\n", p.reynolds, p.alpha,
                    p.converged ? "steady" : (p.fold ? "fold" : "no steady state"),
-                   p.source == MapSource::marched_steady ? ", unstable: marched from rest to another steady state"
+                   p.regime == double(MapRegime::bistable)
+                       ? ", stable, and the shedding orbit continued here persists: bistable"
+                   : p.source == MapSource::marched_steady ? ", unstable: marched from rest to another steady state"
                    : p.source == MapSource::orbit        ? orbit.c_str()
                    : p.source == MapSource::steady || p.source == MapSource::none ? ""
                                                                                  : ", time-averaged",

@@ -49,6 +49,29 @@ std::string source_short(MapSource s) {
   return "—";
 }
 
+/// The regimes in one line: how many points of each, and where the second window and the bistable points
+/// lie (at most eight named of each). Empty when no point is classified.
+std::string regime_summary(const NsMap& m) {
+  int n[4] = {0, 0, 0, 0}, unclassified = 0;
+  std::string where[4];
+  for (const auto& p : m.points) {
+    if (!std::isfinite(p.regime)) {
+      ++unclassified;
+      continue;
+    }
+    const int r = int(p.regime);
+    if (r < 0 || r > 3) continue;
+    if (r >= 2 && n[r] < 8) where[r] += fmt::format("{}Re {:g} α {:g}", n[r] ? ", " : "", p.reynolds, p.alpha);
+    ++n[r];
+  }
+  if (n[0] + n[1] + n[2] + n[3] == 0) return "";
+  auto named = [&](int r) { return n[r] ? fmt::format(" ({}{})", where[r], n[r] > 8 ? ", …" : "") : ""; };
+  return fmt::format("{:<13}{} steady, {} shedding, {} in the second (one-sided) shedding window{}, {} bistable "
+                     "(a stable steady state and a shedding orbit){}{}\n",
+                     "regimes", n[0], n[1], n[2], named(2), n[3], named(3),
+                     unclassified ? fmt::format(", {} not classified", unclassified) : "");
+}
+
 /// A relative bar in per cent, "—" when undefined.
 std::string bar_cell(double rel) {
   if (!std::isfinite(rel)) return "—";
@@ -96,6 +119,7 @@ std::string ns_map_table(const NsMap& m) {
                    "A:B --output F.h5)\n",
                    "3D");
   t += error_summary(m);
+  t += regime_summary(m);
   t += "\n";
   t += fmt::format("{:>7} {:>6} {:>9} {:>8} {:>8} {:>9} {:>8} {:>7} {:>6} {:>6} {:>6} {:>6} {:>16} {:>6} {:>4} "
                    "{:>7}\n",
@@ -188,7 +212,7 @@ NsMap read_ns_map_hdf5(const std::string& path) {
   // The error bars came later: a map file without them reads as undefined there.
   const auto later = [](const std::string& name) {
     return name == "cl_rel_estimate" || name == "cd_rel_estimate" || name == "strouhal_rel_estimate" ||
-           name == "meets_tolerance";
+           name == "meets_tolerance" || name == "regime";
   };
   for (const auto& c : ns_map_columns()) {
     const bool absent = later(c.name) && !f.has(std::string("/sweep/") + c.name);

@@ -59,6 +59,11 @@ const std::vector<Column<NsMapPoint>>& ns_map_columns() {
              [](NsMapPoint& p, double v) {
                p.source = v >= 0.0 && v <= 5.0 ? MapSource(int(v)) : MapSource::none;
              }},
+      NS_COL("regime", "1",
+             "what the flow does: 0 steady, 1 shedding, 2 the second (one-sided) shedding window (shedding again "
+             "after a steady stretch, at under half the first window's St), 3 bistable (a stable steady state and "
+             "a shedding orbit coexist, --orbits); fill value: not classified",
+             regime),
       NS_COL("cl_rel_estimate", "1",
              "relative error bar of cl: |f − f_c|/|f| against the grid twice as coarse (fill value: undefined)",
              cl_rel_estimate),

@@ -42,6 +42,19 @@ void plot_ns_map(const NsMap& m, const std::string& png, PlotSize size, const st
         (p.source == MapSource::averaged_unstable || p.source == MapSource::averaged_no_steady ||
          p.source == MapSource::orbit))
       avg.points.push_back({by_re ? p.reynolds : p.alpha, p.ratio});
+  // The second (one-sided) shedding window and the bistable points, each marked around its point.
+  PointSet second, both;
+  second.label = "second (one-sided) shedding window";
+  second.colour = Colour::black;
+  second.marker = 7;  // △
+  both.label = "bistable: a shedding orbit coexists";
+  both.colour = Colour::black;
+  both.marker = 3;  // ◆
+  for (const auto& p : m.points) {
+    if (!std::isfinite(p.ratio)) continue;
+    if (p.regime == double(MapRegime::second_window)) second.points.push_back({by_re ? p.reynolds : p.alpha, p.ratio});
+    if (p.regime == double(MapRegime::bistable)) both.points.push_back({by_re ? p.reynolds : p.alpha, p.ratio});
+  }
   // Where the computed 3D onset says the flow is three-dimensional: the 2D answer is not the real flow.
   PointSet three;
   three.label = "3D: above the computed onset";
@@ -53,6 +66,8 @@ void plot_ns_map(const NsMap& m, const std::string& png, PlotSize size, const st
   std::vector<PointSet> sets;
   for (auto& [r, s] : rows) sets.push_back(std::move(s));
   if (!avg.points.empty()) sets.push_back(std::move(avg));
+  if (!second.points.empty()) sets.push_back(std::move(second));
+  if (!both.points.empty()) sets.push_back(std::move(both));
   if (!three.points.empty()) sets.push_back(std::move(three));
   CurvePage page;
   page.title =

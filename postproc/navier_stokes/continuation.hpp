@@ -64,6 +64,16 @@ enum class MapSource {
 };
 const char* to_string(MapSource);
 
+/// What the flow does at a map point (NsMapPoint::regime).
+enum class MapRegime {
+  steady = 0,         ///< a stable steady state (the continued one, or the one a march from rest settles on)
+  shedding = 1,       ///< the wake sheds (the first window: from the onset of shedding up to α_L)
+  second_window = 2,  ///< shedding again after a steady stretch of the row, at under half the first window's
+                      ///< frequency: the one-sided "second shedding mode" of high spin
+  bistable = 3        ///< a stable steady state and a shedding orbit coexist (--orbits: the row's orbit,
+                      ///< continued into the point, persists; the steady values are reported)
+};
+
 /// One point of the map. Undefined values are NaN.
 struct NsMapPoint {
   int row = 0, column = 0;                 ///< index of Re and of α in the map's axes
@@ -87,6 +97,8 @@ struct NsMapPoint {
   /// 1 when the bars are within the default grid's design tolerances (C_L and St 1%, C_D 2%), 0 when one
   /// is not, NaN when C_D's bar is undefined.
   double meets_tolerance;
+  /// MapRegime as a number (NaN: not classified, when stability was not decided or nothing was found).
+  double regime;
   double seconds = 0.0;  ///< wall time of this point (steady, stability, averaging)
   /// An orbit point only (not written to the map's files): how its orbit started ("continued", "hopf mode",
   /// "rest") and the periods of time steps it cost (short march, Newton's GMRES products, the summary).

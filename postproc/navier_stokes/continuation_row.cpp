@@ -142,7 +142,7 @@ NsMapPoint blank_point(const Case& base, int row, int col, double re, double alp
   m.row = row, m.column = col, m.reynolds = re, m.alpha = alpha;
   m.cl = m.cd = m.cm = m.cl_steady = m.cd_steady = m.cm_steady = kNaN;
   m.cl_pressure = m.cl_friction = m.cd_pressure = m.cd_friction = m.strouhal = kNaN;
-  m.cl_rel_estimate = m.cd_rel_estimate = m.strouhal_rel_estimate = m.meets_tolerance = kNaN;
+  m.cl_rel_estimate = m.cd_rel_estimate = m.strouhal_rel_estimate = m.meets_tolerance = m.regime = kNaN;
   m.cl_ideal = exact_flow(map_point_case(base, re, alpha).scene).cl() + 0.0;  // + 0.0: no −0 at α = 0
   m.ratio = kNaN;
   return m;
@@ -158,12 +158,16 @@ NsMapPoint blank_point(const Case& base, int row, int col, double re, double alp
 void finish_point(const Case& base, const NsMapOptions& o, const NsParams& p, const NsState* steady,
                   const StabilityVerdict& verdict, OrbitChain& chain, NsMapPoint& m) {
   if (m.converged && m.stable != std::optional<bool>(false)) {
-    chain = {};  // the next shedding point starts its orbit afresh
     m.source = MapSource::steady;
     m.cl = m.cl_steady, m.cd = m.cd_steady, m.cm = m.cm_steady;
+    // Does the row's shedding orbit persist here too? Then both states are stable: bistable.
+    const bool both = o.orbits && o.average_unstable && steady && m.stable &&
+                      coexisting_orbit(map_point_case(base, m.reynolds, m.alpha), p, *steady, o, chain, m);
+    if (!both) chain = {};  // the next shedding point starts its orbit afresh
+    if (m.stable) m.regime = double(both ? MapRegime::bistable : MapRegime::steady);
   } else if (o.average_unstable && o.orbits &&
              orbit_point(map_point_case(base, m.reynolds, m.alpha), p, steady, verdict, o, chain, m)) {
-    // m holds the orbit's means and bars
+    m.regime = double(MapRegime::shedding);  // m holds the orbit's means and bars
   } else if (o.average_unstable) {
     Case c = map_point_case(base, m.reynolds, m.alpha);
     c.time.mode = TimeMode::automatic;
@@ -178,6 +182,7 @@ void finish_point(const Case& base, const NsMapOptions& o, const NsParams& p, co
     m.source = v.steady      ? MapSource::marched_steady
                : m.converged ? MapSource::averaged_unstable
                              : MapSource::averaged_no_steady;
+    m.regime = double(v.steady ? MapRegime::steady : MapRegime::shedding);
     m.cl = v.cl_mean.value_or(kNaN), m.cd = v.cd_mean.value_or(kNaN), m.cm = v.cm_mean.value_or(kNaN);
     m.strouhal = v.strouhal.value_or(kNaN);
     m.cl_rel_estimate = v.cl_mean_rel_estimate.value_or(kNaN);
@@ -226,6 +231,24 @@ void arclength_to(Row& R, const ArclengthProblem& prob, const NsMapOptions& o, c
 }
 
 }  // namespace
+
+void mark_second_window(std::vector<NsMapPoint>& row) {
+  double first_st = kNaN;
+  bool steady_since = false;
+  for (NsMapPoint& m : row) {
+    if (m.regime == double(MapRegime::steady) || m.regime == double(MapRegime::bistable)) {
+      steady_since = std::isfinite(first_st);
+    } else if (m.regime == double(MapRegime::shedding)) {
+      if (steady_since && m.strouhal < 0.5 * first_st) {
+        m.regime = double(MapRegime::second_window);
+      } else if (std::isfinite(m.strouhal)) {  // the first window (again, past a stable island)
+        first_st = m.strouhal;
+        steady_since = false;
+      }
+    }
+  }
+}
+
 
 double meets_tolerance(const NsMapPoint& m) {
   const auto within = [](double value, double bar, double tol, bool needed) -> std::optional<bool> {
@@ -302,6 +325,7 @@ std::vector<NsMapPoint> solve_row(const Case& base, const NsMapOptions& o, int r
     done(m);
     out.push_back(m);
   }
+  mark_second_window(out);
   return out;
 }
 

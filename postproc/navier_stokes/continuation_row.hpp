@@ -20,4 +20,12 @@ std::vector<NsMapPoint> solve_row(const Case& base, const NsMapOptions& o, int r
                                   const NsState* guess = nullptr, std::optional<NsState>* first = nullptr,
                                   OrbitChain* orbits = nullptr);
 
+/// Marks the row's second (one-sided) shedding window (MapRegime::second_window) among its points, in α
+/// order: a shedding point after the row has shed and then been steady (or bistable), whose St is under half
+/// that of the first window's last shedding point. The frequency tells the two apart: the one-sided mode of
+/// high spin sheds several times slower (St 0.01–0.05 against 0.1–0.2), while a wake that stops and starts
+/// again near α_L (a stable island between two unstable stretches of the branch) keeps its frequency. A row
+/// that starts above its first window cannot tell, and leaves such points as shedding.
+void mark_second_window(std::vector<NsMapPoint>& row);
+
 }  // namespace magnus

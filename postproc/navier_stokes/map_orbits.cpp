@@ -78,6 +78,28 @@ std::optional<FoundOrbit> from_march(const NsParams& p, const OrbitRunOptions& r
 
 }  // namespace
 
+bool coexisting_orbit(const Case& point_case, const NsParams& p, const NsState& steady, const NsMapOptions& o,
+                      OrbitChain& chain, NsMapPoint& m) {
+  const PolarGrid g = ns_grid(p);
+  std::optional<FoundOrbit> f;
+  if (chain.fine && chain.fine->state.psi.size() == size_t(g.nodes())) {
+    OrbitOptions oo;
+    oo.tol = o.orbit_tol;
+    f = continued(p, *chain.fine, chain.steady ? &*chain.steady : nullptr, chain.steady ? &steady : nullptr, oo,
+                  point_case.scene.density);
+  }
+  if (!f) {
+    chain = {};
+    return false;
+  }
+  m.orbit_start = "continued";
+  m.orbit_periods = f->periods;
+  chain.fine = std::move(f->orbit);
+  chain.coarse.reset();  // no bars here: the next orbit point's companion starts afresh
+  chain.steady = steady;
+  return true;
+}
+
 bool orbit_point(const Case& point_case, const NsParams& p, const NsState* steady, const StabilityVerdict& v,
                  const NsMapOptions& o, OrbitChain& chain, NsMapPoint& m) {
   const double rho = point_case.scene.density;

@@ -29,4 +29,12 @@ struct OrbitChain {
 bool orbit_point(const Case& point_case, const NsParams& p, const NsState* steady, const StabilityVerdict& v,
                  const NsMapOptions& o, OrbitChain& chain, NsMapPoint& m);
 
+/// At a point whose steady state is stable: whether the row's last orbit (chain.fine, the previous column's),
+/// continued into p (as orbit_point continues it, no march), persists as a shedding orbit. True: the flow is
+/// bistable there (a subcritical Hopf point: both states are stable to small disturbances), and the chain
+/// holds the orbit, so the next column continues it further. False: the chain is emptied. Its periods of
+/// time steps go to m.orbit_periods.
+bool coexisting_orbit(const Case& point_case, const NsParams& p, const NsState& steady, const NsMapOptions& o,
+                      OrbitChain& chain, NsMapPoint& m);
+
 }  // namespace magnus

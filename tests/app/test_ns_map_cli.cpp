@@ -133,8 +133,10 @@ TEST_CASE("navier-stokes map --orbits: shedding points as orbits in the file, in
   REQUIRE(m.points.size() == 2);
   for (const NsMapPoint& p : m.points) {
     CHECK(p.source == MapSource::orbit);
+    CHECK(p.regime == double(MapRegime::shedding));
     CHECK(p.strouhal == Approx(0.155).epsilon(0.01));  // the map grid's shedding at Re 100
   }
+  CHECK(j["columns"].contains("regime"));
   const Outcome i = magnus_cmd({"inspect", dir + "/m.h5"}, dir);
   CHECK(i.out.find("unstable points: shedding orbits (marched from rest where none was found)") != std::string::npos);
   // --orbits computes what --steady-only leaves out; a potential case has no shedding.

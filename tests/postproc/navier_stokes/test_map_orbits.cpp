@@ -10,6 +10,7 @@
 
 #include "io/case_file.hpp"
 #include "postproc/navier_stokes/continuation.hpp"
+#include "postproc/navier_stokes/continuation_row.hpp"
 #include "postproc/navier_stokes/orbit.hpp"
 #include "postproc/navier_stokes/run.hpp"
 #include "postproc/navier_stokes/run_paths.hpp"
@@ -113,4 +114,58 @@ TEST_CASE("[ns][orbit] the start on the Hopf mode: the steady state plus the mod
   CHECK(s.N_prev.empty());  // the march's first step is Euler's: no history of another state
   CHECK(s.t == 0.0);
   CHECK_THROWS_AS(hopf_start(steady, {psi[0]}, zeta, {0.0, 0.0}), std::invalid_argument);
+}
+
+TEST_CASE("[ns][map] the second shedding window: shedding again after a steady stretch, slower",
+          "[ns][map]") {
+  const double steady = double(MapRegime::steady), shed = double(MapRegime::shedding);
+  auto row = [](std::vector<std::pair<double, double>> regime_st) {
+    std::vector<NsMapPoint> r;
+    for (const auto& [regime, st] : regime_st) {
+      NsMapPoint m;
+      m.regime = regime, m.strouhal = st;
+      r.push_back(m);
+    }
+    mark_second_window(r);
+    std::vector<double> out;
+    for (const auto& m : r) out.push_back(m.regime);
+    return out;
+  };
+  const double nan = std::nan(""), second = double(MapRegime::second_window);
+  // Re 100 on the map's grid: sheds to α 1.8 (St 0.154), steady to 4.8, sheds at 5.1 with St 0.023.
+  CHECK(row({{shed, 0.155}, {shed, 0.154}, {steady, nan}, {steady, nan}, {shed, 0.023}, {shed, 0.03}}) ==
+        std::vector<double>{shed, shed, steady, steady, second, second});
+  // A stable island between two unstable stretches: the wake sheds again at its own frequency.
+  CHECK(row({{shed, 0.19}, {steady, nan}, {shed, 0.18}, {steady, nan}, {shed, 0.02}}) ==
+        std::vector<double>{shed, steady, shed, steady, second});
+  // Steady below the onset, then shedding: the first window, whatever its frequency.
+  CHECK(row({{steady, nan}, {shed, 0.10}, {shed, 0.04}}) == std::vector<double>{steady, shed, shed});
+  // A bistable point counts as steady; an undecided St leaves the point as it is.
+  const double both = double(MapRegime::bistable);
+  CHECK(row({{shed, 0.2}, {both, nan}, {shed, nan}, {shed, 0.05}}) == std::vector<double>{shed, both, shed, second});
+}
+
+TEST_CASE("[ns][map] past alpha_L at Re 200 the continued orbit shrinks onto the steady state: not bistable",
+          "[ns][map][periodic_orbit]") {
+  // The map's grid at Re 200: the wake sheds at α 2.15 and the steady state is stable at 2.2. The orbit of
+  // 2.15, continued into 2.2, collapses onto the steady state (a supercritical Hopf point between them), so
+  // the point is steady, not bistable, and the row's orbit chain ends there.
+  const Case c = map_case();
+  NsMapOptions o;
+  o.alphas = {2.15, 2.2};
+  o.reynolds = {200.0};
+  o.stability = make_stability_hook(StabilityMethod::eigenvalues);
+  o.stability_method = "eigenvalues";
+  o.orbits = true;
+  o.error_estimate = false;
+  const NsMap map = ns_map(c, o);
+  REQUIRE(map.points.size() == 2);
+  const NsMapPoint &a = map.points[0], &b = map.points[1];
+  CHECK(a.source == MapSource::orbit);
+  CHECK(a.regime == double(MapRegime::shedding));
+  CHECK(a.strouhal == Approx(0.174).epsilon(0.02));
+  CHECK(b.stable == std::optional<bool>(true));
+  CHECK(b.source == MapSource::steady);
+  CHECK(b.regime == double(MapRegime::steady));
+  CHECK(b.orbit_start.empty());  // the continuation was tried and found no orbit
 }
