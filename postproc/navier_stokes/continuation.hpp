@@ -16,7 +16,8 @@
 // the ratio C_L/C_L,ideal = S/(2πρa²), and "stable" from a stability hook. A point whose steady state is
 // unstable (or that has none) is marched in time from rest (run_case on its case) and reports what the
 // march gives: the time-averaged C_L, C_D, C_M and St of a shedding wake, or the steady state the march
-// settles on, and is marked so.
+// settles on, and is marked so; with NsMapOptions::orbits it is first sought as its periodic orbit
+// (map_orbits.hpp), and the means over one period are reported.
 #include <complex>
 #include <functional>
 #include <optional>
@@ -53,7 +54,8 @@ std::optional<bool> stability_by_marching(const NsParams& p, const NsState& stea
 
 /// Where a map point's reported C_L, C_D, C_M come from. A point whose continued steady state is unstable
 /// (or that has none) is marched in time from rest: the flow then sheds (time-averaged), or settles on a
-/// stable steady state of its own, another branch than the continued one (marched_steady).
+/// stable steady state of its own, another branch than the continued one (marched_steady); or, with
+/// NsMapOptions::orbits, it is its shedding orbit (orbit).
 enum class MapSource {
   steady = 0,
   averaged_unstable = 1,
@@ -71,7 +73,8 @@ enum class MapRegime {
   second_window = 2,  ///< shedding again after a steady stretch of the row, at under half the first window's
                       ///< frequency: the one-sided "second shedding mode" of high spin
   bistable = 3        ///< a stable steady state and a shedding orbit coexist (--orbits: the row's orbit,
-                      ///< continued into the point, persists; the steady values are reported)
+                      ///< continued into the point, persists; its own stability is not tested; the steady
+                      ///< values are reported)
 };
 
 /// One point of the map. Undefined values are NaN.
@@ -170,7 +173,8 @@ NsMap ns_map(const Case& c, const NsMapOptions& o);
 /// undecided when the growth rate is within its margin of 0).
 enum class StabilityMethod { eigenvalues, march };
 
-/// The stability hook of a method: stable ↦ true, unstable ↦ false, undecided or failed ↦ empty.
+/// The stability hook of a method: its verdict's stable is true, false, or empty when undecided or failed;
+/// with eigenvalues it also carries the growing pair and its mode when the leading eigenvalue is one.
 StabilityHook make_stability_hook(StabilityMethod m = StabilityMethod::eigenvalues);
 
 // --- pseudo-arclength continuation on an abstract problem F(x, λ) = 0 (tested on known curves) ---

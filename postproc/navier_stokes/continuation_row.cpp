@@ -160,7 +160,7 @@ void finish_point(const Case& base, const NsMapOptions& o, const NsParams& p, co
   if (m.converged && m.stable != std::optional<bool>(false)) {
     m.source = MapSource::steady;
     m.cl = m.cl_steady, m.cd = m.cd_steady, m.cm = m.cm_steady;
-    // Does the row's shedding orbit persist here too? Then both states are stable: bistable.
+    // Does the row's shedding orbit persist here too? Then a stable steady state and an orbit coexist.
     const bool both = o.orbits && o.average_unstable && steady && m.stable &&
                       coexisting_orbit(map_point_case(base, m.reynolds, m.alpha), p, *steady, o, chain, m);
     if (!both) chain = {};  // the next shedding point starts its orbit afresh

@@ -36,7 +36,8 @@ bool sheds(const OrbitResult& orbit, const UnsteadyResult& s) {
 /// Newton starts again (at most three times). Empty when it stalls, collapses or a step fails.
 std::optional<FoundOrbit> continued(const NsParams& p, OrbitResult near, const NsState* shift_from,
                                     const NsState* shift_to, OrbitOptions oo, double rho) {
-  if (shift_from && shift_to) {
+  const size_t nodes = near.state.psi.size();
+  if (shift_from && shift_to && shift_from->psi.size() == nodes && shift_to->psi.size() == nodes) {
     NsState& s = near.state;
     for (size_t i = 0; i < s.psi.size(); ++i) s.psi[i] += shift_to->psi[i] - shift_from->psi[i];
     for (size_t i = 0; i < s.zeta.size(); ++i) s.zeta[i] += shift_to->zeta[i] - shift_from->zeta[i];
@@ -48,15 +49,16 @@ std::optional<FoundOrbit> continued(const NsParams& p, OrbitResult near, const N
   for (int attempt = 0;; ++attempt) {
     try {
       f.orbit = continue_orbit(p, near, oo);
+      if (!f.orbit.converged) return std::nullopt;
+      f.summary = orbit_summary(p, f.orbit, rho);
       break;
     } catch (const CflExceeded&) {
       if (attempt == 3) return std::nullopt;
       oo.steps = int(std::ceil(1.2 * oo.steps));
-    } catch (const std::runtime_error&) {  // non-finite fields: start afresh instead
+    } catch (const std::exception&) {  // non-finite fields, a state of another grid: start afresh instead
       return std::nullopt;
     }
   }
-  f.summary = orbit_summary(p, f.orbit, rho);
   if (!sheds(f.orbit, f.summary)) return std::nullopt;
   f.periods = double(f.orbit.time_steps + f.orbit.steps) / f.orbit.steps;
   return f;
@@ -82,7 +84,7 @@ bool coexisting_orbit(const Case& point_case, const NsParams& p, const NsState& 
                       OrbitChain& chain, NsMapPoint& m) {
   const PolarGrid g = ns_grid(p);
   std::optional<FoundOrbit> f;
-  if (chain.fine && chain.fine->state.psi.size() == size_t(g.nodes())) {
+  if (chain.fine && chain.on(g)) {
     OrbitOptions oo;
     oo.tol = o.orbit_tol;
     f = continued(p, *chain.fine, chain.steady ? &*chain.steady : nullptr, chain.steady ? &steady : nullptr, oo,
@@ -97,6 +99,7 @@ bool coexisting_orbit(const Case& point_case, const NsParams& p, const NsState& 
   chain.fine = std::move(f->orbit);
   chain.coarse.reset();  // no bars here: the next orbit point's companion starts afresh
   chain.steady = steady;
+  chain.n_theta = g.n_theta, chain.xi = g.xi;
   return true;
 }
 
@@ -108,7 +111,7 @@ bool orbit_point(const Case& point_case, const NsParams& p, const NsState* stead
   ro.rho = rho;
   ro.orbit.tol = o.orbit_tol;
   const PolarGrid g = ns_grid(p);
-  if (chain.fine && chain.fine->state.psi.size() != size_t(g.nodes())) chain = {};  // another Re's grid
+  if (chain.fine && !chain.on(g)) chain = {};  // another Re's grid
   std::optional<FoundOrbit> f;
   const bool shift = chain.steady && steady;
   if (chain.fine) {
@@ -167,6 +170,7 @@ bool orbit_point(const Case& point_case, const NsParams& p, const NsState* stead
   chain.fine = std::move(f->orbit);
   if (steady) chain.steady = *steady;
   else chain.steady.reset();
+  chain.n_theta = g.n_theta, chain.xi = g.xi;
   return true;
 }
 

@@ -4,6 +4,7 @@
 // pair's mode, or from rest; its error bars from the same orbit on the grid twice as coarse, continued
 // alongside. continuation_row.cpp calls it for each point whose steady state is unstable or missing.
 #include <optional>
+#include <vector>
 
 #include "postproc/navier_stokes/continuation.hpp"
 #include "solver/navier_stokes/periodic_orbit.hpp"
@@ -14,7 +15,11 @@ namespace magnus {
 /// orbit: the next orbit starts afresh).
 struct OrbitChain {
   std::optional<OrbitResult> fine, coarse;
-  std::optional<NsState> steady;  ///< the (unstable) steady state at the last orbit's point, if it had one
+  std::optional<NsState> steady;  ///< the steady state at the last orbit's point, if it had one
+  int n_theta = 0;                ///< the grid of `fine` (its companion's follows from it)
+  std::vector<double> xi;         ///< its rings, ξ = ln(r/a)
+  /// Whether the chain's orbits are of grid g (a map continued in Re may change the grid from row to row).
+  bool on(const PolarGrid& g) const { return n_theta == g.n_theta && xi == g.xi; }
 };
 
 /// The orbit of map point m at parameters p on the row's grid: continued from chain.fine when it holds the
@@ -24,16 +29,17 @@ struct OrbitChain {
 /// success sets m's cl, cd, cm (the means over one period), strouhal, source = orbit, orbit_start,
 /// orbit_periods, and with
 /// o.error_estimate its bars from the same orbit on the companion grid; updates the chain and returns true.
-/// Returns false, m and the chain's fine orbit cleared, when no orbit is found: the short march settles, no
-/// period appears by time.end, Newton stalls, or the orbit is the steady state (the caller marches then).
+/// Returns false, the chain emptied and m.orbit_start cleared (m's figures untouched), when no orbit is
+/// found: the short march settles, no period appears by time.end, Newton stalls, or the orbit is the steady
+/// state (the caller marches then).
 bool orbit_point(const Case& point_case, const NsParams& p, const NsState* steady, const StabilityVerdict& v,
                  const NsMapOptions& o, OrbitChain& chain, NsMapPoint& m);
 
 /// At a point whose steady state is stable: whether the row's last orbit (chain.fine, the previous column's),
-/// continued into p (as orbit_point continues it, no march), persists as a shedding orbit. True: the flow is
-/// bistable there (a subcritical Hopf point: both states are stable to small disturbances), and the chain
-/// holds the orbit, so the next column continues it further. False: the chain is emptied. Its periods of
-/// time steps go to m.orbit_periods.
+/// continued into p (as orbit_point continues it, no march), persists as a shedding orbit. True: a stable
+/// steady state and a shedding orbit coexist there (as past a subcritical Hopf point; the orbit's own
+/// stability is not tested), and the chain holds the orbit, so the next column continues it further. False:
+/// the chain is emptied. Its periods of time steps go to m.orbit_periods.
 bool coexisting_orbit(const Case& point_case, const NsParams& p, const NsState& steady, const NsMapOptions& o,
                       OrbitChain& chain, NsMapPoint& m);
 
