@@ -148,13 +148,13 @@ NsMapPoint blank_point(const Case& base, int row, int col, double re, double alp
   return m;
 }
 
-/// The reported figures: steady when stable (or undecided); else the shedding orbit's means (o.orbits), or
-/// what the flow does when it is marched in time from rest: the time average of a shedding wake, or the steady state it settles on. The march
-/// starts at once: a Newton solve from the potential flow (time.mode = "auto") may land on another steady
-/// state than the continued one and would report that as the point's average without marching.
-/// With o.orbits a shedding point is first sought as its periodic orbit (map_orbits.hpp): continued from
-/// the chain's, else from the steady state `steady` (null: none) and the verdict's growing mode, else from rest; only
-/// where none is found is it marched.
+/// The reported figures: steady when stable (or undecided); else what the flow does when it is marched in
+/// time from rest: the time average of a shedding wake, or the steady state it settles on. The march starts
+/// at once: a Newton solve from the potential flow (time.mode = "auto") may land on another steady state
+/// than the continued one and would report that as the point's average without marching. With o.orbits a
+/// shedding point is first sought as its periodic orbit (map_orbits.hpp: continued from the chain's, else
+/// from `steady`, null when none, and the verdict's growing mode, else from rest), and a stable point after
+/// a shedding one is tested for a coexisting orbit (bistable).
 void finish_point(const Case& base, const NsMapOptions& o, const NsParams& p, const NsState* steady,
                   const StabilityVerdict& verdict, OrbitChain& chain, NsMapPoint& m) {
   if (m.converged && m.stable != std::optional<bool>(false)) {
@@ -248,7 +248,6 @@ void mark_second_window(std::vector<NsMapPoint>& row) {
     }
   }
 }
-
 
 double meets_tolerance(const NsMapPoint& m) {
   const auto within = [](double value, double bar, double tol, bool needed) -> std::optional<bool> {

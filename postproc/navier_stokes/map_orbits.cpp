@@ -22,12 +22,6 @@ struct FoundOrbit {
   double periods = 0.0;
 };
 
-/// Whether an orbit is a shedding one: converged, and its C_L amplitude above kOrbitMinAmplitude·max(1,
-/// |mean C_L|) (below it Newton found the steady state, a fixed point of every period map).
-bool sheds(const OrbitResult& orbit, const UnsteadyResult& s) {
-  return orbit.converged && s.C_L_amplitude >= kOrbitMinAmplitude * std::max(1.0, std::fabs(s.C_L_mean));
-}
-
 /// Newton from a neighbouring orbit of the same grid (no march), its state shifted by shift_to − shift_from
 /// (the steady branch's change between the two points, when both have one: the orbit's mean moves with it).
 /// N puts Δt = T/N at the target CFL number p.cfl of the shifted state, as a march would (the orbit is the
@@ -59,7 +53,7 @@ std::optional<FoundOrbit> continued(const NsParams& p, OrbitResult near, const N
       return std::nullopt;
     }
   }
-  if (!sheds(f.orbit, f.summary)) return std::nullopt;
+  if (!orbit_sheds(f.summary)) return std::nullopt;  // Newton found the steady state
   f.periods = double(f.orbit.time_steps + f.orbit.steps) / f.orbit.steps;
   return f;
 }

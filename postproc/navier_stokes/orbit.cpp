@@ -48,7 +48,7 @@ void check_short_march(const UnsteadyResult& m, double t_conv) {
 /// Refuses an orbit that is the steady state (a fixed point of every period map): its C_L amplitude below
 /// kOrbitMinAmplitude·max(1, |mean C_L|), when the short march caught a decaying wobble as a period.
 void check_sheds(const UnsteadyResult& r) {
-  if (r.C_L_amplitude >= kOrbitMinAmplitude * std::max(1.0, std::fabs(r.C_L_mean))) return;
+  if (orbit_sheds(r)) return;
   throw std::runtime_error(fmt::format(
       "the flow does not shed: the orbit shrank onto the steady state (C_L amplitude {:.2g}); time.mode = "
       "\"periodic\" needs a shedding flow (\"auto\" or \"steady\" find steady ones)",
@@ -64,6 +64,10 @@ double trapezoid_mean(const std::vector<double>& y) {
 }
 
 }  // namespace
+
+bool orbit_sheds(const UnsteadyResult& r) {
+  return r.C_L_amplitude >= kOrbitMinAmplitude * std::max(1.0, std::fabs(r.C_L_mean));
+}
 
 void periodic_extremes(const std::vector<double>& y, double& lo, double& hi) {
   const size_t n = y.size();

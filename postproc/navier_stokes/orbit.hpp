@@ -47,6 +47,11 @@ struct OrbitRun {
 /// and is ~0.05 two units of Re above it).
 constexpr double kOrbitMinAmplitude = 1e-4;
 
+/// Whether an orbit's summary is of a shedding orbit: its C_L amplitude at least
+/// kOrbitMinAmplitude·max(1, |mean C_L|) (below it the orbit is the steady state, a fixed point of every
+/// period map).
+bool orbit_sheds(const UnsteadyResult& r);
+
 /// Short march from `start`, then the orbit (p: the run's parameters; p.dt is ignored by the orbit, whose
 /// Δt is T/N). Throws std::runtime_error with one line when the march fails, does not shed (steady, no
 /// period by t_end, or an orbit that is the steady state) or is interrupted; a Newton solve that stalls
