@@ -1,8 +1,11 @@
 // The error estimate of a viscous run (postproc/navier_stokes/error_estimate.hpp): the companion grid, the
-// formula, the undefined cases, and its honesty on a steady case against a Richardson reference of finer
-// grids.
+// formula, the undefined cases, and its honesty against a Richardson reference of finer grids, on a steady
+// case and on a shedding orbit (time.mode = "periodic").
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <optional>
+#include <string>
+#include <tuple>
 
 #include "io/case_file.hpp"
 #include "postproc/navier_stokes/error_estimate.hpp"
@@ -149,4 +152,45 @@ TEST_CASE("the estimate is honest: at Re 20, α 0.5 (steady, Newton, n_θ 96) it
   // …and not by orders of magnitude: the safety factor 3 over an order-2 Richardson estimate.
   CHECK(*v.cl_mean_rel_estimate <= 10.0 * cl_err);
   CHECK(*v.cd_mean_rel_estimate <= 10.0 * cd_err);
+}
+
+TEST_CASE("a periodic run's bar is its orbit on the grid twice as coarse, and it brackets the error against a "
+          "Richardson reference (Re 100, α 1, n_θ 64 uniform rings, R 30a)",
+          "[estimate][periodic_orbit]") {
+  const std::string text =
+      "[model]\nflow = \"navier-stokes\"\n[cylinder]\nradius = 0.5\nspin_ratio = 1.0\n[flow]\nspeed = 1.0\n"
+      "reynolds = 100\n[domain]\nouter_radius = 30.0\n[time]\nmode = \"periodic\"\nend = 300\n";
+  const FlowResult r = run_case(parse_case(text, "test", {"grid.n_theta=64"}));
+  const ViscousPart& v = *r.viscous;
+  REQUIRE(v.converged);
+  REQUIRE(v.error_note.empty());
+  CHECK(v.error_method.find("companion orbit on 32 × ") != std::string::npos);
+  REQUIRE((v.cl_mean_rel_estimate && v.cd_mean_rel_estimate && v.strouhal_rel_estimate));
+  CHECK(v.means_converged);  // an orbit: no spread between periods, no drift still to come
+  CHECK(*v.cl_mean_drift_rel == 0.0);
+
+  // The grid twice as fine, whose own companion is the first run's grid: its bar is |f − f_first|/|f| up to
+  // the time step's error (the companion orbit, shot afresh from the finer one, is the scheme's orbit at its
+  // own Δt = T/N: 1e-4 of C_L here, under 1e-3 of each figure).
+  const FlowResult f = run_case(parse_case(
+      text, "test", {"grid.n_theta=128", "grid.n_r=" + std::to_string(2 * (r.grid.n_r - 1) + 1)}));
+  const ViscousPart& w = *f.viscous;
+  REQUIRE(w.converged);
+  REQUIRE(w.companion_n_theta == 64);
+  REQUIRE(w.companion_n_r == r.grid.n_r);
+  using Get = double (*)(const ViscousPart&);
+  const std::tuple<const char*, Get, std::optional<double> ViscousPart::*> figures[] = {
+      {"C_L", [](const ViscousPart& x) { return *x.cl_mean; }, &ViscousPart::cl_mean_rel_estimate},
+      {"C_D", [](const ViscousPart& x) { return *x.cd_mean; }, &ViscousPart::cd_mean_rel_estimate},
+      {"St", [](const ViscousPart& x) { return *x.strouhal; }, &ViscousPart::strouhal_rel_estimate}};
+  for (const auto& [name, get, bar] : figures) {
+    const double f1 = get(v), f2 = get(w);
+    CHECK(std::fabs(*(w.*bar) * std::fabs(f2) - std::fabs(f2 - f1)) <= 1e-3 * std::fabs(f1));
+    const double ref = f2 + (f2 - f1) / 3.0;  // Richardson at order 2
+    const double err = std::fabs(f1 - ref) / std::fabs(ref);
+    WARN(name << ": n_θ 64 " << f1 << ", 128 " << f2 << ", Richardson " << ref << "; error of the first "
+              << err << ", its bar " << *(v.*bar));
+    CHECK(*(v.*bar) >= err);
+    CHECK(*(v.*bar) <= 20.0 * err);  // loose, not useless: the 32-point companion is far from asymptotic
+  }
 }
