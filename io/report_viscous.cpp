@@ -268,7 +268,7 @@ std::string drift_text(const ViscousPart& v) {
       most += fmt::format("{}{} ({}% of ±{}%)", most.empty() ? "" : ", ", p.name, num(100.0 * *p.drift, "{:.3f}"),
                           num(100.0 * *p.bar, "{:.3f}"));
   }
-  if (d_max < 0.0) return "";
+  if (d_max <= 0.0) return "";  // none, or an orbit's: periodic by construction, nothing drifts
   if (!most.empty())
     return "the means were still drifting when the run stopped: the drift still to come is most of the bar "
            "of " + most;

@@ -11,8 +11,9 @@ namespace magnus {
 /// viscous against ideal; torque and spin power; separation; whether the 2D flow is real (three_d_text).
 std::string viscous_summary_text(const FlowResult& r, const std::string& output_path);
 
-/// The summary's line on the drift still to come of the means (v's *_drift_rel; "" when none is set): the
-/// bars it dominates (more than half of the bar) with drift and bar in %, else that it is part of them.
+/// The summary's line on the drift still to come of the means (v's *_drift_rel; "" when none is set or
+/// all are 0, as an orbit's): the bars it dominates (more than half of the bar) with drift and bar in %, else
+/// that it is part of them.
 std::string drift_text(const ViscousPart& v);
 
 /// Whether the 2D flow of v is real by the computed 3D onset the run was given (magnus run --onset3d):

@@ -1,7 +1,9 @@
 // time.mode = "periodic": a short march from rest, then the shedding orbit by Newton–GMRES shooting
 // (postproc/navier_stokes/orbit.hpp), reported as a march's result, with its error bar from the same orbit
-// on the grid twice as coarse.
+// on the grid twice as coarse, found beside it on the second core.
+#include <atomic>
 #include <exception>
+#include <future>
 #include <stdexcept>
 
 #include "postproc/navier_stokes/error_estimate.hpp"
@@ -14,19 +16,15 @@ namespace magnus {
 
 namespace {
 
-/// The companion orbit on grid pc, started from the run's orbit state (on grid g) interpolated there: a
-/// short march with no earliest stop (it starts near its orbit), then Newton to the run's tolerance. A
-/// failure is the companion's, not the run's: ok = false with the reason in message.
-UnsteadyResult companion_orbit(const NsParams& pc, const PolarGrid& g, const OrbitRunOptions& run_options,
-                               const NsState& orbit_state) {
-  OrbitRunOptions o = run_options;
-  o.t_min = 0.0;
-  o.on_step = {};
-  o.orbit.on_period = {};
+/// The orbit of pc (the companion grid, one thread) from `start`, its summary in the march's terms; it
+/// gives up at its next step or period once *stop is set. A failure is the companion's, not the run's:
+/// ok = false with the reason in message.
+UnsteadyResult companion_orbit(NsParams pc, OrbitRunOptions o, NsState start, const std::atomic<bool>* stop) {
+  pc.threads = 1;
+  o.on_step = [stop](const NsState&, const ViscousForces&) { return !stop->load(); };
+  o.orbit.on_period = [stop](const NsState&) { return !stop->load(); };
   UnsteadyResult coarse;
   try {
-    NsState start = interpolate_state(g, orbit_state, ns_grid(pc));
-    start.t = 0.0;  // its short march has the run's time.end to find the period
     OrbitRun c = periodic_orbit_run(pc, o, std::move(start));
     coarse = std::move(c.result);
     if (!c.orbit.converged) {
@@ -40,6 +38,16 @@ UnsteadyResult companion_orbit(const NsParams& pc, const PolarGrid& g, const Orb
   return coarse;
 }
 
+/// The companion orbit from rest on its own thread; its destructor stops it at once and waits for it.
+struct CompanionOrbit {
+  std::atomic<bool> stop{false};
+  std::future<UnsteadyResult> result;
+  ~CompanionOrbit() {
+    stop = true;
+    if (result.valid()) result.wait();
+  }
+};
+
 }  // namespace
 
 FlowResult periodic_by_shooting(const Case& c, const NsParams& p, const PolarGrid& g, double unit,
@@ -51,11 +59,25 @@ FlowResult periodic_by_shooting(const Case& c, const NsParams& p, const PolarGri
     throw std::invalid_argument(
         "time.mode = \"periodic\" needs a freestream (flow.speed > 0): a cylinder spinning in still fluid does "
         "not shed");
-  NsState start = impulsive_start(p, g);
-  break_symmetry(p, g, start);
   OrbitRunOptions o;
   o.t_end = c.time.end * unit;
   o.rho = c.scene.density;
+
+  // The error bar's companion: the same orbit on the grid twice as coarse, from rest, beside the run (the
+  // run's stepper uses one core). An orbit is periodic to Newton's tolerance, so its means have no spread
+  // and no drift still to come: the bar is the grid's part alone.
+  const std::string refusal = hooks.error_estimate ? companion_refusal(p, g, false) : "";
+  const NsParams pc = companion_params(p, g);
+  const PolarGrid gc = ns_grid(pc);
+  CompanionOrbit companion;
+  if (hooks.error_estimate && refusal.empty()) {
+    NsState rest = impulsive_start(pc, gc);
+    break_symmetry(pc, gc, rest);
+    companion.result = std::async(std::launch::async, companion_orbit, pc, o, std::move(rest), &companion.stop);
+  }
+
+  NsState start = impulsive_start(p, g);
+  break_symmetry(p, g, start);
   o.on_step = hooks.on_step;
   if (hooks.on_step)  // the progress line and Ctrl-C once a period during the Newton solve
     o.orbit.on_period = [&](const NsState& s) {
@@ -66,19 +88,25 @@ FlowResult periodic_by_shooting(const Case& c, const NsParams& p, const PolarGri
   r.viscous->march_seconds = run.march.wall_seconds;
   if (!hooks.error_estimate) return r;
 
-  // The error bar: the orbit is periodic to Newton's tolerance, so its means have no spread and no drift
-  // still to come; what is left is the grid's error, from the same orbit on the grid twice as coarse.
   ViscousPart& v = *r.viscous;
   v.means_converged = run.result.converged;
-  if (const std::string refusal = companion_refusal(p, g, false); !refusal.empty()) {
+  if (!refusal.empty()) {
     v.error_note = refusal;
     return r;
   }
-  const NsParams pc = companion_params(p, g);
-  const UnsteadyResult coarse = companion_orbit(pc, g, o, run.orbit.state);
-  record_companion(v, "orbit", pc, false, coarse.wall_seconds);
+  UnsteadyResult coarse = companion.result.get();
+  double seconds = coarse.wall_seconds;
+  if (!coarse.ok) {  // from rest it found no orbit: once more from the run's orbit, after the run
+    NsState near = interpolate_state(g, run.orbit.state, gc);
+    near.t = 0.0;
+    OrbitRunOptions from_orbit = o;
+    from_orbit.t_min = 0.0;  // no starting vortex to wait for
+    coarse = companion_orbit(pc, from_orbit, std::move(near), &companion.stop);
+    seconds += coarse.wall_seconds;
+    r.timing.total_s += coarse.wall_seconds;
+  }
+  record_companion(v, "orbit", pc, false, seconds);
   estimate_from_companion(v, run.result, coarse, {}, {});
-  r.timing.total_s += coarse.wall_seconds;  // after the run, not beside it
   return r;
 }
 

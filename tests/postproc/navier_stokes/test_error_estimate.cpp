@@ -194,3 +194,22 @@ TEST_CASE("a periodic run's bar is its orbit on the grid twice as coarse, and it
     CHECK(*(v.*bar) <= 20.0 * err);  // loose, not useless: the 32-point companion is far from asymptotic
   }
 }
+
+TEST_CASE("a periodic run whose coarse companion does not shed has no bar, and says why (Re 60, n_θ 48)",
+          "[estimate][periodic_orbit]") {
+  // Near the onset the grid twice as coarse (24 points) is steady: from rest, and again from the run's orbit
+  // interpolated onto it, its orbit shrinks onto the steady state.
+  const FlowResult r = run_case(parse_case(
+      "[model]\nflow = \"navier-stokes\"\n[cylinder]\nradius = 0.5\nspin_ratio = 0.0\n[flow]\nspeed = 1.0\n"
+      "reynolds = 60\n[domain]\nouter_radius = 30.0\n[grid]\nn_theta = 48\n[time]\nmode = \"periodic\"\n"
+      "end = 300\n",
+      "test"));
+  const ViscousPart& v = *r.viscous;
+  REQUIRE(v.converged);
+  REQUIRE(v.strouhal);  // the run's own orbit sheds
+  CHECK_FALSE(v.cl_mean_rel_estimate);
+  CHECK_FALSE(v.cd_mean_rel_estimate);
+  CHECK_FALSE(v.strouhal_rel_estimate);
+  CHECK(v.error_note.find("the companion run failed: the flow does not shed") != std::string::npos);
+  CHECK(v.companion_n_theta == 24);
+}
