@@ -1,15 +1,21 @@
 // Three-dimensional stability against what is known of the cylinder wake: the steady wake at Re 40 is
 // stable to every spanwise disturbance (the first instability of the cylinder wake is the 2D onset of
 // shedding near Re 47); the Re 100 shedding orbit is stable at mode A's wavelength, and mode A sets in at
-// Re 188.5 with λ_z = 3.96 D (Barkley & Henderson 1996); the BiGlobal shift agrees with an independent solver.
+// Re 188.5 with λ_z = 3.96 D (Barkley & Henderson 1996), its multiplier converging in the time slices of the
+// period and the base's harmonics; the BiGlobal shift agrees with an independent solver.
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <cmath>
+#include <complex>
+#include <cstdio>
 #include <vector>
 
+#include "postproc/navier_stokes/orbit.hpp"
+#include "postproc/navier_stokes/run_paths.hpp"
 #include "postproc/navier_stokes/spanwise_critical.hpp"
 #include "postproc/navier_stokes/spanwise_scan.hpp"
 #include "postproc/navier_stokes/steady_study.hpp"
+#include "solver/navier_stokes/floquet.hpp"
 #include "solver/navier_stokes/spanwise.hpp"
 #include "solver/navier_stokes/newton.hpp"
 #include "support.hpp"
@@ -136,4 +142,47 @@ TEST_CASE("[validation][spanwise] fast spin: the first instability is a stationa
     INFO("α 6, Re " << Re << ": " << s.verdict);
     CHECK(s.stable);  // whichever base the 2D answer gives (at Re 40 on this grid its steady state sheds)
   }
+}
+
+TEST_CASE("[validation][spanwise] mode A's multiplier converges at order 2 in the time slices of the period "
+          "and spectrally in the base's harmonics (Re 190, n_theta 64)",
+          "[validation][spanwise]") {
+  // The Floquet problem near mode A's onset, where its multiplier stands alone: the Re 190 orbit on n_θ 64,
+  // R = 30a, at β·D = 1.6. The linear stepper takes N steps a period (second order: the periodic part of the
+  // operator by Adams–Bashforth 2) over the base's Fourier series of K harmonics (exact for the orbit as
+  // K grows, the harmonics falling geometrically). Each run starts Arnoldi from the last one's mode.
+  const NsParams p = test::cylinder_flow(190.0, 0.0, 64, 30.0);
+  OrbitRunOptions ro;
+  ro.t_end = 400.0;
+  ro.orbit.tol = 1e-9;
+  const PolarGrid g = ns_grid(p);
+  NsState start = impulsive_start(p, g);
+  break_symmetry(p, g, start);
+  const OrbitRun run = periodic_orbit_run(p, ro, std::move(start));
+  REQUIRE(run.orbit.converged);
+  const double beta = 1.6;  // 1/m: D = 1 m
+  std::vector<double> mode;
+  auto mu = [&](int N, int K) {
+    FloquetOptions o;
+    o.steps = N, o.krylov = 30, o.tolerance = 1e-7, o.start = mode;
+    const FloquetResult r = floquet_multipliers(p, orbit_series(p, run.orbit, K), beta, o);
+    REQUIRE(!r.multipliers.empty());
+    mode = r.mode;
+    std::printf("  N %4d, K %d: mu %.7f%+.7fi (|mu| %.7f, residual %.1e, %d periods, %.0f s)\n", N, K,
+                r.multipliers[0].real(), r.multipliers[0].imag(), std::abs(r.multipliers[0]), r.residuals[0],
+                r.periods, r.seconds);
+    std::fflush(stdout);
+    return r.multipliers[0];
+  };
+  const std::complex<double> n1 = mu(200, 8), n2 = mu(400, 8), n4 = mu(800, 8);
+  const double order_N = test::observed_order(std::abs(n1 - n2), std::abs(n2 - n4));
+  std::printf("  time slices: |mu_200 - mu_400| %.2e, |mu_400 - mu_800| %.2e, observed order %.2f\n",
+              std::abs(n1 - n2), std::abs(n2 - n4), order_N);
+  CHECK(std::fabs(order_N - 2.0) < 0.1);
+  const std::complex<double> k2 = mu(400, 2), k4 = mu(400, 4), k6 = mu(400, 6);
+  std::printf("  harmonics: |mu_K - mu_8| at K 2, 4, 6: %.2e, %.2e, %.2e\n", std::abs(k2 - n2), std::abs(k4 - n2),
+              std::abs(k6 - n2));
+  // Geometric: each two harmonics more take at least a factor 4 off the difference to K = 8.
+  CHECK(std::abs(k4 - n2) < 0.25 * std::abs(k2 - n2));
+  CHECK(std::abs(k6 - n2) < 0.25 * std::abs(k4 - n2));
 }
