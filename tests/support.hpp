@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 #include "postproc/potential/pipeline.hpp"
+#include "postproc/navier_stokes/orbit.hpp"
+#include "postproc/navier_stokes/run_paths.hpp"
 #include "postproc/run_case.hpp"
 #include "solver/navier_stokes/operator.hpp"
 
@@ -37,6 +39,18 @@ inline NsParams cylinder_flow(double Re, double alpha, int n_theta, double R_ove
   p.a = 0.5, p.U = 1.0, p.nu = 1.0 / Re, p.omega = alpha * p.U / p.a;
   p.n_theta = n_theta, p.outer_over_a = R_over_a, p.threads = 1;
   return p;
+}
+
+/// The shedding orbit of p from rest, the mirror symmetry broken as a run breaks it: a short march giving
+/// up at t_end (s), then Newton–GMRES shooting to the residual tol (check orbit.converged).
+inline OrbitRun shedding_orbit_run(const NsParams& p, double t_end, double tol) {
+  OrbitRunOptions o;
+  o.t_end = t_end;
+  o.orbit.tol = tol;
+  const PolarGrid g = ns_grid(p);
+  NsState start = impulsive_start(p, g);
+  break_symmetry(p, g, start);
+  return periodic_orbit_run(p, o, std::move(start));
 }
 
 /// Observed order log(e_coarse/e_fine)/log(h_coarse/h_fine) for a refinement ratio.

@@ -10,8 +10,6 @@
 #include <cstdio>
 #include <vector>
 
-#include "postproc/navier_stokes/orbit.hpp"
-#include "postproc/navier_stokes/run_paths.hpp"
 #include "postproc/navier_stokes/spanwise_critical.hpp"
 #include "postproc/navier_stokes/spanwise_scan.hpp"
 #include "postproc/navier_stokes/steady_study.hpp"
@@ -152,13 +150,7 @@ TEST_CASE("[validation][spanwise] mode A's multiplier converges at order 2 in th
   // operator by Adams–Bashforth 2) over the base's Fourier series of K harmonics (exact for the orbit as
   // K grows, the harmonics falling geometrically). Each run starts Arnoldi from the last one's mode.
   const NsParams p = test::cylinder_flow(190.0, 0.0, 64, 30.0);
-  OrbitRunOptions ro;
-  ro.t_end = 400.0;
-  ro.orbit.tol = 1e-9;
-  const PolarGrid g = ns_grid(p);
-  NsState start = impulsive_start(p, g);
-  break_symmetry(p, g, start);
-  const OrbitRun run = periodic_orbit_run(p, ro, std::move(start));
+  const OrbitRun run = test::shedding_orbit_run(p, 400.0, 1e-9);
   REQUIRE(run.orbit.converged);
   const double beta = 1.6;  // 1/m: D = 1 m
   std::vector<double> mode;

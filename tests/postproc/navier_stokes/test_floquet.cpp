@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "postproc/navier_stokes/orbit.hpp"
-#include "postproc/navier_stokes/run_paths.hpp"
 #include "solver/navier_stokes/floquet.hpp"
 #include "solver/navier_stokes/newton.hpp"
 #include "solver/navier_stokes/spanwise.hpp"
@@ -15,13 +14,7 @@ namespace {
 
 /// The orbit of p (from rest, the symmetry broken as a run breaks it) and its Fourier series.
 PeriodicBase shedding_orbit(const NsParams& p) {
-  OrbitRunOptions o;
-  o.t_end = 400.0;
-  o.orbit.tol = 1e-8;
-  const PolarGrid g = ns_grid(p);
-  NsState start = impulsive_start(p, g);
-  break_symmetry(p, g, start);
-  const OrbitRun run = periodic_orbit_run(p, o, std::move(start));
+  const OrbitRun run = test::shedding_orbit_run(p, 400.0, 1e-8);
   REQUIRE(run.orbit.converged);
   return orbit_series(p, run.orbit);
 }
