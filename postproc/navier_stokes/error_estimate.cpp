@@ -25,6 +25,8 @@ std::string companion_refusal(const NsParams& p, const PolarGrid& fine, bool res
   const NsParams pc = companion_params(p, fine);
   if (pc.n_theta < kCompanionMinTheta)
     return fmt::format("the grid twice as coarse, n_θ {}, is below {} points", pc.n_theta, kCompanionMinTheta);
+  if (pc.n_r < kCompanionMinRings)
+    return fmt::format("the grid twice as coarse, {} rings, is below {} rings", pc.n_r, kCompanionMinRings);
   return "";
 }
 
@@ -68,6 +70,12 @@ MeansSpread means_drift_rel(const UnsteadyResult& run) {
 std::optional<double> relative_estimate(double f_h, double f_2h, double spread) {
   if (!std::isfinite(f_h) || !std::isfinite(f_2h) || !(std::fabs(f_h) >= kEstimateZero)) return std::nullopt;
   return std::fabs(f_h - f_2h) / std::fabs(f_h) + spread;
+}
+
+bool same_orbit(const UnsteadyResult& run, const UnsteadyResult& coarse) {
+  if (!(run.St > 0.0 && coarse.St > 0.0)) return false;
+  const double amp = run.C_L_amplitude, amp_c = coarse.C_L_amplitude;
+  return std::fabs(coarse.St / run.St - 1.0) <= 0.3 && amp_c <= 2.0 * amp && amp <= 2.0 * amp_c;
 }
 
 void record_companion(ViscousPart& v, const char* what, const NsParams& pc, bool rings_only, double seconds) {

@@ -17,6 +17,8 @@ struct ViscousPart;
 
 /// The companion's fewest points in θ: below it the run is not a grid of the same flow.
 constexpr int kCompanionMinTheta = 8;
+/// …and its fewest rings (the grid and the interpolation onto it need four).
+constexpr int kCompanionMinRings = 4;
 /// |f_h| below which a coefficient counts as 0 (C_L at α = 0): a relative error of it is undefined.
 constexpr double kEstimateZero = 1e-3;
 
@@ -25,7 +27,7 @@ constexpr double kEstimateZero = 1e-3;
 NsParams companion_params(const NsParams& p, const PolarGrid& fine);
 
 /// Why a run gets no companion ("" when it does): U = 0 (no coefficients), a resumed run, a companion grid
-/// below kCompanionMinTheta.
+/// below kCompanionMinTheta or kCompanionMinRings.
 std::string companion_refusal(const NsParams& p, const PolarGrid& fine, bool resumed);
 
 /// Relative spread of the means that had not converged: max − min of the last periods' means of C_L, C_D
@@ -46,6 +48,11 @@ MeansSpread means_drift_rel(const UnsteadyResult& run);
 /// not yet 2. Undefined when |f_h| < kEstimateZero
 /// or either value is not finite.
 std::optional<double> relative_estimate(double f_h, double f_2h, double spread);
+
+/// Whether a companion's orbit (coarse) is the run's orbit on the coarser grid, not another branch (near
+/// α = 5 a march from rest could settle on another shedding mode): both shed, St within 30% and the C_L
+/// amplitude within a factor 2.
+bool same_orbit(const UnsteadyResult& run, const UnsteadyResult& coarse);
 
 /// Records the companion in v: its grid (pc's n_θ × n_r), its wall seconds, and the method line "from a
 /// companion {what} on n_θ × n_r[ (coarser in the rings only)]: |f − f_coarse|, 3× the Richardson estimate".

@@ -1,7 +1,11 @@
 // time.mode = "periodic": a short march from rest, then the shedding orbit by Newton–GMRES shooting
 // (postproc/navier_stokes/orbit.hpp), reported as a march's result, with its error bar from the same orbit
 // on the grid twice as coarse, found beside it on the second core.
+#include <fmt/core.h>
+
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <exception>
 #include <future>
 #include <stdexcept>
@@ -38,6 +42,9 @@ UnsteadyResult companion_orbit(NsParams pc, OrbitRunOptions o, NsState start, co
   return coarse;
 }
 
+/// The periods the companion's second try may march from the run's orbit before it gives up.
+constexpr double kCompanionRetryPeriods = 20.0;
+
 /// The companion orbit from rest on its own thread; its destructor stops it at once and waits for it.
 struct CompanionOrbit {
   std::atomic<bool> stop{false};
@@ -63,14 +70,14 @@ FlowResult periodic_by_shooting(const Case& c, const NsParams& p, const PolarGri
   o.t_end = c.time.end * unit;
   o.rho = c.scene.density;
 
-  // The error bar's companion: the same orbit on the grid twice as coarse, from rest, beside the run (the
-  // run's stepper uses one core). An orbit is periodic to Newton's tolerance, so its means have no spread
-  // and no drift still to come: the bar is the grid's part alone.
+  // The error bar's companion: the same orbit on the grid twice as coarse, from rest, beside the run (a
+  // run on one thread steps on one core). An orbit is periodic to Newton's tolerance, so its means have no
+  // spread and no drift still to come: the bar is the grid's part alone.
   const std::string refusal = hooks.error_estimate ? companion_refusal(p, g, false) : "";
   const NsParams pc = companion_params(p, g);
-  const PolarGrid gc = ns_grid(pc);
   CompanionOrbit companion;
   if (hooks.error_estimate && refusal.empty()) {
+    const PolarGrid gc = ns_grid(pc);
     NsState rest = impulsive_start(pc, gc);
     break_symmetry(pc, gc, rest);
     companion.result = std::async(std::launch::async, companion_orbit, pc, o, std::move(rest), &companion.stop);
@@ -90,18 +97,31 @@ FlowResult periodic_by_shooting(const Case& c, const NsParams& p, const PolarGri
 
   ViscousPart& v = *r.viscous;
   v.means_converged = run.result.converged;
-  if (!refusal.empty()) {
-    v.error_note = refusal;
-    return r;
+  if (!refusal.empty() || !run.result.converged) {
+    v.error_note = !refusal.empty() ? refusal
+                                    : "the orbit's Newton solve stalled: its means are one period of a state that "
+                                      "is not yet periodic, and no grid difference bounds that";
+    return r;  // the companion, if any, is stopped by its destructor
   }
   UnsteadyResult coarse = companion.result.get();
   double seconds = coarse.wall_seconds;
-  if (!coarse.ok) {  // from rest it found no orbit: once more from the run's orbit, after the run
-    NsState near = interpolate_state(g, run.orbit.state, gc);
-    near.t = 0.0;
+  if (coarse.ok && !same_orbit(run.result, coarse)) {
+    coarse.ok = false;
+    coarse.message = fmt::format("from rest it found another orbit (St {:.4g} against {:.4g})", coarse.St,
+                                 run.result.St);
+  }
+  if (!coarse.ok) {  // once more from the run's orbit, after the run: near it, a few periods at most
     OrbitRunOptions from_orbit = o;
     from_orbit.t_min = 0.0;  // no starting vortex to wait for
-    coarse = companion_orbit(pc, from_orbit, std::move(near), &companion.stop);
+    from_orbit.t_end = std::min(o.t_end, kCompanionRetryPeriods * run.result.period);
+    try {
+      NsState near = interpolate_state(g, run.orbit.state, ns_grid(pc));
+      near.t = 0.0;
+      coarse = companion_orbit(pc, from_orbit, std::move(near), &companion.stop);
+    } catch (const std::exception& e) {
+      coarse.ok = false;
+      coarse.message = e.what();
+    }
     seconds += coarse.wall_seconds;
     r.timing.total_s += coarse.wall_seconds;
   }
