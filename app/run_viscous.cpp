@@ -175,6 +175,7 @@ FlowResult run_and_report(const Case& c, const std::string& case_path, bool resu
     if (show) progress.step(s, f);
     return g_stop_signal == 0;
   };
+  hooks.viscous.keep_going = [] { return g_stop_signal == 0; };
   // The checkpoint this run may remove once its result is complete: the one it resumed from or wrote, never
   // another run's. One that cannot be written (a full disk) is a warning: the run goes on, the last good
   // checkpoint stays.

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <future>
 #include <stdexcept>
 
@@ -54,6 +56,22 @@ struct CompanionOrbit {
     if (result.valid()) result.wait();
   }
 };
+
+/// The companion's result, polling keep_going (if set) first and then while it runs: once that says stop,
+/// the companion is stopped and its result is a failure naming the interrupt.
+UnsteadyResult wait_for_companion(CompanionOrbit& companion, const std::function<bool()>& keep_going) {
+  do {
+    if (keep_going && !keep_going()) {
+      companion.stop = true;
+      companion.result.wait();
+      UnsteadyResult stopped;
+      stopped.ok = false;
+      stopped.message = "it was stopped by an interrupt once the run had finished";
+      return stopped;
+    }
+  } while (companion.result.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready);
+  return companion.result.get();
+}
 
 }  // namespace
 
@@ -103,21 +121,23 @@ FlowResult periodic_by_shooting(const Case& c, const NsParams& p, const PolarGri
                                       "is not yet periodic, and no grid difference bounds that";
     return r;  // the companion, if any, is stopped by its destructor
   }
-  UnsteadyResult coarse = companion.result.get();
+  UnsteadyResult coarse = wait_for_companion(companion, hooks.keep_going);
   double seconds = coarse.wall_seconds;
   if (coarse.ok && !same_orbit(run.result, coarse)) {
     coarse.ok = false;
     coarse.message = fmt::format("from rest it found another orbit (St {:.4g} against {:.4g})", coarse.St,
                                  run.result.St);
   }
-  if (!coarse.ok) {  // once more from the run's orbit, after the run: near it, a few periods at most
+  if (!coarse.ok && !companion.stop) {  // once more from the run's orbit: near it, a few periods at most
     OrbitRunOptions from_orbit = o;
     from_orbit.t_min = 0.0;  // no starting vortex to wait for
     from_orbit.t_end = std::min(o.t_end, kCompanionRetryPeriods * run.result.period);
     try {
       NsState near = interpolate_state(g, run.orbit.state, ns_grid(pc));
       near.t = 0.0;
-      coarse = companion_orbit(pc, from_orbit, std::move(near), &companion.stop);
+      companion.result =
+          std::async(std::launch::async, companion_orbit, pc, from_orbit, std::move(near), &companion.stop);
+      coarse = wait_for_companion(companion, hooks.keep_going);
     } catch (const std::exception& e) {
       coarse.ok = false;
       coarse.message = e.what();
