@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <exception>
 
@@ -24,7 +25,8 @@ std::string companion_refusal(const NsParams& p, const PolarGrid& fine, bool res
   if (resumed) return "resumed from a checkpoint: a companion would march from rest, past the run's end";
   const NsParams pc = companion_params(p, fine);
   if (pc.n_theta < kCompanionMinTheta)
-    return fmt::format("the grid twice as coarse, n_θ {}, is below {} points", pc.n_theta, kCompanionMinTheta);
+    return fmt::format("the grid twice as coarse, n_θ {}, is below {} points", pc.n_theta,
+                       kCompanionMinTheta);
   if (pc.n_r < kCompanionMinRings)
     return fmt::format("the grid twice as coarse, {} rings, is below {} rings", pc.n_r, kCompanionMinRings);
   return "";
@@ -81,8 +83,8 @@ bool same_orbit(const UnsteadyResult& run, const UnsteadyResult& coarse) {
 void record_companion(ViscousPart& v, const char* what, const NsParams& pc, bool rings_only, double seconds) {
   v.companion_n_theta = pc.n_theta, v.companion_n_r = pc.n_r;
   v.companion_seconds = seconds;
-  v.error_method = fmt::format("from a companion {} on {} × {}{}: |f − f_coarse|, 3× the Richardson estimate", what,
-                               pc.n_theta, pc.n_r, rings_only ? " (coarser in the rings only)" : "");
+  v.error_method = fmt::format("from a companion {} on {} × {}{}: |f − f_coarse|, 3× the Richardson estimate",
+                               what, pc.n_theta, pc.n_r, rings_only ? " (coarser in the rings only)" : "");
 }
 
 void estimate_from_companion(ViscousPart& v, const UnsteadyResult& fine, const UnsteadyResult& coarse,
@@ -120,8 +122,8 @@ void estimate_from_companion(ViscousPart& v, const UnsteadyResult& fine, const U
   v.error_note = note;
 }
 
-std::unique_ptr<CompanionMarch> start_companion(NsParams pc, UnsteadyOptions o, NsState start) {
-  auto m = std::make_unique<CompanionMarch>();
+std::unique_ptr<CompanionRun> start_companion(NsParams pc, UnsteadyOptions o, NsState start) {
+  auto m = std::make_unique<CompanionRun>();
   pc.threads = 1;
   std::atomic<double>* stop_at = &m->stop_at;
   o.on_step = [stop_at](const NsState& s, const ViscousForces&) { return s.t < stop_at->load(); };
@@ -139,8 +141,19 @@ std::unique_ptr<CompanionMarch> start_companion(NsParams pc, UnsteadyOptions o, 
   return m;
 }
 
-UnsteadyResult finish_companion(CompanionMarch& m, double t_end) {
+UnsteadyResult finish_companion(CompanionRun& m, double t_end, const std::function<bool()>& keep_going) {
   m.stop_at = t_end;
+  do {
+    if (keep_going && !keep_going()) {
+      m.stop_at = -HUGE_VAL;
+      m.result.wait();
+      UnsteadyResult stopped;
+      stopped.ok = false;
+      stopped.interrupted = true;
+      stopped.message = "it was stopped by an interrupt once the run had finished";
+      return stopped;
+    }
+  } while (keep_going && m.result.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready);
   return m.result.get();
 }
 

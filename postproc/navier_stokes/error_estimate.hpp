@@ -5,6 +5,7 @@
 // means between the last periods when they had not converged when the run stopped.
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <future>
 #include <memory>
 #include <string>
@@ -66,20 +67,23 @@ void record_companion(ViscousPart& v, const char* what, const NsParams& pc, bool
 void estimate_from_companion(ViscousPart& v, const UnsteadyResult& fine, const UnsteadyResult& coarse,
                              const MeansSpread& spread, const MeansSpread& drift = {});
 
-/// A companion march on its own thread; its destructor stops it at once (the future then waits for it).
-struct CompanionMarch {
-  std::atomic<double> stop_at{HUGE_VAL};  ///< it stops at its first step at or past this time, s
+/// A companion run (a march, or a periodic orbit: postproc/navier_stokes/run_periodic.cpp) on its own
+/// thread; its destructor stops it at once (the future then waits for it).
+struct CompanionRun {
+  std::atomic<double> stop_at{HUGE_VAL};  ///< it stops at its first step (or period) at or past this time, s
   std::future<UnsteadyResult> result;
-  ~CompanionMarch() { stop_at = -HUGE_VAL; }
+  ~CompanionRun() { stop_at = -HUGE_VAL; }
 };
 
 /// Starts run_unsteady(pc, o, start) on a thread of its own (pc.threads = 1, no hooks): it stops when its
 /// own criteria say so, or at stop_at.
-std::unique_ptr<CompanionMarch> start_companion(NsParams pc, UnsteadyOptions o, NsState start);
+std::unique_ptr<CompanionRun> start_companion(NsParams pc, UnsteadyOptions o, NsState start);
 
 /// The companion stopped at the time t_end (s) the run ended at — at once if it is past it, else once it
-/// gets there (a companion behind the run, on a loaded machine, catches up) — and its result (interrupted
-/// when it was stopped; t_end = −∞: at once, for a run that was interrupted).
-UnsteadyResult finish_companion(CompanionMarch& m, double t_end);
+/// gets there (a companion behind the run, on a loaded machine, catches up; t_end = +∞: when it ends by its
+/// own criteria) — and its result (interrupted when it was stopped; t_end = −∞: at once, for a run that was
+/// interrupted). keep_going, when set, is polled first and then while it runs: once it says stop (a Ctrl-C
+/// after the run ended) the companion is stopped and its result is a failure, interrupted, naming why.
+UnsteadyResult finish_companion(CompanionRun& m, double t_end, const std::function<bool()>& keep_going = {});
 
 }  // namespace magnus

@@ -81,8 +81,8 @@ bool coexisting_orbit(const Case& point_case, const NsParams& p, const NsState& 
   if (chain.fine && chain.on(g)) {
     OrbitOptions oo;
     oo.tol = o.orbit_tol;
-    f = continued(p, *chain.fine, chain.steady ? &*chain.steady : nullptr, chain.steady ? &steady : nullptr, oo,
-                  point_case.scene.density);
+    f = continued(p, *chain.fine, chain.steady ? &*chain.steady : nullptr, chain.steady ? &steady : nullptr,
+                  oo, point_case.scene.density);
   }
   if (!f) {
     chain = {};
@@ -90,10 +90,8 @@ bool coexisting_orbit(const Case& point_case, const NsParams& p, const NsState& 
   }
   m.orbit_start = "continued";
   m.orbit_periods = f->periods;
-  chain.fine = std::move(f->orbit);
+  chain.hold(std::move(f->orbit), &steady, g);
   chain.coarse.reset();  // no bars here: the next orbit point's companion starts afresh
-  chain.steady = steady;
-  chain.n_theta = g.n_theta, chain.xi = g.xi;
   return true;
 }
 
@@ -161,10 +159,7 @@ bool orbit_point(const Case& point_case, const NsParams& p, const NsState* stead
     m.cl_rel_estimate = m.cd_rel_estimate = m.strouhal_rel_estimate = std::nan("");
     chain.coarse.reset();
   }
-  chain.fine = std::move(f->orbit);
-  if (steady) chain.steady = *steady;
-  else chain.steady.reset();
-  chain.n_theta = g.n_theta, chain.xi = g.xi;
+  chain.hold(std::move(f->orbit), steady, g);
   return true;
 }
 

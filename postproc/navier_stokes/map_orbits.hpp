@@ -4,6 +4,7 @@
 // pair's mode, or from rest; its error bars from the same orbit on the grid twice as coarse, continued
 // alongside. continuation_row.cpp calls it for each point whose steady state is unstable or missing.
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "postproc/navier_stokes/continuation.hpp"
@@ -20,6 +21,15 @@ struct OrbitChain {
   std::vector<double> xi;         ///< its rings, ξ = ln(r/a)
   /// Whether the chain's orbits are of grid g (a map continued in Re may change the grid from row to row).
   bool on(const PolarGrid& g) const { return n_theta == g.n_theta && xi == g.xi; }
+  /// Holds `orbit` on grid g as the last one, with its point's steady state (null: none).
+  void hold(OrbitResult orbit, const NsState* at, const PolarGrid& g) {
+    fine = std::move(orbit);
+    if (at)
+      steady = *at;
+    else
+      steady.reset();
+    n_theta = g.n_theta, xi = g.xi;
+  }
 };
 
 /// The orbit of map point m at parameters p on the row's grid: continued from chain.fine when it holds the

@@ -158,7 +158,7 @@ FlowResult march(const Case& c, const NsParams& p, const PolarGrid& g, double un
   // The companion for the error estimate: from rest on the grid twice as coarse, beside the run.
   const std::string refusal = hooks.error_estimate ? companion_refusal(p, g, resume != nullptr) : "";
   const NsParams pc = companion_params(p, g);
-  std::unique_ptr<CompanionMarch> companion;
+  std::unique_ptr<CompanionRun> companion;
   if (hooks.error_estimate && refusal.empty())
     companion = start_companion(pc, o, march_start(c, pc, ns_grid(pc), unit, nullptr));
 

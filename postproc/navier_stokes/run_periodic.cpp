@@ -5,10 +5,8 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <exception>
-#include <functional>
 #include <future>
 #include <stdexcept>
 
@@ -23,12 +21,13 @@ namespace magnus {
 namespace {
 
 /// The orbit of pc (the companion grid, one thread) from `start`, its summary in the march's terms; it
-/// gives up at its next step or period once *stop is set. A failure is the companion's, not the run's:
-/// ok = false with the reason in message.
-UnsteadyResult companion_orbit(NsParams pc, OrbitRunOptions o, NsState start, const std::atomic<bool>* stop) {
+/// gives up at its next step or period at or past *stop_at (CompanionRun::stop_at). A failure is the
+/// companion's, not the run's: ok = false with the reason in message.
+UnsteadyResult companion_orbit(NsParams pc, OrbitRunOptions o, NsState start,
+                               const std::atomic<double>* stop_at) {
   pc.threads = 1;
-  o.on_step = [stop](const NsState&, const ViscousForces&) { return !stop->load(); };
-  o.orbit.on_period = [stop](const NsState&) { return !stop->load(); };
+  o.on_step = [stop_at](const NsState& s, const ViscousForces&) { return s.t < stop_at->load(); };
+  o.orbit.on_period = [stop_at](const NsState& s) { return s.t < stop_at->load(); };
   UnsteadyResult coarse;
   try {
     OrbitRun c = periodic_orbit_run(pc, o, std::move(start));
@@ -47,43 +46,18 @@ UnsteadyResult companion_orbit(NsParams pc, OrbitRunOptions o, NsState start, co
 /// The periods the companion's second try may march from the run's orbit before it gives up.
 constexpr double kCompanionRetryPeriods = 20.0;
 
-/// The companion orbit from rest on its own thread; its destructor stops it at once and waits for it.
-struct CompanionOrbit {
-  std::atomic<bool> stop{false};
-  std::future<UnsteadyResult> result;
-  ~CompanionOrbit() {
-    stop = true;
-    if (result.valid()) result.wait();
-  }
-};
-
-/// The companion's result, polling keep_going (if set) first and then while it runs: once that says stop,
-/// the companion is stopped and its result is a failure naming the interrupt.
-UnsteadyResult wait_for_companion(CompanionOrbit& companion, const std::function<bool()>& keep_going) {
-  do {
-    if (keep_going && !keep_going()) {
-      companion.stop = true;
-      companion.result.wait();
-      UnsteadyResult stopped;
-      stopped.ok = false;
-      stopped.message = "it was stopped by an interrupt once the run had finished";
-      return stopped;
-    }
-  } while (companion.result.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready);
-  return companion.result.get();
-}
-
 }  // namespace
 
 FlowResult periodic_by_shooting(const Case& c, const NsParams& p, const PolarGrid& g, double unit,
                                 const ViscousHooks& hooks, const Checkpoint* resume) {
   if (resume)
     throw std::invalid_argument(
-        "time.mode = \"periodic\" does not resume from a checkpoint: run without --resume (its march is short)");
+        "time.mode = \"periodic\" does not resume from a checkpoint: run without --resume (its "
+        "march is short)");
   if (!(c.scene.speed > 0.0))
     throw std::invalid_argument(
-        "time.mode = \"periodic\" needs a freestream (flow.speed > 0): a cylinder spinning in still fluid does "
-        "not shed");
+        "time.mode = \"periodic\" needs a freestream (flow.speed > 0): a cylinder spinning in still "
+        "fluid does not shed");
   OrbitRunOptions o;
   o.t_end = c.time.end * unit;
   o.rho = c.scene.density;
@@ -93,12 +67,13 @@ FlowResult periodic_by_shooting(const Case& c, const NsParams& p, const PolarGri
   // spread and no drift still to come: the bar is the grid's part alone.
   const std::string refusal = hooks.error_estimate ? companion_refusal(p, g, false) : "";
   const NsParams pc = companion_params(p, g);
-  CompanionOrbit companion;
+  CompanionRun companion;
   if (hooks.error_estimate && refusal.empty()) {
     const PolarGrid gc = ns_grid(pc);
     NsState rest = impulsive_start(pc, gc);
     break_symmetry(pc, gc, rest);
-    companion.result = std::async(std::launch::async, companion_orbit, pc, o, std::move(rest), &companion.stop);
+    companion.result =
+        std::async(std::launch::async, companion_orbit, pc, o, std::move(rest), &companion.stop_at);
   }
 
   NsState start = impulsive_start(p, g);
@@ -116,28 +91,29 @@ FlowResult periodic_by_shooting(const Case& c, const NsParams& p, const PolarGri
   ViscousPart& v = *r.viscous;
   v.means_converged = run.result.converged;
   if (!refusal.empty() || !run.result.converged) {
-    v.error_note = !refusal.empty() ? refusal
-                                    : "the orbit's Newton solve stalled: its means are one period of a state that "
-                                      "is not yet periodic, and no grid difference bounds that";
+    v.error_note = !refusal.empty()
+                       ? refusal
+                       : "the orbit's Newton solve stalled: its means are one period of a state that "
+                         "is not yet periodic, and no grid difference bounds that";
     return r;  // the companion, if any, is stopped by its destructor
   }
-  UnsteadyResult coarse = wait_for_companion(companion, hooks.keep_going);
+  UnsteadyResult coarse = finish_companion(companion, HUGE_VAL, hooks.keep_going);  // to its own end
   double seconds = coarse.wall_seconds;
   if (coarse.ok && !same_orbit(run.result, coarse)) {
     coarse.ok = false;
-    coarse.message = fmt::format("from rest it found another orbit (St {:.4g} against {:.4g})", coarse.St,
-                                 run.result.St);
+    coarse.message =
+        fmt::format("from rest it found another orbit (St {:.4g} against {:.4g})", coarse.St, run.result.St);
   }
-  if (!coarse.ok && !companion.stop) {  // once more from the run's orbit: near it, a few periods at most
+  if (!coarse.ok && !coarse.interrupted) {  // once more from the run's orbit: near it, a few periods at most
     OrbitRunOptions from_orbit = o;
     from_orbit.t_min = 0.0;  // no starting vortex to wait for
     from_orbit.t_end = std::min(o.t_end, kCompanionRetryPeriods * run.result.period);
     try {
       NsState near = interpolate_state(g, run.orbit.state, ns_grid(pc));
       near.t = 0.0;
-      companion.result =
-          std::async(std::launch::async, companion_orbit, pc, from_orbit, std::move(near), &companion.stop);
-      coarse = wait_for_companion(companion, hooks.keep_going);
+      companion.result = std::async(std::launch::async, companion_orbit, pc, from_orbit, std::move(near),
+                                    &companion.stop_at);
+      coarse = finish_companion(companion, HUGE_VAL, hooks.keep_going);
     } catch (const std::exception& e) {
       coarse.ok = false;
       coarse.message = e.what();
