@@ -42,8 +42,8 @@ struct ViscousHooks {
   /// Run a companion on the grid twice as coarse beside the run, for the error estimate of its mean C_L,
   /// mean C_D and St (postproc/navier_stokes/error_estimate.hpp); the S map and sweeps set it false.
   bool error_estimate = true;
-  /// Polled while a finished run waits for its companion (time.mode = "periodic"): false (a Ctrl-C) stops
-  /// the companion and leaves the error bar undefined instead of waiting; may be empty (wait).
+  /// Polled while a finished run (marched or periodic) waits for its companion: false (a Ctrl-C) stops the
+  /// companion and leaves the error bar undefined instead of waiting; may be empty (wait).
   std::function<bool()> keep_going;
 };
 

@@ -177,7 +177,8 @@ FlowResult march(const Case& c, const NsParams& p, const PolarGrid& g, double un
     v.error_note = refusal;
     return r;
   }
-  const UnsteadyResult coarse = finish_companion(*companion, run.interrupted ? -HUGE_VAL : run.state.t);
+  const UnsteadyResult coarse =
+      finish_companion(*companion, run.interrupted ? -HUGE_VAL : run.state.t, hooks.keep_going);
   record_companion(v, "run", pc, false, coarse.wall_seconds);
   estimate_from_companion(v, run, coarse,
                           means_spread(run, o.converged_periods + 1, o.steady_window * 2.0 * p.a / p.U),
