@@ -4,9 +4,12 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "postproc/navier_stokes/critical.hpp"
+#include "io/case_file.hpp"
 #include "postproc/navier_stokes/grid_rule.hpp"
+#include "postproc/navier_stokes/run.hpp"
 #include "support.hpp"
 
 using namespace magnus;
@@ -35,6 +38,25 @@ HopfPoint search(const NsParams& p, HopfParameter which, double A, double B, dou
   std::printf("crossing %.4f +- %.1g in [%.4f, %.4f], St %.4f, %zu steady states, %.1f s\n", h.x_c, h.change, h.lo,
               h.hi, h.strouhal(), h.evaluations.size(), h.seconds);
   return h;
+}
+
+/// The march from rest at Re 200 and α on n_θ 128, R = 100a, as `magnus run cases/s_map.toml --set
+/// flow.reynolds=200 --set grid.n_theta=128 --set domain.outer_radius=100 --set cylinder.spin_ratio=α
+/// --set time.mode=unsteady --set time.end=1000` runs it (the absorbing layer from R/2), without the
+/// companion.
+ViscousPart march_re200(double alpha) {
+  const Case c = parse_case(
+      "[model]\nflow = \"navier-stokes\"\n[cylinder]\nradius = 0.5\nspin_ratio = " + std::to_string(alpha) +
+          "\n[flow]\nspeed = 1.0\nreynolds = 200\n[domain]\nouter_radius = 100.0\n[grid]\nn_theta = 128\n"
+          "[time]\nmode = \"unsteady\"\nend = 1000\n",
+      "second window");
+  ViscousHooks hooks;
+  hooks.error_estimate = false;
+  const ViscousPart v = *run_viscous(c, hooks).viscous;
+  std::printf("  alpha %.2f: St %.5f, C_L amplitude %.4f, mean C_L %.4f, t %.0f D/U\n", alpha,
+              v.strouhal.value_or(0.0), v.cl_amplitude.value_or(0.0), v.cl_mean.value_or(0.0), v.t);
+  std::fflush(stdout);
+  return v;
 }
 
 }  // namespace
@@ -67,11 +89,34 @@ TEST_CASE("[validation][onset] Re 200: the second, one-sided shedding window ope
   // Kármán pair at α = 0). On n_θ 128, R = 100a (the scene's grid at this spin takes minutes a steady
   // state): 4.402, 7 steady states, about 70 s. The domain moves it: 4.347 at R = 50a (4.333 on n_θ 192),
   // so the tolerance is the 2% of the Re 200 α_L check above. The upper edge is not a Hopf point (the pair's
-  // frequency falls towards zero as α rises: St 0.038 at 4.7, 0.034 at 4.76) and is not checked here.
+  // frequency falls towards zero as α rises: St 0.038 at 4.7, 0.034 at 4.76); the next check finds it.
   const HopfPoint h = search(test::cylinder_flow(200.0, 4.4, 128, 100.0), HopfParameter::spin_ratio, 4.2, 4.5, 0.005);
   CHECK(h.x_c == Approx(4.34).margin(0.08));
   CHECK(h.at_a.growth() < 0.0);
   CHECK(h.at_b.growth() > 0.0);
   CHECK(h.strouhal() > 0.03);
   CHECK(h.strouhal() < 0.08);  // the slow one-sided mode, not the Kármán pair
+}
+
+TEST_CASE("[validation][onset] Re 200: the one-sided window closes at alpha 4.70, its period diverging",
+          "[validation][onset]") {
+  // Mittal & Kumar 2003 (DNS from rest): the one-sided shedding at Re 200 ends at α = 4.70. Not a Hopf point:
+  // marched from rest on the grid of the check above, the wake sheds with a finite amplitude while its
+  // frequency falls to zero, St² linearly in α (St 0.0165 at 4.70, 0.0105 at 4.75, 0.0058 at 4.77), and
+  // from 4.80 on it settles on a steady state: the orbit ends at a saddle-node on the cycle. The edge is
+  // where St² reaches zero, extrapolated from 4.70 and 4.75 (4.78), against 4.70 within the same 2%.
+  const ViscousPart below = march_re200(4.70), near = march_re200(4.75), above = march_re200(4.80);
+  REQUIRE(below.strouhal);
+  REQUIRE(near.strouhal);
+  CHECK(*near.strouhal < *below.strouhal);
+  CHECK(*near.strouhal < 0.02);         // a third of the lower edge's St 0.05 and falling
+  CHECK(near.cl_amplitude.value_or(0.0) > 1.0);  // while the amplitude stays finite
+  CHECK_FALSE(above.strouhal);
+  CHECK(above.cl_amplitude.value_or(0.0) < 1e-3);
+  const double s1 = *below.strouhal * *below.strouhal, s2 = *near.strouhal * *near.strouhal;
+  const double edge = 4.75 + s2 / (s1 - s2) * 0.05;
+  std::printf("upper edge (St^2 -> 0) %.4f\n", edge);
+  CHECK(edge > 4.75);
+  CHECK(edge < 4.80);
+  CHECK(edge == Approx(4.70).margin(0.094));
 }
