@@ -1,13 +1,14 @@
 // The onset of shedding as computed points (label `validation`, minutes each): the secant search of
-// postproc/navier_stokes/critical.hpp on the scene's grid (the grid rule of postproc/navier_stokes/grid_rule.hpp
-// at the published onset, Jensen's wall closure, second order), against the linear-stability and DNS studies.
+// postproc/navier_stokes/critical.hpp on the scene's grid (the grid rule of
+// postproc/navier_stokes/grid_rule.hpp at the published onset, Jensen's wall closure, second order), against
+// the linear-stability and DNS studies.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
 #include <string>
 
-#include "postproc/navier_stokes/critical.hpp"
 #include "io/case_file.hpp"
+#include "postproc/navier_stokes/critical.hpp"
 #include "postproc/navier_stokes/grid_rule.hpp"
 #include "postproc/navier_stokes/run.hpp"
 #include "support.hpp"
@@ -35,14 +36,14 @@ HopfPoint search(const NsParams& p, HopfParameter which, double A, double B, dou
                 e.tracked ? " (tracked)" : "");
     std::fflush(stdout);
   });
-  std::printf("crossing %.4f +- %.1g in [%.4f, %.4f], St %.4f, %zu steady states, %.1f s\n", h.x_c, h.change, h.lo,
-              h.hi, h.strouhal(), h.evaluations.size(), h.seconds);
+  std::printf("crossing %.4f +- %.1g in [%.4f, %.4f], St %.4f, %zu steady states, %.1f s\n", h.x_c, h.change,
+              h.lo, h.hi, h.strouhal(), h.evaluations.size(), h.seconds);
   return h;
 }
 
 /// The march from rest at Re 200 and α on n_θ 128, R = 100a, as `magnus run cases/s_map.toml --set
 /// flow.reynolds=200 --set grid.n_theta=128 --set domain.outer_radius=100 --set cylinder.spin_ratio=α
-/// --set time.mode=unsteady --set time.end=1000` runs it (the absorbing layer from R/2), without the
+/// --set time.mode=unsteady --set time.end=1000` runs it (no absorbing layer at this spin), without the
 /// companion.
 ViscousPart march_re200(double alpha) {
   const Case c = parse_case(
@@ -90,7 +91,8 @@ TEST_CASE("[validation][onset] Re 200: the second, one-sided shedding window ope
   // state): 4.402, 7 steady states, about 70 s. The domain moves it: 4.347 at R = 50a (4.333 on n_θ 192),
   // so the tolerance is the 2% of the Re 200 α_L check above. The upper edge is not a Hopf point (the pair's
   // frequency falls towards zero as α rises: St 0.038 at 4.7, 0.034 at 4.76); the next check finds it.
-  const HopfPoint h = search(test::cylinder_flow(200.0, 4.4, 128, 100.0), HopfParameter::spin_ratio, 4.2, 4.5, 0.005);
+  const HopfPoint h =
+      search(test::cylinder_flow(200.0, 4.4, 128, 100.0), HopfParameter::spin_ratio, 4.2, 4.5, 0.005);
   CHECK(h.x_c == Approx(4.34).margin(0.08));
   CHECK(h.at_a.growth() < 0.0);
   CHECK(h.at_b.growth() > 0.0);
@@ -109,7 +111,7 @@ TEST_CASE("[validation][onset] Re 200: the one-sided window closes at alpha 4.70
   REQUIRE(below.strouhal);
   REQUIRE(near.strouhal);
   CHECK(*near.strouhal < *below.strouhal);
-  CHECK(*near.strouhal < 0.02);         // a third of the lower edge's St 0.05 and falling
+  CHECK(*near.strouhal < 0.02);                  // a third of the lower edge's St 0.05 and falling
   CHECK(near.cl_amplitude.value_or(0.0) > 1.0);  // while the amplitude stays finite
   CHECK_FALSE(above.strouhal);
   CHECK(above.cl_amplitude.value_or(0.0) < 1e-3);
