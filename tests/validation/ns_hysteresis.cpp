@@ -11,10 +11,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
 
 #include "io/case_file.hpp"
 #include "postproc/navier_stokes/grid_rule.hpp"
 #include "postproc/navier_stokes/run.hpp"
+#include "postproc/navier_stokes/run_paths.hpp"
 #include "postproc/navier_stokes/unsteady.hpp"
 
 int main(int argc, char** argv) {
@@ -35,7 +37,9 @@ int main(int argc, char** argv) {
     p.threads = 1;
     return p;
   };
-  NsState s = impulsive_start(params(argv[4]), ns_grid(params(argv[4])));
+  const NsParams first = params(argv[4]);
+  NsState s = impulsive_start(first, ns_grid(first));
+  break_symmetry(first, ns_grid(first), s);  // as a run from rest starts
   double t_end = 0.0;
   for (int k = 4; k + 1 < argc; k += 2) {
     const NsParams p = params(argv[k]);
