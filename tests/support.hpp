@@ -6,9 +6,10 @@
 #include <string>
 #include <utility>
 #include <vector>
-#include "postproc/potential/pipeline.hpp"
+#include "postproc/navier_stokes/continuation.hpp"
 #include "postproc/navier_stokes/orbit.hpp"
 #include "postproc/navier_stokes/run_paths.hpp"
+#include "postproc/potential/pipeline.hpp"
 #include "postproc/run_case.hpp"
 #include "solver/navier_stokes/operator.hpp"
 
@@ -30,6 +31,19 @@ inline Case make_case(double alpha, int n_theta, Spacing spacing = Spacing::geom
   c.grid.outer_radius = outer_radius;
   c.output.fields = {"psi"};
   return c;
+}
+
+/// Map options for one row of shedding orbits: spin ratios `alphas` at Reynolds number `re`, stability by
+/// eigenvalues, shedding points as orbits (NsMapOptions::orbits), no error bars.
+inline NsMapOptions orbit_row(std::vector<double> alphas, double re) {
+  NsMapOptions o;
+  o.alphas = std::move(alphas);
+  o.reynolds = {re};
+  o.stability = make_stability_hook(StabilityMethod::eigenvalues);
+  o.stability_method = "eigenvalues";
+  o.orbits = true;
+  o.error_estimate = false;
+  return o;
 }
 
 /// Navier–Stokes parameters of the cylinder a = 0.5 m in U = 1 m/s (D/U = 1 s): ν = 1/Re, ω = 2α, on
@@ -119,7 +133,8 @@ std::string line_of(const std::string& text, const std::string& label);
 bool one_line(const std::string& s);
 
 /// magnus_cmd with the arguments head, then tail.
-Outcome magnus_cmd(std::vector<std::string> head, const std::vector<std::string>& tail, const std::string& dir);
+Outcome magnus_cmd(std::vector<std::string> head, const std::vector<std::string>& tail,
+                   const std::string& dir);
 
 /// A refusal as the house wants it: a non-zero status and one line on standard error that holds `expect`.
 bool refused(const Outcome& o, const std::string& expect);

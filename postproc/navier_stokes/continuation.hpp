@@ -73,8 +73,9 @@ enum class MapRegime {
   second_window = 2,  ///< shedding again after a steady stretch of the row, at under half the first window's
                       ///< frequency: the one-sided "second shedding mode" of high spin
   bistable = 3        ///< a stable steady state and a shedding orbit coexist (--orbits: the row's orbit,
-                      ///< continued into the point, persists; its own stability is not tested; the steady
-                      ///< values are reported)
+                      ///< continued into the point, persists, forwards past α_L or backwards below a
+                      ///< subcritical Hopf point; its own stability is not tested; the steady values are
+                      ///< reported)
 };
 
 /// One point of the map. Undefined values are NaN.

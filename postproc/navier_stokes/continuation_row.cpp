@@ -230,6 +230,36 @@ void arclength_to(Row& R, const ArclengthProblem& prob, const NsMapOptions& o, c
   }
 }
 
+/// A shedding orbit found at column k right after a stable steady point, with its steady state (the chain).
+struct OrbitOnset {
+  size_t k = 0;
+  OrbitChain chain;
+};
+
+/// Below a subcritical Hopf point the orbit outlives the stable steady state it came from, in the columns
+/// the row has already passed: for each onset, the orbit is carried back (coexisting_orbit, as forwards)
+/// into the stable steady points before it, one after another, until it is lost. Each point it persists
+/// at becomes bistable and is reported again through `done`.
+void bistable_below(const Case& base, const NsMapOptions& o, const NsParams& p0,
+                    const std::vector<std::optional<NsState>>& states, std::vector<OrbitOnset> onsets,
+                    const std::function<void(const NsMapPoint&)>& done, std::vector<NsMapPoint>& out) {
+  for (OrbitOnset& on : onsets)
+    for (size_t j = on.k; j-- > 0;) {
+      NsMapPoint& m = out[j];
+      if (m.regime != double(MapRegime::steady) || !states[j]) break;
+      const auto t0 = Clock::now();
+      NsParams p = p0;
+      p.omega = m.alpha * p.U / p.a;
+      NsMapPoint trial = m;
+      if (!coexisting_orbit(map_point_case(base, m.reynolds, m.alpha), p, *states[j], o, on.chain, trial))
+        break;
+      trial.regime = double(MapRegime::bistable);
+      trial.seconds += since(t0);
+      m = trial;
+      done(m);
+    }
+}
+
 }  // namespace
 
 void mark_second_window(std::vector<NsMapPoint>& row) {
@@ -287,6 +317,11 @@ std::vector<NsMapPoint> solve_row(const Case& base, const NsMapOptions& o, int r
   bool have1 = false, have2 = false;
   OrbitChain own;  // the row's last shedding orbit (o.orbits)
   OrbitChain& chain = orbits ? *orbits : own;
+  // With o.orbits: each point's steady state and the orbits that start right after a stable point, for
+  // the columns below a subcritical Hopf point (bistable_below).
+  const bool back = o.orbits && o.average_unstable;
+  std::vector<std::optional<NsState>> states(back ? al.size() : 0);
+  std::vector<OrbitOnset> onsets;
   for (size_t k = 0; k < al.size(); ++k) {
     const auto t0 = Clock::now();
     NsMapPoint m = blank_point(base, row, int(k), re, al[k]);
@@ -322,8 +357,14 @@ std::vector<NsMapPoint> solve_row(const Case& base, const NsMapOptions& o, int r
     finish_point(base, o, p, s ? &*s : nullptr, verdict, chain, m);
     m.seconds = since(t0);
     done(m);
+    if (back) {
+      states[k] = s;
+      if (m.source == MapSource::orbit && k > 0 && out.back().regime == double(MapRegime::steady))
+        onsets.push_back({k, chain});
+    }
     out.push_back(m);
   }
+  if (back) bistable_below(base, o, p0, states, std::move(onsets), done, out);
   mark_second_window(out);
   return out;
 }

@@ -14,7 +14,9 @@ namespace magnus {
 /// One row: continuation along α (sequential). guess: a steady state to start the row's first point from
 /// (the previous row's, continuing in Re); first: set to the first point's steady state when it converged;
 /// orbits: the last shedding orbit before the row (the previous row's, continuing in Re), updated to the
-/// row's last (null: the row's own chain, starting empty). done: called after each point.
+/// row's last (null: the row's own chain, starting empty). done: called after each point, and again for a
+/// point found bistable afterwards (with orbits, an orbit that starts right after a stable point is carried
+/// back into the stable points before it while it persists).
 std::vector<NsMapPoint> solve_row(const Case& base, const NsMapOptions& o, int row, double re,
                                   const std::function<void(const NsMapPoint&)>& done,
                                   const NsState* guess = nullptr, std::optional<NsState>* first = nullptr,

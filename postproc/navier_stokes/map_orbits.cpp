@@ -22,6 +22,16 @@ struct FoundOrbit {
   double periods = 0.0;
 };
 
+/// s shifted by to − from (the steady branch's change between two points, when both exist on s's grid: an
+/// orbit's mean moves with it); s unchanged otherwise.
+void shift_state(NsState& s, const NsState* from, const NsState* to) {
+  const size_t nodes = s.psi.size();
+  if (!from || !to || from->psi.size() != nodes || to->psi.size() != nodes) return;
+  for (size_t i = 0; i < s.psi.size(); ++i) s.psi[i] += to->psi[i] - from->psi[i];
+  for (size_t i = 0; i < s.zeta.size(); ++i) s.zeta[i] += to->zeta[i] - from->zeta[i];
+  s.Gamma_R += to->Gamma_R - from->Gamma_R;
+}
+
 /// Newton from a neighbouring orbit of the same grid (no march), its state shifted by shift_to − shift_from
 /// (the steady branch's change between the two points, when both have one: the orbit's mean moves with it).
 /// N puts Δt = T/N at the target CFL number p.cfl of the shifted state, as a march would (the orbit is the
@@ -30,13 +40,7 @@ struct FoundOrbit {
 /// Newton starts again (at most three times). Empty when it stalls, collapses or a step fails.
 std::optional<FoundOrbit> continued(const NsParams& p, OrbitResult near, const NsState* shift_from,
                                     const NsState* shift_to, OrbitOptions oo, double rho) {
-  const size_t nodes = near.state.psi.size();
-  if (shift_from && shift_to && shift_from->psi.size() == nodes && shift_to->psi.size() == nodes) {
-    NsState& s = near.state;
-    for (size_t i = 0; i < s.psi.size(); ++i) s.psi[i] += shift_to->psi[i] - shift_from->psi[i];
-    for (size_t i = 0; i < s.zeta.size(); ++i) s.zeta[i] += shift_to->zeta[i] - shift_from->zeta[i];
-    s.Gamma_R += shift_to->Gamma_R - shift_from->Gamma_R;
-  }
+  shift_state(near.state, shift_from, shift_to);
   FoundOrbit f;
   const double rate = step_rate(p, ns_grid(p), near.state);
   oo.steps = rate > 0.0 ? std::max(8, int(std::ceil(near.T * rate / p.cfl))) : near.steps;
@@ -79,10 +83,23 @@ bool coexisting_orbit(const Case& point_case, const NsParams& p, const NsState& 
   const PolarGrid g = ns_grid(p);
   std::optional<FoundOrbit> f;
   if (chain.fine && chain.on(g)) {
+    const NsState* from = chain.steady ? &*chain.steady : nullptr;
     OrbitOptions oo;
     oo.tol = o.orbit_tol;
-    f = continued(p, *chain.fine, chain.steady ? &*chain.steady : nullptr, chain.steady ? &steady : nullptr,
-                  oo, point_case.scene.density);
+    f = continued(p, *chain.fine, from, from ? &steady : nullptr, oo, point_case.scene.density);
+    if (!f) {
+      // Newton from the neighbour fails near a fold of the orbits (the step is too long there): a march
+      // from the neighbour's orbit instead, which settles on this point's orbit where a stable one is near,
+      // and decays to the steady state where none is (then no period: empty).
+      OrbitRunOptions ro;
+      ro.t_end = point_case.time.end * point_case.scene.time_unit();
+      ro.rho = point_case.scene.density;
+      ro.orbit.tol = o.orbit_tol;
+      ro.t_min = 0.0;  // no starting vortex to wait for
+      NsState start = chain.fine->state;
+      shift_state(start, from, from ? &steady : nullptr);
+      f = from_march(p, ro, std::move(start));
+    }
   }
   if (!f) {
     chain = {};

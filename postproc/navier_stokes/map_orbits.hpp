@@ -45,8 +45,9 @@ struct OrbitChain {
 bool orbit_point(const Case& point_case, const NsParams& p, const NsState* steady, const StabilityVerdict& v,
                  const NsMapOptions& o, OrbitChain& chain, NsMapPoint& m);
 
-/// At a point whose steady state is stable: whether the row's last orbit (chain.fine, the previous column's),
-/// continued into p (as orbit_point continues it, no march), persists as a shedding orbit. True: a stable
+/// At a point whose steady state is stable: whether the row's last orbit (chain.fine, the neighbouring
+/// column's), continued into p (as orbit_point continues it; where that Newton solve fails, a march from the
+/// neighbour's orbit state to point_case's time.end, then Newton), persists as a shedding orbit. True: a stable
 /// steady state and a shedding orbit coexist there (as past a subcritical Hopf point; the orbit's own
 /// stability is not tested), and the chain holds the orbit, so the next column continues it further. False:
 /// the chain is emptied. Its periods of time steps go to m.orbit_periods.

@@ -5,9 +5,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "io/case_file.hpp"
 #include "postproc/navier_stokes/continuation.hpp"
+#include "support.hpp"
 
 using namespace magnus;
 
@@ -47,4 +49,30 @@ TEST_CASE("the s_map case: 420 points within 5 minutes, the shedding onset near 
       CHECK(p.ratio > 0.0);
       CHECK(p.ratio < 1.2);  // at α = 6 finer grids reach 1.03 of the ideal lift (README); this one less
     }
+}
+
+TEST_CASE("the map marks the bistable range below the one-sided window's Hopf point (Re 200)",
+          "[validation][ns-map]") {
+  // On n_θ 128, R = 100a the one-sided window of Re 200 opens at a subcritical Hopf point (4.402): a march
+  // from rest sheds at 4.38, where the steady state is still stable, and not at 4.34 (the README's
+  // "Re 200, the second window"). The row runs upwards: the orbit found at 4.42 is carried back into the
+  // stable points before it, persists at 4.38 (bistable) and is lost at 4.34 (steady).
+  const Case c = parse_case(
+      "[model]\nflow = \"navier-stokes\"\n[cylinder]\nradius = 0.5\nspin_ratio = 4.4\n[flow]\nspeed = 1.0\n"
+      "density = 1.0\nreynolds = 200.0\n[domain]\nouter_radius = 100.0\n[grid]\nn_theta = 128\n[time]\n"
+      "end = 300.0\n",
+      "bistable");
+  const NsMap m = ns_map(c, test::orbit_row({4.34, 4.38, 4.42}, 200.0));
+  REQUIRE(m.points.size() == 3);
+  for (const NsMapPoint& p : m.points)
+    std::printf("alpha %.2f: stable %d, regime %g, orbit from %s, St %.4f\n", p.alpha,
+                int(p.stable.value_or(false)), p.regime, p.orbit_start.c_str(), p.strouhal);
+  CHECK(m.points[0].stable == std::optional<bool>(true));
+  CHECK(m.points[0].regime == double(MapRegime::steady));
+  CHECK(m.points[1].stable == std::optional<bool>(true));
+  CHECK(m.points[1].regime == double(MapRegime::bistable));
+  CHECK(m.points[1].orbit_start == "continued");
+  CHECK(m.points[2].source == MapSource::orbit);
+  CHECK(m.points[2].regime == double(MapRegime::shedding));
+  CHECK(m.points[2].strouhal == Approx(0.0361).epsilon(0.05));  // the march from rest's St at 4.42
 }

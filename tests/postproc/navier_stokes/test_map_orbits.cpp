@@ -14,6 +14,7 @@
 #include "postproc/navier_stokes/orbit.hpp"
 #include "postproc/navier_stokes/run.hpp"
 #include "postproc/navier_stokes/run_paths.hpp"
+#include "support.hpp"
 
 using namespace magnus;
 
@@ -23,7 +24,8 @@ namespace {
 Case map_case() {
   return parse_case(
       "[model]\nflow = \"navier-stokes\"\n[cylinder]\nradius = 0.5\nspin_ratio = 0.0\n[flow]\nspeed = 1.0\n"
-      "density = 1.0\nreynolds = 100.0\n[domain]\nouter_radius = 20.0\n[grid]\nn_theta = 48\n[time]\nend = 300.0\n",
+      "density = 1.0\nreynolds = 100.0\n[domain]\nouter_radius = 20.0\n[grid]\nn_theta = 48\n[time]\nend = "
+      "300.0\n",
       "test");
 }
 
@@ -68,8 +70,10 @@ TEST_CASE("[ns][map] shedding points as orbits: started on the Hopf mode, contin
     // of it): the time step's error of the scheme, 0.1-0.2% here, is all that parts them.
     CHECK(rel(m.cd, own.result.C_D_mean) < 3e-3);
     CHECK(rel(m.strouhal, own.result.St) < 3e-3);
-    if (m.alpha > 0.0) CHECK(rel(m.cl, own.result.C_L_mean) < 3e-3);
-    else CHECK(std::fabs(m.cl) < 1e-6);
+    if (m.alpha > 0.0)
+      CHECK(rel(m.cl, own.result.C_L_mean) < 3e-3);
+    else
+      CHECK(std::fabs(m.cl) < 1e-6);
     if (previous) {
       // The orbit is unique: continued from the previous α's own orbit at the own N, Newton lands on it to
       // 1e-6 in the means (Newton to 1e-9), with no march.
@@ -142,7 +146,8 @@ TEST_CASE("[ns][map] the second shedding window: shedding again after a steady s
   CHECK(row({{steady, nan}, {shed, 0.10}, {shed, 0.04}}) == std::vector<double>{steady, shed, shed});
   // A bistable point counts as steady; an undecided St leaves the point as it is.
   const double both = double(MapRegime::bistable);
-  CHECK(row({{shed, 0.2}, {both, nan}, {shed, nan}, {shed, 0.05}}) == std::vector<double>{shed, both, shed, second});
+  CHECK(row({{shed, 0.2}, {both, nan}, {shed, nan}, {shed, 0.05}}) ==
+        std::vector<double>{shed, both, shed, second});
 }
 
 TEST_CASE("[ns][map] past alpha_L at Re 200 the continued orbit shrinks onto the steady state: not bistable",
@@ -151,14 +156,7 @@ TEST_CASE("[ns][map] past alpha_L at Re 200 the continued orbit shrinks onto the
   // 2.15, continued into 2.2, collapses onto the steady state (a supercritical Hopf point between them), so
   // the point is steady, not bistable, and the row's orbit chain ends there.
   const Case c = map_case();
-  NsMapOptions o;
-  o.alphas = {2.15, 2.2};
-  o.reynolds = {200.0};
-  o.stability = make_stability_hook(StabilityMethod::eigenvalues);
-  o.stability_method = "eigenvalues";
-  o.orbits = true;
-  o.error_estimate = false;
-  const NsMap map = ns_map(c, o);
+  const NsMap map = ns_map(c, test::orbit_row({2.15, 2.2}, 200.0));
   REQUIRE(map.points.size() == 2);
   const NsMapPoint &a = map.points[0], &b = map.points[1];
   CHECK(a.source == MapSource::orbit);
