@@ -246,12 +246,14 @@ void bistable_below(const Case& base, const NsMapOptions& o, const NsParams& p0,
   for (OrbitOnset& on : onsets)
     for (size_t j = on.k; j-- > 0;) {
       NsMapPoint& m = out[j];
-      if (m.regime != double(MapRegime::steady) || !states[j]) break;
+      const bool stable_steady = m.source == MapSource::steady && m.stable == std::optional<bool>(true);
+      if (!stable_steady || m.regime != double(MapRegime::steady) || !states[j]) break;
       const auto t0 = Clock::now();
       NsParams p = p0;
       p.omega = m.alpha * p.U / p.a;
       NsMapPoint trial = m;
-      if (!coexisting_orbit(map_point_case(base, m.reynolds, m.alpha), p, *states[j], o, on.chain, trial))
+      if (!coexisting_orbit(map_point_case(base, m.reynolds, m.alpha), p, *states[j], o, on.chain, trial,
+                            true))
         break;
       trial.regime = double(MapRegime::bistable);
       trial.seconds += since(t0);
@@ -358,8 +360,10 @@ std::vector<NsMapPoint> solve_row(const Case& base, const NsMapOptions& o, int r
     m.seconds = since(t0);
     done(m);
     if (back) {
-      states[k] = s;
-      if (m.source == MapSource::orbit && k > 0 && out.back().regime == double(MapRegime::steady))
+      states[k] = std::move(s);
+      // An orbit right after a stable steady point (not one a march from rest settled on instead).
+      if (m.source == MapSource::orbit && k > 0 && out.back().source == MapSource::steady &&
+          out.back().stable == std::optional<bool>(true))
         onsets.push_back({k, chain});
     }
     out.push_back(m);

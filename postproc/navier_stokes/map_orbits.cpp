@@ -79,7 +79,7 @@ std::optional<FoundOrbit> from_march(const NsParams& p, const OrbitRunOptions& r
 }  // namespace
 
 bool coexisting_orbit(const Case& point_case, const NsParams& p, const NsState& steady, const NsMapOptions& o,
-                      OrbitChain& chain, NsMapPoint& m) {
+                      OrbitChain& chain, NsMapPoint& m, bool march) {
   const PolarGrid g = ns_grid(p);
   std::optional<FoundOrbit> f;
   if (chain.fine && chain.on(g)) {
@@ -87,7 +87,7 @@ bool coexisting_orbit(const Case& point_case, const NsParams& p, const NsState& 
     OrbitOptions oo;
     oo.tol = o.orbit_tol;
     f = continued(p, *chain.fine, from, from ? &steady : nullptr, oo, point_case.scene.density);
-    if (!f) {
+    if (!f && march) {
       // Newton from the neighbour fails near a fold of the orbits (the step is too long there): a march
       // from the neighbour's orbit instead, which settles on this point's orbit where a stable one is near,
       // and decays to the steady state where none is (then no period: empty).
@@ -98,6 +98,7 @@ bool coexisting_orbit(const Case& point_case, const NsParams& p, const NsState& 
       ro.t_min = 0.0;  // no starting vortex to wait for
       NsState start = chain.fine->state;
       shift_state(start, from, from ? &steady : nullptr);
+      start.N_prev.clear();  // the neighbour's advection history is not this point's: AB2 starts with Euler
       f = from_march(p, ro, std::move(start));
     }
   }

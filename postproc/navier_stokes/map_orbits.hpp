@@ -46,12 +46,14 @@ bool orbit_point(const Case& point_case, const NsParams& p, const NsState* stead
                  const NsMapOptions& o, OrbitChain& chain, NsMapPoint& m);
 
 /// At a point whose steady state is stable: whether the row's last orbit (chain.fine, the neighbouring
-/// column's), continued into p (as orbit_point continues it; where that Newton solve fails, a march from the
-/// neighbour's orbit state to point_case's time.end, then Newton), persists as a shedding orbit. True: a stable
-/// steady state and a shedding orbit coexist there (as past a subcritical Hopf point; the orbit's own
+/// column's), continued into p (as orbit_point continues it; with `march`, where that Newton solve fails, a
+/// march from the neighbour's orbit state to point_case's time.end, then Newton), persists as a shedding
+/// orbit. The forward pass past α_L does not march (a collapsing orbit would march to time.end at every
+/// window's end); the backward pass below a subcritical Hopf point does, near the orbits' fold. True: a
+/// stable steady state and a shedding orbit coexist there (as past a subcritical Hopf point; the orbit's own
 /// stability is not tested), and the chain holds the orbit, so the next column continues it further. False:
 /// the chain is emptied. Its periods of time steps go to m.orbit_periods.
 bool coexisting_orbit(const Case& point_case, const NsParams& p, const NsState& steady, const NsMapOptions& o,
-                      OrbitChain& chain, NsMapPoint& m);
+                      OrbitChain& chain, NsMapPoint& m, bool march = false);
 
 }  // namespace magnus
