@@ -251,13 +251,11 @@ void bistable_below(const Case& base, const NsMapOptions& o, const NsParams& p0,
       const auto t0 = Clock::now();
       NsParams p = p0;
       p.omega = m.alpha * p.U / p.a;
-      NsMapPoint trial = m;
-      if (!coexisting_orbit(map_point_case(base, m.reynolds, m.alpha), p, *states[j], o, on.chain, trial,
-                            true))
+      // A failure leaves m as it was (coexisting_orbit writes m only once the orbit is found).
+      if (!coexisting_orbit(map_point_case(base, m.reynolds, m.alpha), p, *states[j], o, on.chain, m, true))
         break;
-      trial.regime = double(MapRegime::bistable);
-      trial.seconds += since(t0);
-      m = trial;
+      m.regime = double(MapRegime::bistable);
+      m.seconds += since(t0);
       done(m);
     }
 }

@@ -62,6 +62,15 @@ std::optional<FoundOrbit> continued(const NsParams& p, OrbitResult near, const N
   return f;
 }
 
+/// A map point's orbit runs: the short march gives up at its case's time.end, Newton to o.orbit_tol.
+OrbitRunOptions point_orbit_options(const Case& point_case, const NsMapOptions& o) {
+  OrbitRunOptions ro;
+  ro.t_end = point_case.time.end * point_case.scene.time_unit();
+  ro.rho = point_case.scene.density;
+  ro.orbit.tol = o.orbit_tol;
+  return ro;
+}
+
 /// A short march from `start` (t_min: see OrbitRunOptions), then Newton. Empty when the march finds no
 /// shedding period, Newton stalls, or the orbit is the steady state.
 std::optional<FoundOrbit> from_march(const NsParams& p, const OrbitRunOptions& ro, NsState start) {
@@ -84,17 +93,12 @@ bool coexisting_orbit(const Case& point_case, const NsParams& p, const NsState& 
   std::optional<FoundOrbit> f;
   if (chain.fine && chain.on(g)) {
     const NsState* from = chain.steady ? &*chain.steady : nullptr;
-    OrbitOptions oo;
-    oo.tol = o.orbit_tol;
-    f = continued(p, *chain.fine, from, from ? &steady : nullptr, oo, point_case.scene.density);
+    OrbitRunOptions ro = point_orbit_options(point_case, o);
+    f = continued(p, *chain.fine, from, from ? &steady : nullptr, ro.orbit, ro.rho);
     if (!f && march) {
       // Newton from the neighbour fails near a fold of the orbits (the step is too long there): a march
       // from the neighbour's orbit instead, which settles on this point's orbit where a stable one is near,
       // and decays to the steady state where none is (then no period: empty).
-      OrbitRunOptions ro;
-      ro.t_end = point_case.time.end * point_case.scene.time_unit();
-      ro.rho = point_case.scene.density;
-      ro.orbit.tol = o.orbit_tol;
       ro.t_min = 0.0;  // no starting vortex to wait for
       NsState start = chain.fine->state;
       shift_state(start, from, from ? &steady : nullptr);
@@ -116,10 +120,7 @@ bool coexisting_orbit(const Case& point_case, const NsParams& p, const NsState& 
 bool orbit_point(const Case& point_case, const NsParams& p, const NsState* steady, const StabilityVerdict& v,
                  const NsMapOptions& o, OrbitChain& chain, NsMapPoint& m) {
   const double rho = point_case.scene.density;
-  OrbitRunOptions ro;
-  ro.t_end = point_case.time.end * point_case.scene.time_unit();
-  ro.rho = rho;
-  ro.orbit.tol = o.orbit_tol;
+  const OrbitRunOptions ro = point_orbit_options(point_case, o);
   const PolarGrid g = ns_grid(p);
   if (chain.fine && !chain.on(g)) chain = {};  // another Re's grid
   std::optional<FoundOrbit> f;
