@@ -44,11 +44,15 @@ struct StabilityVerdict {
 /// Linear stability of a steady state.
 using StabilityHook = std::function<StabilityVerdict(const NsParams&, const NsState&)>;
 
-/// The interim hook: march the steady state plus a weak off-axis vortex (circulation 1e-4·U·D) with the
-/// time stepper for `span` convective times D/U and fit the growth rate σ of the perturbation's norm
-/// ‖ζ − ζ_s‖ over the second half: stable when σ·D/U < −margin, unstable when > margin, else undecided.
-/// A cheap verdict (the linearised time stepper's growth, measured); make_stability_hook's default is the
-/// Jacobian's leading eigenvalues.
+/// The growth rate σ (per D/U_ref, U_ref = U or a|ω| in still fluid) of a weak off-axis vortex (circulation
+/// 1e-4·U_ref·D at (3a, 0.6a)) added to the steady state and marched `span` D/U_ref by the time stepper
+/// (run_unsteady, its own Δt): the least-squares slope of ln‖ζ − ζ_s‖ over the second half. nullopt when the
+/// march fails.
+std::optional<double> marched_growth_rate(const NsParams& p, const NsState& steady, double span = 30.0);
+
+/// The time stepper's verdict (marched_growth_rate): stable when σ·D/U < −margin, unstable when > margin,
+/// else undecided. A cheap verdict (the linearised time stepper's growth, measured); make_stability_hook's
+/// default is the Jacobian's leading eigenvalues.
 std::optional<bool> stability_by_marching(const NsParams& p, const NsState& steady, double span = 30.0,
                                           double margin = 2e-3);
 

@@ -2,12 +2,14 @@
 // time.mode "auto" does before it would march (auto_plan, then Newton and the eigenvalue test).
 #include <fmt/core.h>
 
+#include <chrono>
 #include <cmath>
 #include <complex>
 #include <future>
 #include <stdexcept>
 #include <string>
 
+#include "postproc/navier_stokes/continuation.hpp"
 #include "postproc/navier_stokes/error_estimate.hpp"
 #include "postproc/navier_stokes/forces.hpp"
 #include "postproc/navier_stokes/grid_rule.hpp"
@@ -77,14 +79,15 @@ NewtonResult companion_solve(NsParams p, const NsState& guess, const NewtonOptio
 /// The companion of a steady solve: Newton from the potential flow on the grid twice as coarse (pc), on a
 /// thread of its own, beside the case's solve.
 std::future<NewtonResult> start_companion_newton(const NsParams& pc, const NewtonOptions& o) {
-  return std::async(std::launch::async, [pc, o] { return companion_solve(pc, potential_guess(pc, ns_grid(pc)), o); });
+  return std::async(std::launch::async,
+                    [pc, o] { return companion_solve(pc, potential_guess(pc, ns_grid(pc)), o); });
 }
 
 /// The companion's solve once more, when the one from the potential flow failed (at high spin the coarse
 /// grid's Newton can stall far from its solution): from the run's own steady state `fine` (on g), sampled
 /// onto the companion's grid pc (Fourier in θ, cubic in ξ). The seconds of the failed attempt are added.
-NewtonResult companion_from_run(const NsParams& pc, const PolarGrid& g, const NsState& fine, const NewtonOptions& o,
-                                double seconds_before) {
+NewtonResult companion_from_run(const NsParams& pc, const PolarGrid& g, const NsState& fine,
+                                const NewtonOptions& o, double seconds_before) {
   NewtonResult r = companion_solve(pc, interpolate_state(g, fine, ns_grid(pc)), o);
   r.wall_seconds += seconds_before;
   return r;
@@ -130,7 +133,34 @@ void study_estimate(ViscousPart& v, const SteadyStudy& study) {
                                            : "C_L or C_D ≈ 0 (or U = 0): no relative error";
 }
 
+/// The leading eigenvalue of a search for a status line, and whether its strip was covered.
+std::string eigenvalue_text(const StabilityResult& st, const Scene& s) {
+  const std::complex<double> l = st.eigenvalues.front();
+  // St = f·D/U needs a stream: in still fluid (U = 0) the eigenvalues are in a|ω|/D and St is undefined.
+  return fmt::format("leading eigenvalue {:.4g} {:+.4g}i {}, St {}{}", l.real(), l.imag(), rate_unit_name(s),
+                     s.speed > 0.0 ? fmt::format("{:.4g}", st.strouhal()) : "undefined (U = 0)",
+                     st.covered ? "" : "; not verified: the search left a gap right of it");
+}
+
 }  // namespace
+
+StepperVerdict stepper_verdict(const NsParams& p, const NsState& steady) {
+  const auto t0 = std::chrono::steady_clock::now();
+  StepperVerdict v;
+  v.sigma = marched_growth_rate(p, steady, kStepperSpan);
+  v.stable = v.sigma && *v.sigma < -kStepperMargin;
+  v.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return v;
+}
+
+std::string stepper_text(const StepperVerdict& v, const Scene& s) {
+  if (!v.sigma) return "the time stepper's test failed: its march stopped";
+  const char* how = *v.sigma < -kStepperMargin  ? "decays"
+                    : *v.sigma > kStepperMargin ? "grows"
+                                                : "neither decays nor grows";
+  return fmt::format("by the time stepper, a weak vortex added to it {} at {:.3g} {} over {:g}–{:g} {}", how,
+                     *v.sigma, rate_unit_name(s), 0.5 * kStepperSpan, kStepperSpan, time_unit_name(s));
+}
 
 FlowResult steady_by_newton(const Case& c, const NsParams& p, const PolarGrid& g, const Checkpoint* resume) {
   SteadyStudyOptions o;
@@ -206,27 +236,31 @@ AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g, boo
     a.why = fmt::format("auto: marched in time (stability not computed: {}); ", e.what());
     return a;
   }
-  a.stability_seconds = st.seconds;
-  if (st.eigenvalues.empty()) {
-    a.why = fmt::format("auto: marched in time (steady state found, {}); ", st.message);
-    return a;
+  // Where the search converged nothing (Re 200, α 6 on R = 100a: slow far-field modes crowd 0), or called the
+  // state stable but left a gap right of its leading eigenvalue (Re 200, α 1.6 on the grid of α 1.9: the
+  // growing wake pair sat in it), the time stepper decides.
+  const bool found = !st.eigenvalues.empty();
+  std::string said = found ? eigenvalue_text(st, c.scene) : "steady state found, " + st.message;
+  bool stable = found && st.stable;
+  if (!found || (st.stable && !st.covered)) {
+    const StepperVerdict v = stepper_verdict(p, nr.state);
+    st.seconds += v.seconds;
+    said += "; " + stepper_text(v, c.scene);
+    const bool grows = v.sigma && *v.sigma > kStepperMargin;
+    stable = found ? !grows : v.stable;
   }
-  const std::complex<double> l = st.eigenvalues.front();
-  a.eigenvalue = l;
-  if (!st.residuals.empty()) a.eigenvalue_residual = st.residuals.front();
-  // St = f·D/U needs a stream: in still fluid (U = 0) the eigenvalues are in a|ω|/D and St is undefined.
-  const std::string lam =
-      fmt::format("leading eigenvalue {:.4g} {:+.4g}i {}, St {}", l.real(), l.imag(), rate_unit_name(c.scene),
-                  p.U > 0.0 ? fmt::format("{:.4g}", st.strouhal()) : "undefined (U = 0)");
-  if (st.stable) {
-    a.steady = steady_result(
-        c, p, g, nr.state,
-        fmt::format("auto: stable ({}{}); {}", lam,
-                    st.covered ? "" : "; not verified: the search left a gap right of it", newton_text(nr)),
-        nr.wall_seconds, &st);
+  a.stability_seconds = st.seconds;
+  if (found && stable == st.stable) {  // the eigenvalue shown agrees with the verdict
+    a.eigenvalue = st.eigenvalues.front();
+    if (!st.residuals.empty()) a.eigenvalue_residual = st.residuals.front();
+  }
+  if (stable) {
+    a.steady = steady_result(c, p, g, nr.state, fmt::format("auto: stable ({}); {}", said, newton_text(nr)),
+                             nr.wall_seconds, &st);
     estimate(*a.steady, nr);
   } else
-    a.why = fmt::format("auto: marched in time (the steady state is unstable: {}); ", lam);
+    a.why = fmt::format("auto: marched in time ({}{}); ",
+                        found && !st.stable ? "the steady state is unstable: " : "", said);
   return a;
 }
 

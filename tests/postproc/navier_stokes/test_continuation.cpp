@@ -10,6 +10,7 @@
 #include "postproc/navier_stokes/continuation.hpp"
 #include "postproc/navier_stokes/forces.hpp"
 #include "postproc/navier_stokes/run.hpp"
+#include "postproc/navier_stokes/run_paths.hpp"
 #include "solver/navier_stokes/newton.hpp"
 #include "solver/navier_stokes/stability.hpp"
 
@@ -139,6 +140,35 @@ TEST_CASE("the marching stability test: stable at Re 20, unstable at Re 100 with
   }
 }
 
+TEST_CASE("auto's time-stepper verdict: its growth rate is the leading eigenvalue's, said in the status",
+          "[continuation]") {
+  // When the eigenvalue search converges nothing, auto asks the time stepper (stepper_verdict). Where the
+  // wake's pair grows (Re 100, α 0) the weak vortex's growth over 30–60 D/U is that pair's growth rate
+  // (0.0425 against 0.0418 U/D on this grid; over 15–30 D/U the vortex's own transient left 0.0467); below
+  // the onset (Re 40) it decays.
+  for (auto [re, expect] : {std::tuple{40.0, true}, std::tuple{100.0, false}}) {
+    INFO("Re " << re);
+    const Case c = coarse_case(re);
+    const NsParams p = ns_params(map_point_case(c, re, 0.0));
+    const NewtonResult r = solve_steady(p, potential_guess(p, ns_grid(p)));
+    REQUIRE(r.converged);
+    const StepperVerdict v = stepper_verdict(p, r.state);
+    REQUIRE(v.sigma);
+    CHECK(v.stable == expect);
+    CHECK(std::fabs(*v.sigma) > kStepperMargin);
+    const std::string text = stepper_text(v, c.scene);
+    INFO(text);
+    CHECK(text.find(expect ? "decays at -" : "grows at ") != std::string::npos);
+    CHECK(text.find("U/D over 30–60 D/U") != std::string::npos);
+    if (expect) continue;  // decaying, the vortex's rate is a mix of modes (−0.0100 against −0.0117 U/D)
+    const StabilityResult st = leading_eigenvalues(p, r.state);
+    REQUIRE_FALSE(st.eigenvalues.empty());
+    CHECK(*v.sigma == Approx(st.eigenvalues.front().real()).epsilon(0.05));
+  }
+  StepperVerdict failed;
+  CHECK(stepper_text(failed, coarse_case(40.0).scene).find("failed") != std::string::npos);
+}
+
 TEST_CASE("the eigenvalue test finds the slow one-sided shedding near α = 5 (Re 150, map grid)",
           "[continuation][stability]") {
   // At Re 150, α 4.8 the steady branch (reached by continuation: Newton from potential flow fails there) is
@@ -166,7 +196,8 @@ TEST_CASE("the eigenvalue test finds the slow one-sided shedding near α = 5 (Re
   REQUIRE(marched.has_value());
   CHECK_FALSE(*marched);  // the time stepper: the disturbance grows
   REQUIRE(now.leading_pair().has_value());
-  INFO("leading pair " << *now.leading_pair() << "; before: " << (before.eigenvalues.empty() ? 0.0 : before.eigenvalues[0].real()));
+  INFO("leading pair " << *now.leading_pair()
+                       << "; before: " << (before.eigenvalues.empty() ? 0.0 : before.eigenvalues[0].real()));
   CHECK_FALSE(now.stable);
   CHECK(now.eigenvalues.front().real() == Approx(0.0233).margin(0.002));
   CHECK(std::fabs(now.eigenvalues.front().imag()) == Approx(0.278).margin(0.005));
