@@ -13,7 +13,9 @@
 #include "io/case_file.hpp"
 #include "postproc/navier_stokes/critical.hpp"
 #include "postproc/navier_stokes/grid_rule.hpp"
+#include "postproc/navier_stokes/hopf_steady.hpp"
 #include "postproc/navier_stokes/run.hpp"
+#include "postproc/navier_stokes/run_paths.hpp"
 #include "postproc/navier_stokes/unsteady.hpp"
 #include "solver/navier_stokes/newton.hpp"
 #include "solver/navier_stokes/stability.hpp"
@@ -88,13 +90,48 @@ TEST_CASE("[validation][onset] Re_c without spin: 46.2–46.8 at St 0.117", "[va
 
 TEST_CASE("[validation][onset] Re 200: shedding stops at alpha 1.91", "[validation][onset]") {
   // Mittal & Kumar 2003: the wake at Re 200 stops shedding at α_L = 1.91 (their DNS). The old search failed
-  // here: Newton from the potential flow found no steady state at α = 1.6. Over 1.6–2.2 the steady branch
-  // crosses twice: stable at 1.6 (−0.025 U/D, the bistable region below), unstable at 1.75 (+0.105), stable
-  // again from α_L on; both ends of 1.6–2.2 decay, so the bracket holds only the upper crossing.
+  // here: Newton from the potential flow found no steady state at α = 1.6. The bracket starts at 1.75, where
+  // the wake's pair grows (+0.105 U/D): at 1.6 the eigenvalue search leaves a gap right of its leading pair
+  // and calls the state stable, which the time stepper contradicts (the next check).
   const HopfPoint h = search(scene(200.0, 1.9), HopfParameter::spin_ratio, 1.75, 2.05, 0.002);
   CHECK(h.x_c == Approx(1.91).margin(0.04));
   CHECK(h.at_a.growth() > 0.0);
   CHECK(h.at_b.growth() < 0.0);
+}
+
+TEST_CASE("[validation][onset] Re 200: below alpha_L the steady state is unstable to the time stepper",
+          "[validation][onset]") {
+  // On the grid of the α_L search at α 1.6, the eigenvalue search finds every pair it converges decaying
+  // (leading −0.0248 ± 0.975i U/D) but leaves a gap right of them, so its "stable" is not verified; it was
+  // once read as a bistable range below α_L. The time stepper settles it: a weak vortex added to the steady
+  // state grows (marched on, it becomes the shedding orbit a march from rest finds, lift swing 1.26), as
+  // auto's test of such a gapped verdict now finds.
+  NsParams p = scene(200.0, 1.9);
+  p.omega = 1.6 * p.U / p.a;
+  const std::optional<NsState> s = steady_at(p, HopfParameter::spin_ratio, 1.6, nullptr, nullptr);
+  REQUIRE(s);
+  const StepperVerdict v = stepper_verdict(p, *s);
+  REQUIRE(v.sigma);
+  std::printf("  alpha 1.6: a weak vortex grows at %+.4f U/D over 30-60 D/U (%.0f s)\n", *v.sigma, v.seconds);
+  CHECK_FALSE(v.stable);
+  CHECK(*v.sigma > 10.0 * kStepperMargin);
+  // Marched on, the same vortex becomes the shedding orbit (lift swing 1.26 from rest).
+  NsState near = *s;
+  add_vortex_blob(ns_grid(p), near, 3.0 * p.a, 0.6 * p.a, 0.5 * p.a, 1e-4);
+  UnsteadyOptions o;
+  o.t_end = 100.0;
+  o.steady_tol = 0.0, o.mean_tol = 0.0;  // march to t_end
+  double early_lo = HUGE_VAL, early_hi = -HUGE_VAL, late_lo = HUGE_VAL, late_hi = -HUGE_VAL;
+  o.on_step = [&](const NsState& x, const ViscousForces& f) {
+    if (x.t < 25.0) early_lo = std::min(early_lo, *f.C_L), early_hi = std::max(early_hi, *f.C_L);
+    if (x.t > 75.0) late_lo = std::min(late_lo, *f.C_L), late_hi = std::max(late_hi, *f.C_L);
+    return true;
+  };
+  run_unsteady(p, o, std::move(near));
+  std::printf("  lift swing %.3g over t 0-25, %.3g over t 75-100\n", early_hi - early_lo, late_hi - late_lo);
+  REQUIRE(late_hi >= late_lo);  // it reached t = 75
+  CHECK(late_hi - late_lo > 1.0);
+  CHECK(late_hi - late_lo > 10.0 * (early_hi - early_lo));
 }
 
 TEST_CASE("[validation][onset] Re 200: the second, one-sided shedding window opens at alpha 4.34",
