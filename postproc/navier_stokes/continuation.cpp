@@ -1,5 +1,4 @@
 #include "postproc/navier_stokes/continuation.hpp"
-#include "physics/checked_cast.hpp"
 
 #include "solver/navier_stokes/stability.hpp"
 
@@ -13,6 +12,7 @@
 
 #include "postproc/navier_stokes/continuation_row.hpp"
 #include "postproc/navier_stokes/run.hpp"
+#include "postproc/navier_stokes/stepper_verdict.hpp"
 #include "postproc/navier_stokes/unsteady.hpp"
 #include "solver/work_queue.hpp"
 
@@ -60,39 +60,6 @@ std::vector<int> shard_rows(int rows, int shard, int shards) {
   return r;
 }
 
-std::optional<double> marched_growth_rate(const NsParams& p, const NsState& steady, double span) {
-  const PolarGrid g = ns_grid(p);
-  NsState s = steady;
-  s.t = 0.0, s.N_prev.clear(), s.dt_prev = 0.0, s.Gamma_flux_prev = 0.0;
-  const double D = 2.0 * p.a, U_ref = p.U > 0.0 ? p.U : p.a * std::fabs(p.omega), unit = D / U_ref;
-  add_vortex_blob(g, s, 3.0 * p.a, 0.6 * p.a, 0.5 * p.a, 1e-4 * U_ref * D);
-  const size_t n = s.zeta.size();
-  // Least-squares slope of ln‖ζ − ζ_s‖ (the wall ring left out) over the second half of the march.
-  double st = 0.0, sy = 0.0, stt = 0.0, sty = 0.0;
-  long m = 0;
-  bool finite = true;
-  UnsteadyOptions o;
-  o.t_end = span * unit;
-  o.steady_tol = 0.0, o.mean_tol = 0.0;  // to t_end, whatever the flow does
-  o.on_step = [&](const NsState& x, const ViscousForces&) {
-    if (2.0 * x.t < o.t_end) return true;
-    double e = 0.0;
-    for (size_t q = size_t(g.n_theta); q < n; ++q)
-      e += (x.zeta[q] - steady.zeta[q]) * (x.zeta[q] - steady.zeta[q]);
-    if (!(e > 0.0) || !std::isfinite(e)) return finite = false;
-    const double t = x.t / unit, y = 0.5 * std::log(e);
-    st += t, sy += y, stt += t * t, sty += t * y, ++m;
-    return true;
-  };
-  // At least 100 steps over the span, so that the fit has samples where the run's own Δt is long (a slow
-  // spin in still fluid).
-  NsParams q = p;
-  if (100.0 * choose_time_step(p, g, s, nullptr) > o.t_end) q.dt = o.t_end / 100.0;
-  const UnsteadyResult r = run_unsteady(q, o, std::move(s));
-  if (!r.ok || !finite || m < 3) return std::nullopt;
-  return (double(m) * sty - st * sy) / (double(m) * stt - st * st);  // per D/U
-}
-
 std::optional<bool> stability_by_marching(const NsParams& p, const NsState& steady, double span,
                                           double margin) {
   const std::optional<double> sigma = marched_growth_rate(p, steady, span);
@@ -107,8 +74,8 @@ StabilityHook make_stability_hook(StabilityMethod m) {
     return [](const NsParams& p, const NsState& s) { return stability_by_marching(p, s); };
   return [](const NsParams& p, const NsState& s) -> StabilityVerdict {
     StabilityResult r = leading_eigenvalues(p, s);
-    if (r.eigenvalues.empty()) return {};
-    StabilityVerdict v(r.stable);
+    StabilityVerdict v(checked_verdict(p, s, r));  // the time stepper where the search cannot judge
+    if (r.eigenvalues.empty()) return v;
     const std::complex<double> lead = r.eigenvalues.front();
     if (lead.real() > 0.0 && lead.imag() > 0.0 && !r.mode_zeta.empty()) {  // the mode is the leading one's
       v.pair = lead;

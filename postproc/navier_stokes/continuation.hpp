@@ -44,15 +44,9 @@ struct StabilityVerdict {
 /// Linear stability of a steady state.
 using StabilityHook = std::function<StabilityVerdict(const NsParams&, const NsState&)>;
 
-/// The growth rate σ (per D/U_ref, U_ref = U or a|ω| in still fluid) of a weak off-axis vortex (circulation
-/// 1e-4·U_ref·D at (3a, 0.6a)) added to the steady state and marched `span` D/U_ref by the time stepper
-/// (run_unsteady, its own Δt): the least-squares slope of ln‖ζ − ζ_s‖ over the second half. nullopt when the
-/// march fails.
-std::optional<double> marched_growth_rate(const NsParams& p, const NsState& steady, double span = 30.0);
-
-/// The time stepper's verdict (marched_growth_rate): stable when σ·D/U < −margin, unstable when > margin,
-/// else undecided. A cheap verdict (the linearised time stepper's growth, measured); make_stability_hook's
-/// default is the Jacobian's leading eigenvalues.
+/// The time stepper's verdict (marched_growth_rate, stepper_verdict.hpp): stable when σ·D/U < −margin,
+/// unstable when > margin, else undecided. A cheap verdict (the linearised time stepper's growth, measured);
+/// make_stability_hook's default is the Jacobian's leading eigenvalues.
 std::optional<bool> stability_by_marching(const NsParams& p, const NsState& steady, double span = 30.0,
                                           double margin = 2e-3);
 
@@ -97,7 +91,7 @@ struct NsMapPoint {
   double cl_pressure, cl_friction, cd_pressure, cd_friction;  ///< the steady state's parts
   double strouhal;                                            ///< time-averaged periodic points only
   double cl_ideal;                                            ///< potential flow, −2πα
-  double ratio;          ///< cl / cl_ideal = S/(2πρa²) (NaN at α = 0)
+  double ratio;  ///< cl / cl_ideal = S/(2πρa²) (NaN at α = 0)
   /// The point's own error bars, relative: |f − f_c|/|f| against the same point on the grid twice as
   /// coarse (a steady state: Newton there from this one; a marched point: its companion march, plus the
   /// spread of means that had not converged). NaN where undefined (|f| < 1e-3, no companion).
@@ -150,7 +144,7 @@ struct NsMap {
   std::string stability_method = "none";  ///< "eigenvalues", "march" or "none"; "" in files that predate it
   bool averaged = true;                   ///< unstable points were marched (not --steady-only)
   bool orbits = false;                    ///< shedding points as periodic orbits (NsMapOptions::orbits)
-  std::vector<NsMapPoint> points;  ///< the computed rows, row-major (row, then column)
+  std::vector<NsMapPoint> points;         ///< the computed rows, row-major (row, then column)
   int threads = 1;
   double total_s = 0.0;
   /// One spin ratio and several Reynolds numbers: the branch is continued in Re (each row starts from the
@@ -173,9 +167,9 @@ std::vector<int> shard_rows(int rows, int shard, int shards);
 /// is not navier-stokes, U = 0, unsorted α, Re ≤ 0, or a bad shard.
 NsMap ns_map(const Case& c, const NsMapOptions& o);
 
-/// How a map decides stability: the leading eigenvalues of the steady Jacobian (solver/ns_stability: shift-invert
-/// Arnoldi, exact for the discrete equations), or stability_by_marching (cheaper on coarse grids, can be
-/// undecided when the growth rate is within its margin of 0).
+/// How a map decides stability: the leading eigenvalues of the steady Jacobian (solver/ns_stability:
+/// shift-invert Arnoldi, exact for the discrete equations), or stability_by_marching (cheaper on coarse
+/// grids, can be undecided when the growth rate is within its margin of 0).
 enum class StabilityMethod { eigenvalues, march };
 
 /// The stability hook of a method: its verdict's stable is true, false, or empty when undecided or failed;

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "postproc/navier_stokes/stepper_verdict.hpp"
 #include "postproc/navier_stokes/run.hpp"
 
 namespace magnus {
@@ -25,23 +26,7 @@ struct AutoChoice {
 /// (Richardson); a checkpoint's state is solved on the case's grid alone. The result has one history sample.
 FlowResult steady_by_newton(const Case& c, const NsParams& p, const PolarGrid& g, const Checkpoint* resume);
 
-/// The time stepper's word on a steady state the eigenvalue search could not judge (it converged no
-/// eigenvalue): σ, the growth rate of a weak vortex added to it and marched kStepperSpan D/U_ref
-/// (marched_growth_rate); stable when σ < −kStepperMargin U_ref/D.
-struct StepperVerdict {
-  std::optional<double> sigma;  ///< U_ref/D; nullopt when the march failed
-  bool stable = false;
-  double seconds = 0.0;  ///< wall time of the march, s
-};
-/// D/U_ref. At Re 200, α 6 on the scene's grid the vortex's norm passes a transient bump that peaks near
-/// 28 D/U (+0.012 U/D over 15–30), then decays (−0.024 U/D over 30–60): the fit starts after it.
-constexpr double kStepperSpan = 60.0;
-constexpr double kStepperMargin = 2e-3;  ///< U_ref/D
-
-/// The verdict of the time stepper on `steady` (p's grid).
-StepperVerdict stepper_verdict(const NsParams& p, const NsState& steady);
-
-/// "by the time stepper, a weak vortex added to it decays at −0.024 U/D over 30–60 D/U" (or grows, or
+/// "by the time stepper, a weak vortex added to it decays at −0.0258 U/D over 30–60 D/U" (or grows, or
 /// neither, or the march failed): for the status line.
 std::string stepper_text(const StepperVerdict& v, const Scene& s);
 

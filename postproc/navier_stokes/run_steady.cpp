@@ -2,14 +2,12 @@
 // time.mode "auto" does before it would march (auto_plan, then Newton and the eigenvalue test).
 #include <fmt/core.h>
 
-#include <chrono>
 #include <cmath>
 #include <complex>
 #include <future>
 #include <stdexcept>
 #include <string>
 
-#include "postproc/navier_stokes/continuation.hpp"
 #include "postproc/navier_stokes/error_estimate.hpp"
 #include "postproc/navier_stokes/forces.hpp"
 #include "postproc/navier_stokes/grid_rule.hpp"
@@ -144,15 +142,6 @@ std::string eigenvalue_text(const StabilityResult& st, const Scene& s) {
 
 }  // namespace
 
-StepperVerdict stepper_verdict(const NsParams& p, const NsState& steady) {
-  const auto t0 = std::chrono::steady_clock::now();
-  StepperVerdict v;
-  v.sigma = marched_growth_rate(p, steady, kStepperSpan);
-  v.stable = v.sigma && *v.sigma < -kStepperMargin;
-  v.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return v;
-}
-
 std::string stepper_text(const StepperVerdict& v, const Scene& s) {
   if (!v.sigma) return "the time stepper's test failed: its march stopped";
   const char* how = *v.sigma < -kStepperMargin  ? "decays"
@@ -236,19 +225,14 @@ AutoChoice auto_steady(const Case& c, const NsParams& p, const PolarGrid& g, boo
     a.why = fmt::format("auto: marched in time (stability not computed: {}); ", e.what());
     return a;
   }
-  // Where the search converged nothing (Re 200, α 6 on R = 100a: slow far-field modes crowd 0), or called the
-  // state stable but left a gap right of its leading eigenvalue (Re 200, α 1.6 on the grid of α 1.9: the
-  // growing wake pair sat in it), the time stepper decides.
+  // Where the search converged nothing (slow far-field modes can crowd 0 on R = 100a), or called the state
+  // stable but left a gap right of its leading eigenvalue (Re 200, α 1.6 and α 6), the time stepper decides
+  // (checked_verdict); undecided or failed, it marches from rest.
   const bool found = !st.eigenvalues.empty();
   std::string said = found ? eigenvalue_text(st, c.scene) : "steady state found, " + st.message;
-  bool stable = found && st.stable;
-  if (!found || (st.stable && !st.covered)) {
-    const StepperVerdict v = stepper_verdict(p, nr.state);
-    st.seconds += v.seconds;
-    said += "; " + stepper_text(v, c.scene);
-    const bool grows = v.sigma && *v.sigma > kStepperMargin;
-    stable = found ? !grows : v.stable;
-  }
+  std::optional<StepperVerdict> asked;
+  const bool stable = checked_verdict(p, nr.state, st, &asked).value_or(false);
+  if (asked) st.seconds += asked->seconds, said += "; " + stepper_text(*asked, c.scene);
   a.stability_seconds = st.seconds;
   if (found && stable == st.stable) {  // the eigenvalue shown agrees with the verdict
     a.eigenvalue = st.eigenvalues.front();

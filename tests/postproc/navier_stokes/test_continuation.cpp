@@ -11,6 +11,7 @@
 #include "postproc/navier_stokes/forces.hpp"
 #include "postproc/navier_stokes/run.hpp"
 #include "postproc/navier_stokes/run_paths.hpp"
+#include "postproc/navier_stokes/stepper_verdict.hpp"
 #include "solver/navier_stokes/newton.hpp"
 #include "solver/navier_stokes/stability.hpp"
 
@@ -167,6 +168,38 @@ TEST_CASE("auto's time-stepper verdict: its growth rate is the leading eigenvalu
   }
   StepperVerdict failed;
   CHECK(stepper_text(failed, coarse_case(40.0).scene).find("failed") != std::string::npos);
+}
+
+TEST_CASE("a search's verdict stands where it can judge and the time stepper decides elsewhere",
+          "[continuation]") {
+  // checked_verdict, as auto and the map use it, on the coarse steady states of Re 40 (stable) and Re 100
+  // (the wake's pair grows), with the search's result made up: a decided verdict is taken as it is (the
+  // stepper not asked); a "stable" with a gap right of it falls when the vortex grows; an empty search
+  // takes the stepper's verdict.
+  for (auto [re, decays] : {std::tuple{40.0, true}, std::tuple{100.0, false}}) {
+    INFO("Re " << re);
+    const NsParams p = ns_params(map_point_case(coarse_case(re), re, 0.0));
+    const NewtonResult r = solve_steady(p, potential_guess(p, ns_grid(p)));
+    REQUIRE(r.converged);
+    StabilityResult st;
+    st.eigenvalues = {{-0.01, 0.5}};
+    st.stable = true, st.covered = true;
+    std::optional<StepperVerdict> asked;
+    CHECK(checked_verdict(p, r.state, st, &asked) == std::optional<bool>(true));
+    st.eigenvalues = {{0.01, 0.5}};
+    st.stable = false, st.covered = false;
+    CHECK(checked_verdict(p, r.state, st, &asked) == std::optional<bool>(false));
+    CHECK_FALSE(asked);  // both decided by the search alone
+    st.eigenvalues = {{-0.01, 0.5}};
+    st.stable = true;  // a gapped "stable"
+    CHECK(checked_verdict(p, r.state, st, &asked) == std::optional<bool>(decays));
+    REQUIRE(asked);
+    CHECK(asked->stable == decays);
+    st.eigenvalues.clear();  // nothing converged
+    asked.reset();
+    CHECK(checked_verdict(p, r.state, st, &asked) == std::optional<bool>(decays));
+    CHECK(asked);
+  }
 }
 
 TEST_CASE("the eigenvalue test finds the slow one-sided shedding near α = 5 (Re 150, map grid)",
