@@ -62,11 +62,7 @@ std::vector<int> shard_rows(int rows, int shard, int shards) {
 
 std::optional<bool> stability_by_marching(const NsParams& p, const NsState& steady, double span,
                                           double margin) {
-  const std::optional<double> sigma = marched_growth_rate(p, steady, span);
-  if (!sigma) return std::nullopt;
-  if (*sigma < -margin) return true;
-  if (*sigma > margin) return false;
-  return std::nullopt;
+  return sign_verdict(marched_growth_rate(p, steady, span), margin);
 }
 
 StabilityHook make_stability_hook(StabilityMethod m) {

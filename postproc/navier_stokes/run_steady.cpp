@@ -144,9 +144,8 @@ std::string eigenvalue_text(const StabilityResult& st, const Scene& s) {
 
 std::string stepper_text(const StepperVerdict& v, const Scene& s) {
   if (!v.sigma) return "the time stepper's test failed: its march stopped";
-  const char* how = *v.sigma < -kStepperMargin  ? "decays"
-                    : *v.sigma > kStepperMargin ? "grows"
-                                                : "neither decays nor grows";
+  const std::optional<bool> stable = sign_verdict(v.sigma, kStepperMargin);
+  const char* how = !stable ? "neither decays nor grows" : *stable ? "decays" : "grows";
   return fmt::format("by the time stepper, a weak vortex added to it {} at {:.3g} {} over {:g}–{:g} {}", how,
                      *v.sigma, rate_unit_name(s), 0.5 * kStepperSpan, kStepperSpan, time_unit_name(s));
 }

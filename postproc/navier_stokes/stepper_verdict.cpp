@@ -9,12 +9,21 @@
 
 namespace magnus {
 
+void add_weak_vortex(const NsParams& p, NsState& s) {
+  add_vortex_blob(ns_grid(p), s, 3.0 * p.a, 0.6 * p.a, 0.5 * p.a, 1e-4 * stability_speed(p) * 2.0 * p.a);
+}
+
+std::optional<bool> sign_verdict(std::optional<double> sigma, double margin) {
+  if (!sigma || std::fabs(*sigma) <= margin) return std::nullopt;
+  return *sigma < 0.0;
+}
+
 std::optional<double> marched_growth_rate(const NsParams& p, const NsState& steady, double span) {
   const PolarGrid g = ns_grid(p);
   NsState s = steady;
   s.t = 0.0, s.N_prev.clear(), s.dt_prev = 0.0, s.Gamma_flux_prev = 0.0;
-  const double D = 2.0 * p.a, U_ref = p.U > 0.0 ? p.U : p.a * std::fabs(p.omega), unit = D / U_ref;
-  add_vortex_blob(g, s, 3.0 * p.a, 0.6 * p.a, 0.5 * p.a, 1e-4 * U_ref * D);
+  const double unit = 2.0 * p.a / stability_speed(p);  // D/U_ref
+  add_weak_vortex(p, s);
   const size_t n = s.zeta.size();
   // Least-squares slope of ln‖ζ − ζ_s‖ (the wall ring left out) over the second half of the march.
   double st = 0.0, sy = 0.0, stt = 0.0, sty = 0.0;
@@ -50,7 +59,6 @@ StepperVerdict stepper_verdict(const NsParams& p, const NsState& steady) {
   const auto t0 = std::chrono::steady_clock::now();
   StepperVerdict v;
   v.sigma = marched_growth_rate(p, steady, kStepperSpan);
-  v.stable = v.sigma && *v.sigma < -kStepperMargin;
   v.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return v;
 }
@@ -61,11 +69,9 @@ std::optional<bool> checked_verdict(const NsParams& p, const NsState& steady, co
   if (found && (!st.stable || st.covered)) return st.stable;
   const StepperVerdict v = stepper_verdict(p, steady);
   if (asked) *asked = v;
-  const bool grows = v.sigma && *v.sigma > kStepperMargin;
-  if (found) return !grows;  // a gapped "stable"
-  if (v.stable) return true;
-  if (grows) return false;
-  return std::nullopt;
+  const std::optional<bool> said = sign_verdict(v.sigma, kStepperMargin);
+  if (found) return said != std::optional<bool>(false);  // a gapped "stable" falls only if the vortex grows
+  return said;
 }
 
 }  // namespace magnus

@@ -155,7 +155,7 @@ TEST_CASE("auto's time-stepper verdict: its growth rate is the leading eigenvalu
     REQUIRE(r.converged);
     const StepperVerdict v = stepper_verdict(p, r.state);
     REQUIRE(v.sigma);
-    CHECK(v.stable == expect);
+    CHECK(sign_verdict(v.sigma, kStepperMargin) == std::optional<bool>(expect));
     CHECK(std::fabs(*v.sigma) > kStepperMargin);
     const std::string text = stepper_text(v, c.scene);
     INFO(text);
@@ -194,12 +194,18 @@ TEST_CASE("a search's verdict stands where it can judge and the time stepper dec
     st.stable = true;  // a gapped "stable"
     CHECK(checked_verdict(p, r.state, st, &asked) == std::optional<bool>(decays));
     REQUIRE(asked);
-    CHECK(asked->stable == decays);
+    CHECK(sign_verdict(asked->sigma, kStepperMargin) == std::optional<bool>(decays));
     st.eigenvalues.clear();  // nothing converged
     asked.reset();
     CHECK(checked_verdict(p, r.state, st, &asked) == std::optional<bool>(decays));
     CHECK(asked);
   }
+  // The verdict of a rate: a margin either side of 0 is undecided, as is no rate.
+  CHECK(sign_verdict(-0.003, 0.002) == std::optional<bool>(true));
+  CHECK(sign_verdict(0.003, 0.002) == std::optional<bool>(false));
+  CHECK_FALSE(sign_verdict(0.002, 0.002));
+  CHECK_FALSE(sign_verdict(-0.001, 0.002));
+  CHECK_FALSE(sign_verdict(std::nullopt, 0.002));
 }
 
 TEST_CASE("the eigenvalue test finds the slow one-sided shedding near α = 5 (Re 150, map grid)",
