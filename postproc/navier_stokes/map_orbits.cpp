@@ -44,11 +44,13 @@ std::optional<FoundOrbit> continued(const NsParams& p, OrbitResult near, const N
   FoundOrbit f;
   const double rate = step_rate(p, ns_grid(p), near.state);
   oo.steps = rate > 0.0 ? std::max(8, int(std::ceil(near.T * rate / p.cfl))) : near.steps;
+  OrbitPeriod last;
+  keep_last_period(p, rho, oo, last);
   for (int attempt = 0;; ++attempt) {
     try {
       f.orbit = continue_orbit(p, near, oo);
       if (!f.orbit.converged) return std::nullopt;
-      f.summary = orbit_summary(p, f.orbit, rho);
+      f.summary = orbit_summary(p, f.orbit, rho, &last);
       break;
     } catch (const CflExceeded&) {
       if (attempt == 3) return std::nullopt;
@@ -57,8 +59,8 @@ std::optional<FoundOrbit> continued(const NsParams& p, OrbitResult near, const N
       return std::nullopt;
     }
   }
-  if (!orbit_sheds(f.summary)) return std::nullopt;  // Newton found the steady state
-  f.periods = double(f.orbit.time_steps + f.orbit.steps) / f.orbit.steps;
+  if (!orbit_sheds(f.summary)) return std::nullopt;        // Newton found the steady state
+  f.periods = double(f.orbit.time_steps) / f.orbit.steps;  // the summary's period is the solve's last
   return f;
 }
 

@@ -87,17 +87,34 @@ void periodic_extremes(const std::vector<double>& y, double& lo, double& hi) {
   lo = std::min(y[kmin], vertex(kmin));
 }
 
-UnsteadyResult orbit_summary(const NsParams& p, const OrbitResult& orbit, double rho) {
+void keep_last_period(const NsParams& p, double rho, OrbitOptions& o, OrbitPeriod& period) {
+  o.on_residual_step = [g = ns_grid(p), &p, rho, &period](int k, int N, const NsState& s) {
+    if (k == 0) period.history.clear();
+    period.history.push_back(force_sample(s.t, viscous_forces(g, p, rho, s)));
+    if (k == N) period.end = s;
+  };
+}
+
+UnsteadyResult orbit_summary(const NsParams& p, const OrbitResult& orbit, double rho,
+                             const OrbitPeriod* period) {
   UnsteadyResult r;
-  const PolarGrid g = ns_grid(p);
-  const NsOperator op(p, orbit.T / orbit.steps);
-  auto sample = [&](const NsState& s) { r.history.push_back(force_sample(s.t, viscous_forces(g, p, rho, s))); };
-  NsState at0 = orbit.state;
-  at0.t = 0.0;
-  sample(at0);
-  r.state = period_map(op, at0, orbit.steps, sample);
+  if (period && period->history.size() == size_t(orbit.steps) + 1) {
+    r.history = period->history;
+    r.state = period->end;
+  } else {
+    const PolarGrid g = ns_grid(p);
+    const NsOperator op(p, orbit.T / orbit.steps);
+    auto sample = [&](const NsState& s) {
+      r.history.push_back(force_sample(s.t, viscous_forces(g, p, rho, s)));
+    };
+    NsState at0 = orbit.state;
+    at0.t = 0.0;
+    sample(at0);
+    r.state = period_map(op, at0, orbit.steps, sample);
+  }
   std::vector<double> L, Dc, M, Cm;
-  for (const ForceSample& s : r.history) L.push_back(s.C_L), Dc.push_back(s.C_D), M.push_back(s.M), Cm.push_back(s.C_M);
+  for (const ForceSample& s : r.history)
+    L.push_back(s.C_L), Dc.push_back(s.C_D), M.push_back(s.M), Cm.push_back(s.C_M);
   r.C_L_mean = trapezoid_mean(L), r.C_D_mean = trapezoid_mean(Dc), r.C_M_mean = trapezoid_mean(Cm);
   r.M_mean = trapezoid_mean(M);
   L.pop_back(), Dc.pop_back();  // one period: the last sample is the first again
@@ -112,7 +129,7 @@ UnsteadyResult orbit_summary(const NsParams& p, const OrbitResult& orbit, double
   r.St = p.U > 0.0 ? 2.0 * p.a / (p.U * orbit.T) : 0.0;
   r.periodic = true;
   r.converged = orbit.converged;
-  r.dt = op.dt();
+  r.dt = orbit.T / orbit.steps;
   r.steps = orbit.steps;
   return r;
 }
@@ -156,10 +173,13 @@ OrbitRun periodic_orbit_run(const NsParams& p, const OrbitRunOptions& o, NsState
   check_short_march(m, t_conv);
   OrbitOptions oo = o.orbit;
   if (oo.steps <= 0) oo.steps = int(std::ceil(m.period / m.dt));
+  OrbitPeriod last;
+  keep_last_period(p, o.rho, oo, last);
   run.orbit = solve_periodic_orbit(p, m.state, m.period, oo);
-  run.result = orbit_summary(p, run.orbit, o.rho);
+  run.result = orbit_summary(p, run.orbit, o.rho, &last);
   check_sheds(run.result);
-  run.result.steps = m.steps + run.orbit.time_steps + run.orbit.steps;
+  const bool kept = last.history.size() == size_t(run.orbit.steps) + 1;  // else the summary stepped a period
+  run.result.steps = m.steps + run.orbit.time_steps + (kept ? 0 : run.orbit.steps);
   run.result.times = m.times;
   run.result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock0).count();
   run.result.steps_per_second =

@@ -38,7 +38,8 @@ struct OrbitRun {
   /// One period of the orbit: state = the orbit's state at t = 0; history: its N + 1 samples over [0, T];
   /// means over the period (the trapezoidal rule, exact for the periodic samples), amplitudes (max − min)/2
   /// with each extreme refined by the parabola through its sample and the two beside it; period = T,
-  /// St = D/(U T); steps and wall_seconds of the whole (march + orbit + this period); converged = the orbit's.
+  /// St = D/(U T); steps and wall_seconds of the whole (march + orbit: the period summarised is the solve's
+  /// last, kept by keep_last_period); converged = the orbit's.
   UnsteadyResult result;
 };
 
@@ -73,9 +74,22 @@ NsState hopf_start(const NsState& steady, const std::vector<std::complex<double>
                    const std::vector<std::complex<double>>& mode_zeta, std::complex<double> mode_Gamma_R,
                    double size = kHopfStartSize);
 
+/// One period of an orbit as its solve stepped it last: the forces at its N + 1 states (t = 0 … T) and its
+/// end state. The solve's last period is that of the state it returns, so its summary needs no more steps.
+struct OrbitPeriod {
+  std::vector<ForceSample> history;
+  NsState end;
+};
+
+/// Sets o.on_residual_step so that `period` holds the last period the solve steps, its forces with density
+/// rho (kg/m³) on p's grid. `period` must outlive the solve.
+void keep_last_period(const NsParams& p, double rho, OrbitOptions& o, OrbitPeriod& period);
+
 /// The summary of one period of a converged orbit in the march's terms (OrbitRun::result without the steps
-/// and seconds of the march and the solve).
-UnsteadyResult orbit_summary(const NsParams& p, const OrbitResult& orbit, double rho);
+/// and seconds of the march and the solve): from `period` when it holds the orbit's N + 1 samples
+/// (keep_last_period), else from one more period of steps.
+UnsteadyResult orbit_summary(const NsParams& p, const OrbitResult& orbit, double rho,
+                             const OrbitPeriod* period = nullptr);
 
 /// The orbit as the base of a Floquet analysis: its Fourier series with K harmonics, summed over its own N
 /// steps of one period (t = nT/N, n = 0…N−1) without keeping the states.

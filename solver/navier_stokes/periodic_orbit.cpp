@@ -32,20 +32,26 @@ struct Shooting {
   int N;
   size_t n;
   StateVector c;
-  const std::function<bool(const NsState&)>& on_period;
+  const OrbitOptions& o;
   long steps = 0;
 
   std::vector<double> pack(const NsState& s) const { return c.pack(s); }
   NsState unpack(const std::vector<double>& x, double dt) const { return c.unpack(x, dt); }
-  /// Φ_T(x) on op (Δt = T/N), scaled; first (if given): the unknowns after the first step.
-  std::vector<double> map(const NsOperator& op, const std::vector<double>& x, std::vector<double>* first) {
-    bool at_first = true;
-    const NsState end = period_map(op, unpack(x, op.dt()), N, [&](const NsState& s) {
-      if (first && at_first) *first = pack(s);
-      at_first = false;
+  /// Φ_T(x) on op (Δt = T/N), scaled. A residual's period (residual = true) also keeps the unknowns after
+  /// the first step in *first and reports its states to o.on_residual_step.
+  std::vector<double> map(const NsOperator& op, const std::vector<double>& x, bool residual = false,
+                          std::vector<double>* first = nullptr) {
+    const NsState start = unpack(x, op.dt());
+    const bool report = residual && o.on_residual_step;
+    if (report) o.on_residual_step(0, N, start);
+    int k = 0;
+    const NsState end = period_map(op, start, N, [&](const NsState& s) {
+      ++k;
+      if (residual && k == 1 && first) *first = pack(s);
+      if (report) o.on_residual_step(k, N, s);
     });
     steps += N;
-    if (on_period && !on_period(end))
+    if (o.on_period && !o.on_period(end))
       throw std::runtime_error("interrupted during the Newton solve of the periodic orbit: no result");
     return pack(end);
   }
@@ -76,7 +82,7 @@ NewtonStep newton_step(Shooting& sh, const NsOperator& op, const std::vector<dou
   for (double& v : xdot) v /= xdot_norm > 0.0 ? xdot_norm : 1.0;
   const double dT_fd = 1e-6 * T;  // ∂Φ/∂T per scaled time, from one more period at Δt = (T + δT)/N
   const NsOperator op_T(sh.p, (T + dT_fd) / sh.N);
-  std::vector<double> dPhi = sh.map(op_T, x, nullptr);
+  std::vector<double> dPhi = sh.map(op_T, x);
   for (size_t i = 0; i < m; ++i) dPhi[i] = (dPhi[i] - y[i]) / (dT_fd * sh.c.time);
   const double x_norm = norm2(x);
   auto apply = [&](const std::vector<double>& v, std::vector<double>& out) {
@@ -87,7 +93,7 @@ NewtonStep newton_step(Shooting& sh, const NsOperator& op, const std::vector<dou
       const double eps = 1e-8 * (1.0 + x_norm) / v_norm;
       std::vector<double> xp(m);
       for (size_t i = 0; i < m; ++i) xp[i] = x[i] + eps * vx[i];
-      const std::vector<double> yp = sh.map(op, xp, nullptr);
+      const std::vector<double> yp = sh.map(op, xp);
       for (size_t i = 0; i < m; ++i) out[i] = (yp[i] - y[i]) / eps - vx[i];
     }
     for (size_t i = 0; i < m; ++i) out[i] += dPhi[i] * vT;
@@ -115,10 +121,11 @@ OrbitResult solve_periodic_orbit(const NsParams& p, const NsState& start, double
   const PolarGrid g = ns_grid(p);
   const size_t n = size_t(g.n_r) * size_t(g.n_theta);
   if (o.steps <= 0) throw std::invalid_argument("solve_periodic_orbit: needs N > 0 time steps per period");
-  if (!(T0 > 0.0) || !std::isfinite(T0)) throw std::invalid_argument("solve_periodic_orbit: needs a period > 0");
+  if (!(T0 > 0.0) || !std::isfinite(T0))
+    throw std::invalid_argument("solve_periodic_orbit: needs a period > 0");
   if (start.zeta.size() != n || start.psi.size() != n)
     throw std::invalid_argument("solve_periodic_orbit: the state does not match the grid");
-  Shooting sh{p, o.steps, n, StateVector(p, n), o.on_period};
+  Shooting sh{p, o.steps, n, StateVector(p, n), o};
   OrbitResult res;
   res.steps = o.steps;
   std::vector<double> x = sh.pack(start), x_old, first;
@@ -126,7 +133,7 @@ OrbitResult solve_periodic_orbit(const NsParams& p, const NsState& start, double
   NewtonStep step;
   for (int k = 0;;) {
     auto op = std::make_unique<NsOperator>(p, T / o.steps);
-    const std::vector<double> y = sh.map(*op, x, &first);
+    const std::vector<double> y = sh.map(*op, x, true, &first);
     const double rho = sh.residual(y, x);
     if (k > 0 && !(rho < rho_old) && lambda > 0.125) {  // backtrack: half the step
       lambda *= 0.5;

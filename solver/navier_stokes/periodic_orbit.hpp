@@ -9,9 +9,13 @@
 //     [ ẋ₀ᵀ       0   ] [δT] = [  0 ],      M = ∂Φ_T/∂x (the monodromy matrix),
 // by GMRES (solver/gmres.hpp) whose products M v are finite differences of the time stepper,
 // (Φ_T(x + εv) − Φ_T(x))/ε: one period of time steps per product. ∂Φ/∂T is one more period on an operator
-// of Δt = (T + δT)/N. The unknowns are scaled by D and U (ζ by D/U, ψ by 1/(UD), N by 1/U², Γ_R by 1/(UD),
-// its rate by 1/U², T by U/D) so that one ε suits every block. The fixed point is the scheme's own
-// periodic orbit at Δt = T/N: the state a long march tends to, to the time error of Δt alone.
+// of Δt = (T + δT)/N. (The flow at the period's end, f(Φ_T(x)), one step instead of a period, is not it:
+// with N fixed a longer T is a longer Δt, and the change that makes to the scheme's own orbit, of the order
+// of its time error, the flow leaves out. Tried, it turned Newton's quadratic convergence linear, a factor
+// of 60 a step, and cost more periods than it saved.) The unknowns are scaled by D and U (ζ by D/U, ψ by
+// 1/(UD), N by 1/U², Γ_R by 1/(UD), its rate by 1/U², T by U/D) so that one ε suits every block. The fixed
+// point is the scheme's own periodic orbit at Δt = T/N: the state a long march tends to, to the time error
+// of Δt alone.
 #include <functional>
 #include <string>
 #include <vector>
@@ -42,6 +46,10 @@ struct OrbitOptions {
   /// After each period of time steps (every GMRES product), with its last state; false stops the solve
   /// (std::runtime_error: Ctrl-C). May be empty.
   std::function<bool(const NsState&)> on_period;
+  /// Each state of each period whose residual is taken (not the GMRES products): k = 0 its start (t = 0),
+  /// then k = 1 … N after each step. The last period reported is that of the returned state, so a caller
+  /// may keep its samples instead of stepping the orbit once more (orbit.hpp). May be empty.
+  std::function<void(int k, int N, const NsState&)> on_residual_step;
 };
 
 /// What the orbit solve reached.

@@ -102,6 +102,37 @@ TEST_CASE("orbit: Re 60, alpha 0, n_theta 64, R 100a: the orbit by shooting is t
   check_orbit_against_march(shedding_flow(60.0, 0.0, 64, 100.0), 3000.0);
 }
 
+TEST_CASE("orbit: the summary from the solve's last period is one more period of steps, bit for bit",
+          "[periodic_orbit]") {
+  // The run keeps the forces of the last period the Newton solve stepped (that of the state it returns);
+  // stepping the returned state once more gives the same samples, so the same summary to the last bit, and
+  // the run's step count leaves that period out.
+  const NsParams p = shedding_flow(100.0, 1.0, 64, 30.0);
+  OrbitRunOptions o;
+  o.t_end = 300.0;
+  o.orbit.tol = 1e-9;
+  const OrbitRun run = periodic_orbit_run(p, o, broken_start(p));
+  REQUIRE(run.orbit.converged);
+  const UnsteadyResult stepped = orbit_summary(p, run.orbit, o.rho);
+  const UnsteadyResult& kept = run.result;
+  REQUIRE(kept.history.size() == size_t(run.orbit.steps) + 1);
+  REQUIRE(stepped.history.size() == kept.history.size());
+  for (size_t k = 0; k < kept.history.size(); ++k) {
+    CHECK(kept.history[k].t == stepped.history[k].t);
+    CHECK(kept.history[k].C_L == stepped.history[k].C_L);
+    CHECK(kept.history[k].C_D == stepped.history[k].C_D);
+  }
+  CHECK(kept.C_L_mean == stepped.C_L_mean);
+  CHECK(kept.C_D_mean == stepped.C_D_mean);
+  CHECK(kept.C_L_amplitude == stepped.C_L_amplitude);
+  CHECK(kept.St == stepped.St);
+  CHECK(kept.dt == stepped.dt);
+  CHECK(kept.state.t == stepped.state.t);
+  CHECK(kept.state.zeta == stepped.state.zeta);
+  CHECK(kept.state.psi == stepped.state.psi);
+  CHECK(kept.steps == run.march.steps + run.orbit.time_steps);
+}
+
 TEST_CASE("orbit: a flow that does not shed (Re 40) is refused in one line", "[periodic_orbit]") {
   OrbitRunOptions o;
   o.t_end = 200.0;
