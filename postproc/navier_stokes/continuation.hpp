@@ -103,7 +103,8 @@ struct NsMapPoint {
   double regime;
   double seconds = 0.0;  ///< wall time of this point (steady, stability, averaging)
   /// An orbit point only (not written to the map's files): how its orbit started ("continued", "hopf mode",
-  /// "rest") and the periods of time steps it cost (short march, Newton's GMRES products, the summary).
+  /// "rest") and the periods of time steps it cost (short march, Newton's residuals and GMRES products; the
+  /// summary reuses the last residual's period).
   std::string orbit_start;
   double orbit_periods = 0.0;
 };

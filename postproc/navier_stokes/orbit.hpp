@@ -35,10 +35,10 @@ struct OrbitRunOptions {
 struct OrbitRun {
   UnsteadyResult march;   ///< the short march from the start
   OrbitResult orbit;      ///< the Newton–GMRES solve
-  /// One period of the orbit: state = the orbit's state at t = 0; history: its N + 1 samples over [0, T];
-  /// means over the period (the trapezoidal rule, exact for the periodic samples), amplitudes (max − min)/2
-  /// with each extreme refined by the parabola through its sample and the two beside it; period = T,
-  /// St = D/(U T); steps and wall_seconds of the whole (march + orbit: the period summarised is the solve's
+  /// One period of the orbit: state = its state after the period (t = T); history: its N + 1 samples over
+  /// [0, T]; means over the period (the trapezoidal rule, exact for the periodic samples), amplitudes
+  /// (max − min)/2 with each extreme refined by the parabola through its sample and the two beside it;
+  /// period = T, St = D/(U T); steps and wall_seconds of the whole (march + orbit: the period summarised is the solve's
   /// last, kept by keep_last_period); converged = the orbit's.
   UnsteadyResult result;
 };

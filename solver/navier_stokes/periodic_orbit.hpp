@@ -60,7 +60,7 @@ struct OrbitResult {
   bool converged = false;             ///< residual ≤ tol
   double residual = 0.0;              ///< the last residual (OrbitIterate::residual)
   std::vector<OrbitIterate> history;  ///< every iterate, the start first
-  long time_steps = 0;                ///< time steps taken in all (periods × N, and the ẋ₀ steps)
+  long time_steps = 0;                ///< time steps taken in all: periods × N (ẋ₀ is a residual's first step)
   int krylov_total = 0;               ///< GMRES products in all
   std::string message;                ///< why it stopped
 };
