@@ -99,18 +99,18 @@ class RealLu {
 /// The linear stepper over one period (floquet.hpp's scheme): J0's pressure enters at the half step only.
 struct PeriodMap {
   const EigenProblem& J0;
-  const std::vector<EigenProblem>& B;  ///< cos and sin parts of harmonic k at 2(k − 1) and 2(k − 1) + 1
-  const RealLu& lu;                    ///< of J0 with its pressure columns doubled, less (2/Δt)M
+  const HarmonicSum& B;  ///< cos and sin parts of harmonic k at 2(k − 1) and 2(k − 1) + 1
+  const RealLu& lu;      ///< of J0 with its pressure columns doubled, less (2/Δt)M
   double T, dt;
   int steps;
   /// B(t) x = Σ_k cos(kωt) B_k^c x + sin(kωt) B_k^s x into y.
   void periodic_part(double t, const std::vector<double>& x, std::vector<double>& y) const {
-    std::fill(y.begin(), y.end(), 0.0);
-    for (size_t k = 0; 2 * k < B.size(); ++k) {
+    std::vector<double> c(B.H);
+    for (size_t k = 0; 2 * k < B.H; ++k) {
       const double w = 2.0 * M_PI * double(k + 1) / T;
-      B[2 * k].multiply_add(x, std::cos(w * t), y);
-      B[2 * k + 1].multiply_add(x, std::sin(w * t), y);
+      c[2 * k] = std::cos(w * t), c[2 * k + 1] = std::sin(w * t);
     }
+    B.apply(c.data(), x, y);
   }
   std::vector<double> operator()(std::vector<double> x) const {
     const size_t n = x.size();
@@ -213,6 +213,39 @@ double PeriodicBase::truncation() const {
   return last / std::max(1e-300, norm2(cos_part.front().zeta) + norm2(sin_part.front().zeta));
 }
 
+HarmonicSum::HarmonicSum(const std::vector<EigenProblem>& B) : n(B.empty() ? 0 : B.front().n), H(B.size()) {
+  Ap.assign(size_t(n) + 1, 0);
+  std::vector<long> slot(size_t(n), -1);  // a row's entry in the current column
+  for (long c = 0; c < n; ++c) {
+    const size_t first = Ai.size();
+    for (size_t h = 0; h < H; ++h)
+      for (long t = B[h].Ap[size_t(c)]; t < B[h].Ap[size_t(c) + 1]; ++t) {
+        const long r = B[h].Ai[size_t(t)];
+        if (slot[size_t(r)] < long(first)) {
+          slot[size_t(r)] = long(Ai.size());
+          Ai.push_back(r);
+          V.resize(V.size() + H, 0.0);
+        }
+        V[size_t(slot[size_t(r)]) * H + h] = B[h].Ax[size_t(t)];
+      }
+    Ap[size_t(c) + 1] = long(Ai.size());
+  }
+}
+
+void HarmonicSum::apply(const double* c, const std::vector<double>& x, std::vector<double>& y) const {
+  std::fill(y.begin(), y.end(), 0.0);
+  for (long col = 0; col < n; ++col) {
+    const double xc = x[size_t(col)];
+    if (xc == 0.0) continue;
+    for (long t = Ap[size_t(col)]; t < Ap[size_t(col) + 1]; ++t) {
+      const double* v = &V[size_t(t) * H];
+      double a = 0.0;
+      for (size_t h = 0; h < H; ++h) a += c[h] * v[h];
+      y[size_t(Ai[size_t(t)])] += a * xc;
+    }
+  }
+}
+
 FloquetResult floquet_multipliers(const NsParams& p, const PeriodicBase& base, double beta, const FloquetOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   const double T = base.T;
@@ -243,7 +276,9 @@ FloquetResult floquet_multipliers(const NsParams& p, const PeriodicBase& base, d
     }
   const double dt = T / res.steps;
   const RealLu lu(half_step_pressure(J0), 2.0 / dt);
-  const PeriodMap P{J0, B, lu, T, dt, res.steps};
+  const HarmonicSum harmonics(B);
+  std::vector<EigenProblem>().swap(B);  // held once, in harmonics
+  const PeriodMap P{J0, harmonics, lu, T, dt, res.steps};
 
   arnoldi(P, o, size_t(J0.n), res);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "solver/navier_stokes/operator.hpp"
+#include "solver/navier_stokes/shift_invert.hpp"
 
 namespace magnus {
 
@@ -93,6 +94,21 @@ struct FloquetResult {
   double truncation = 0.0;        ///< the base's PeriodicBase::truncation
   double seconds = 0.0;           ///< wall time, s
   std::vector<double> mode;       ///< the leading multiplier's Ritz vector at phase 0 (its real part)
+};
+
+/// The periodic part of the Floquet operator, B(t) = Σ_h c_h(t) B_h (the harmonics' cos and sin parts), its
+/// H matrices on the union of their patterns with each entry's H values side by side: B(t)x in one pass over
+/// the entries, x and y touched once instead of H times (the stepper's every step; the matrices are
+/// dimensionless like EigenProblem's).
+struct HarmonicSum {
+  long n = 0;
+  size_t H = 0;
+  std::vector<long> Ap, Ai;  ///< compressed columns of the union pattern
+  std::vector<double> V;     ///< [entry][h]: B_h's value there (0 where B_h has none)
+  /// The sum of B (all of size n; at least one).
+  explicit HarmonicSum(const std::vector<EigenProblem>& B);
+  /// y = Σ_h c[h]·B_h x (c: H coefficients; y resized by the caller to n).
+  void apply(const double* c, const std::vector<double>& x, std::vector<double>& y) const;
 };
 
 /// The leading Floquet multipliers at spanwise wavenumber β (1/m, ≥ 0) of the periodic base (states on

@@ -1,5 +1,6 @@
 // Floquet stability of shedding orbits to spanwise disturbances (solver/navier_stokes/floquet.hpp).
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 
 #include "postproc/navier_stokes/orbit.hpp"
@@ -77,6 +78,44 @@ TEST_CASE("[ns][floquet] a steady base: the period map is e^{lambda T}, to secon
   CHECK(w.periods == warm.count + 3);  // the start's period and count + 2 vectors
   CHECK(cold.periods == FloquetOptions{}.krylov + 1);  // no tolerance: every vector
   CHECK(std::abs(std::abs(w.multipliers[0]) - std::abs(cold.multipliers[0])) < 1e-6);
+}
+
+TEST_CASE("[ns][floquet] the harmonics summed on their union pattern give the sum of their products",
+          "[ns][floquet]") {
+  // Three sparse matrices with patterns that overlap in part (and an empty column): the stepper's one-pass
+  // sum Σ c_h B_h x against the matrices applied one by one, and the union pattern holds each row once.
+  const long n = 40;
+  std::vector<EigenProblem> B(3);
+  unsigned seed = 12345;
+  auto next = [&seed] { return (seed = seed * 1103515245u + 12345u) / 65536u % 32768u; };
+  for (size_t h = 0; h < B.size(); ++h) {
+    B[h].n = n;
+    B[h].Ap.assign(size_t(n) + 1, 0);
+    for (long c = 0; c < n; ++c) {
+      for (long r = 0; r < n && c != 7; ++r)
+        if ((r + c + long(h)) % 5 == 0 || next() % 11 == 0)
+          B[h].Ai.push_back(r), B[h].Ax.push_back(double(next()) / 16384.0 - 1.0);
+      B[h].Ap[size_t(c) + 1] = long(B[h].Ai.size());
+    }
+  }
+  const HarmonicSum sum(B);
+  REQUIRE(sum.H == 3);
+  for (long c = 0; c < n; ++c) {
+    std::vector<long> rows(sum.Ai.begin() + sum.Ap[size_t(c)], sum.Ai.begin() + sum.Ap[size_t(c) + 1]);
+    std::sort(rows.begin(), rows.end());
+    CHECK(std::adjacent_find(rows.begin(), rows.end()) == rows.end());
+  }
+  const size_t nn = static_cast<size_t>(n);
+  std::vector<double> x(nn), y(nn), ref(nn, 0.0);
+  for (double& v : x) v = double(next()) / 16384.0 - 1.0;
+  const double c[3] = {0.7, -1.3, 0.25};
+  for (size_t h = 0; h < B.size(); ++h) B[h].multiply_add(x, c[h], ref);
+  sum.apply(c, x, y);
+  double err = 0.0, scale = 0.0;
+  for (size_t q = 0; q < nn; ++q)
+    err = std::max(err, std::fabs(y[q] - ref[q])), scale = std::max(scale, std::fabs(ref[q]));
+  CHECK(scale > 1.0);
+  CHECK(err < 1e-14 * scale);
 }
 
 TEST_CASE("[ns][floquet] canonical_phase: every shift of an orbit lands on one phase", "[ns][floquet]") {
