@@ -230,6 +230,7 @@ HarmonicSum::HarmonicSum(const std::vector<EigenProblem>& B) : n(B.empty() ? 0 :
       }
     Ap[size_t(c) + 1] = long(Ai.size());
   }
+  Ai.shrink_to_fit(), V.shrink_to_fit();  // held for the whole Arnoldi run: no spare capacity
 }
 
 void HarmonicSum::apply(const double* c, const std::vector<double>& x, std::vector<double>& y) const {
