@@ -59,8 +59,8 @@ std::optional<FoundOrbit> continued(const NsParams& p, OrbitResult near, const N
       return std::nullopt;
     }
   }
-  if (!orbit_sheds(f.summary)) return std::nullopt;        // Newton found the steady state
-  f.periods = double(f.orbit.time_steps) / f.orbit.steps;  // the summary's period is the solve's last
+  if (!orbit_sheds(f.summary)) return std::nullopt;  // Newton found the steady state
+  f.periods = double(f.orbit.time_steps + f.summary.steps) / f.orbit.steps;
   return f;
 }
 

@@ -101,6 +101,7 @@ UnsteadyResult orbit_summary(const NsParams& p, const OrbitResult& orbit, double
   if (period && period->history.size() == size_t(orbit.steps) + 1) {
     r.history = period->history;
     r.state = period->end;
+    r.steps = 0;
   } else {
     const PolarGrid g = ns_grid(p);
     const NsOperator op(p, orbit.T / orbit.steps);
@@ -111,6 +112,7 @@ UnsteadyResult orbit_summary(const NsParams& p, const OrbitResult& orbit, double
     at0.t = 0.0;
     sample(at0);
     r.state = period_map(op, at0, orbit.steps, sample);
+    r.steps = orbit.steps;
   }
   std::vector<double> L, Dc, M, Cm;
   for (const ForceSample& s : r.history)
@@ -130,7 +132,6 @@ UnsteadyResult orbit_summary(const NsParams& p, const OrbitResult& orbit, double
   r.periodic = true;
   r.converged = orbit.converged;
   r.dt = orbit.T / orbit.steps;
-  r.steps = orbit.steps;
   return r;
 }
 
@@ -178,8 +179,7 @@ OrbitRun periodic_orbit_run(const NsParams& p, const OrbitRunOptions& o, NsState
   run.orbit = solve_periodic_orbit(p, m.state, m.period, oo);
   run.result = orbit_summary(p, run.orbit, o.rho, &last);
   check_sheds(run.result);
-  const bool kept = last.history.size() == size_t(run.orbit.steps) + 1;  // else the summary stepped a period
-  run.result.steps = m.steps + run.orbit.time_steps + (kept ? 0 : run.orbit.steps);
+  run.result.steps += m.steps + run.orbit.time_steps;  // to the summary's own (none if it kept the period)
   run.result.times = m.times;
   run.result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock0).count();
   run.result.steps_per_second =

@@ -38,8 +38,8 @@ struct OrbitRun {
   /// One period of the orbit: state = its state after the period (t = T); history: its N + 1 samples over
   /// [0, T]; means over the period (the trapezoidal rule, exact for the periodic samples), amplitudes
   /// (max − min)/2 with each extreme refined by the parabola through its sample and the two beside it;
-  /// period = T, St = D/(U T); steps and wall_seconds of the whole (march + orbit: the period summarised is the solve's
-  /// last, kept by keep_last_period); converged = the orbit's.
+  /// period = T, St = D/(U T); steps and wall_seconds of the whole (march, orbit and the summary's own steps:
+  /// none when it kept the solve's last period); converged = the orbit's.
   UnsteadyResult result;
 };
 
@@ -87,7 +87,7 @@ void keep_last_period(const NsParams& p, double rho, OrbitOptions& o, OrbitPerio
 
 /// The summary of one period of a converged orbit in the march's terms (OrbitRun::result without the steps
 /// and seconds of the march and the solve): from `period` when it holds the orbit's N + 1 samples
-/// (keep_last_period), else from one more period of steps.
+/// (keep_last_period), else from one more period of steps. Its `steps` are the steps it took: 0, or N.
 UnsteadyResult orbit_summary(const NsParams& p, const OrbitResult& orbit, double rho,
                              const OrbitPeriod* period = nullptr);
 

@@ -129,6 +129,7 @@ TEST_CASE("orbit: the summary from the solve's last period is one more period of
   CHECK(kept.state.zeta == stepped.state.zeta);
   CHECK(kept.state.psi == stepped.state.psi);
   CHECK(kept.steps == run.march.steps + run.orbit.time_steps);
+  CHECK(stepped.steps == run.orbit.steps);  // the summary that stepped counts its period
 }
 
 TEST_CASE("orbit: a flow that does not shed (Re 40) is refused in one line", "[periodic_orbit]") {
