@@ -247,41 +247,75 @@ void HarmonicSum::apply(const double* c, const std::vector<double>& x, std::vect
   }
 }
 
-FloquetResult floquet_multipliers(const NsParams& p, const PeriodicBase& base, double beta, const FloquetOptions& o) {
-  const auto t0 = std::chrono::steady_clock::now();
+namespace {
+
+/// floquet_multipliers' refusals of its input.
+void check_floquet_input(const NsParams& p, const PeriodicBase& base, double beta, int steps) {
   const double T = base.T;
   if (!(T > 0.0) || !std::isfinite(T)) throw std::invalid_argument("floquet_multipliers: the period must be > 0");
   if (!(beta >= 0.0) || !std::isfinite(beta))
     throw std::invalid_argument("floquet_multipliers: the wavenumber β must be finite and ≥ 0");
   if (base.cos_part.empty() || base.sin_part.size() != base.cos_part.size())
     throw std::invalid_argument("floquet_multipliers: the base has no harmonic");
-  if (o.steps < 4) throw std::invalid_argument("floquet_multipliers: needs at least 4 steps per period");
+  if (steps < 4) throw std::invalid_argument("floquet_multipliers: needs at least 4 steps per period");
   const PolarGrid g = ns_grid(p);
   for (const NsState* s : {&base.mean, &base.cos_part.front()})
     if (s->psi.size() != size_t(g.nodes()) || s->zeta.size() != size_t(g.nodes()))
       throw std::invalid_argument("floquet_multipliers: the base does not match the grid");
+}
+
+/// B_k^c and B_k^s of every harmonic k (at 2(k − 1) and 2(k − 1) + 1): J(b_0 + b_k) − J(b_0), exact because
+/// J is affine in the base.
+std::vector<EigenProblem> harmonic_matrices(const NsParams& p, const PeriodicBase& base, double beta,
+                                            const SpanwiseOutflow& out, const EigenProblem& J0) {
+  std::vector<EigenProblem> B;
+  for (size_t k = 0; k < base.cos_part.size(); ++k)
+    for (const NsState* part : {&base.cos_part[k], &base.sin_part[k]}) {
+      NsState b = base.mean;
+      for (size_t q = 0; q < b.psi.size(); ++q) b.psi[q] += part->psi[q], b.zeta[q] += part->zeta[q];
+      B.push_back(difference(spanwise_problem(p, b, beta, out), J0));
+    }
+  return B;
+}
+
+/// What the period map steps with, built once: J_0 (its outflow columns the mean flow's), the harmonics'
+/// one-pass sum and the LU for Δt = T/steps.
+struct FloquetStepper {
+  SpanwiseOutflow out;
+  EigenProblem J0;
+  HarmonicSum harmonics;
+  double dt;
+  RealLu lu;
+  FloquetStepper(const NsParams& p, const PeriodicBase& base, double beta, int steps)
+      : out(spanwise_outflow(p, base.mean)),
+        J0(spanwise_problem(p, base.mean, beta, out)),
+        harmonics(harmonic_matrices(p, base, beta, out, J0)),
+        dt(base.T / steps),
+        lu(half_step_pressure(J0), 2.0 / dt) {}
+  PeriodMap map(double T, int steps) const { return PeriodMap{J0, harmonics, lu, T, dt, steps}; }
+};
+
+}  // namespace
+
+std::vector<double> floquet_period_map(const NsParams& p, const PeriodicBase& base, double beta, int steps,
+                                       std::vector<double> x) {
+  check_floquet_input(p, base, beta, steps);
+  const FloquetStepper stepper(p, base, beta, steps);
+  if (x.size() != size_t(stepper.J0.n))
+    throw std::invalid_argument("floquet_period_map: x does not match the spanwise problem");
+  return stepper.map(base.T, steps)(std::move(x));
+}
+
+FloquetResult floquet_multipliers(const NsParams& p, const PeriodicBase& base, double beta, const FloquetOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  check_floquet_input(p, base, beta, o.steps);
   FloquetResult res;
-  res.T = T;
+  res.T = base.T;
   res.harmonics = int(base.cos_part.size());
   res.steps = o.steps;
   res.truncation = base.truncation();
-
-  const SpanwiseOutflow out = spanwise_outflow(p, base.mean);
-  const EigenProblem J0 = spanwise_problem(p, base.mean, beta, out);
-  std::vector<EigenProblem> B;
-  for (int k = 0; k < res.harmonics; ++k)
-    for (const NsState* part : {&base.cos_part[size_t(k)], &base.sin_part[size_t(k)]}) {
-      NsState b = base.mean;
-      for (size_t q = 0; q < b.psi.size(); ++q) b.psi[q] += part->psi[q], b.zeta[q] += part->zeta[q];
-      B.push_back(difference(spanwise_problem(p, b, beta, out), J0));  // exact: J is affine in the base
-    }
-  const double dt = T / res.steps;
-  const RealLu lu(half_step_pressure(J0), 2.0 / dt);
-  const HarmonicSum harmonics(B);
-  std::vector<EigenProblem>().swap(B);  // held once, in harmonics
-  const PeriodMap P{J0, harmonics, lu, T, dt, res.steps};
-
-  arnoldi(P, o, size_t(J0.n), res);
+  const FloquetStepper stepper(p, base, beta, o.steps);
+  arnoldi(stepper.map(base.T, o.steps), o, size_t(stepper.J0.n), res);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }

@@ -111,6 +111,13 @@ struct HarmonicSum {
   void apply(const double* c, const std::vector<double>& x, std::vector<double>& y) const;
 };
 
+/// One period of the linear stepper, P x: x (the spanwise problem's unknowns, dimensionless as
+/// FloquetResult::mode) stepped `steps` times Δt = T/steps through the base's period at wavenumber β (1/m).
+/// The map whose leading eigenvalues floquet_multipliers finds; its p entries are the last half step's.
+/// Throws as floquet_multipliers, and for an x of the wrong size.
+std::vector<double> floquet_period_map(const NsParams& p, const PeriodicBase& base, double beta, int steps,
+                                       std::vector<double> x);
+
 /// The leading Floquet multipliers at spanwise wavenumber β (1/m, ≥ 0) of the periodic base (states on
 /// ns_grid(p), at least one harmonic). Throws std::invalid_argument for β < 0, T ≤ 0, no harmonic, a base
 /// of the wrong size or steps < 4; std::runtime_error when a factorisation fails.
