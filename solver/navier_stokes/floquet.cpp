@@ -249,19 +249,22 @@ void HarmonicSum::apply(const double* c, const std::vector<double>& x, std::vect
 
 namespace {
 
-/// floquet_multipliers' refusals of its input.
-void check_floquet_input(const NsParams& p, const PeriodicBase& base, double beta, int steps) {
+/// The refusals of floquet_multipliers and floquet_period_map (`who`, the message's prefix).
+void check_floquet_input(const char* who, const NsParams& p, const PeriodicBase& base, double beta,
+                         int steps) {
+  const std::string w = who;
   const double T = base.T;
-  if (!(T > 0.0) || !std::isfinite(T)) throw std::invalid_argument("floquet_multipliers: the period must be > 0");
+  if (!(T > 0.0) || !std::isfinite(T)) throw std::invalid_argument(w + ": the period must be > 0");
   if (!(beta >= 0.0) || !std::isfinite(beta))
-    throw std::invalid_argument("floquet_multipliers: the wavenumber β must be finite and ≥ 0");
+    throw std::invalid_argument(w + ": the wavenumber β must be finite and ≥ 0");
   if (base.cos_part.empty() || base.sin_part.size() != base.cos_part.size())
-    throw std::invalid_argument("floquet_multipliers: the base has no harmonic");
-  if (steps < 4) throw std::invalid_argument("floquet_multipliers: needs at least 4 steps per period");
-  const PolarGrid g = ns_grid(p);
-  for (const NsState* s : {&base.mean, &base.cos_part.front()})
-    if (s->psi.size() != size_t(g.nodes()) || s->zeta.size() != size_t(g.nodes()))
-      throw std::invalid_argument("floquet_multipliers: the base does not match the grid");
+    throw std::invalid_argument(w + ": the base has no harmonic");
+  if (steps < 4) throw std::invalid_argument(w + ": needs at least 4 steps per period");
+  const size_t nodes = size_t(ns_grid(p).nodes());
+  auto fits = [nodes](const NsState& s) { return s.psi.size() == nodes && s.zeta.size() == nodes; };
+  if (!fits(base.mean) || !std::all_of(base.cos_part.begin(), base.cos_part.end(), fits) ||
+      !std::all_of(base.sin_part.begin(), base.sin_part.end(), fits))
+    throw std::invalid_argument(w + ": the base does not match the grid");
 }
 
 /// B_k^c and B_k^s of every harmonic k (at 2(k − 1) and 2(k − 1) + 1): J(b_0 + b_k) − J(b_0), exact because
@@ -278,44 +281,50 @@ std::vector<EigenProblem> harmonic_matrices(const NsParams& p, const PeriodicBas
   return B;
 }
 
-/// What the period map steps with, built once: J_0 (its outflow columns the mean flow's), the harmonics'
-/// one-pass sum and the LU for Δt = T/steps.
+/// What the period map steps with, built once for a base and a step count (members in this order: each
+/// is built from the ones before it).
 struct FloquetStepper {
-  SpanwiseOutflow out;
-  EigenProblem J0;
-  HarmonicSum harmonics;
-  double dt;
-  RealLu lu;
-  FloquetStepper(const NsParams& p, const PeriodicBase& base, double beta, int steps)
-      : out(spanwise_outflow(p, base.mean)),
+  double T;             ///< the base's period, s
+  int steps;            ///< steps per period
+  double dt;            ///< Δt = T/steps, s
+  SpanwiseOutflow out;  ///< the outflow columns of R, the mean flow's
+  EigenProblem J0;      ///< J(b_0), the mean flow's spanwise problem
+  HarmonicSum harmonics;  ///< the B_k^c, B_k^s of every harmonic, summed in one pass
+  RealLu lu;            ///< of J0 with its pressure columns doubled, less (2/Δt)M
+  FloquetStepper(const NsParams& p, const PeriodicBase& base, double beta, int n)
+      : T(base.T),
+        steps(n),
+        dt(base.T / n),
+        out(spanwise_outflow(p, base.mean)),
         J0(spanwise_problem(p, base.mean, beta, out)),
         harmonics(harmonic_matrices(p, base, beta, out, J0)),
-        dt(base.T / steps),
         lu(half_step_pressure(J0), 2.0 / dt) {}
-  PeriodMap map(double T, int steps) const { return PeriodMap{J0, harmonics, lu, T, dt, steps}; }
+  /// The period map P (it refers to this stepper's parts: use it while the stepper lives).
+  PeriodMap map() const { return PeriodMap{J0, harmonics, lu, T, dt, steps}; }
 };
 
 }  // namespace
 
 std::vector<double> floquet_period_map(const NsParams& p, const PeriodicBase& base, double beta, int steps,
                                        std::vector<double> x) {
-  check_floquet_input(p, base, beta, steps);
+  check_floquet_input("floquet_period_map", p, base, beta, steps);
   const FloquetStepper stepper(p, base, beta, steps);
   if (x.size() != size_t(stepper.J0.n))
     throw std::invalid_argument("floquet_period_map: x does not match the spanwise problem");
-  return stepper.map(base.T, steps)(std::move(x));
+  return stepper.map()(std::move(x));
 }
 
-FloquetResult floquet_multipliers(const NsParams& p, const PeriodicBase& base, double beta, const FloquetOptions& o) {
+FloquetResult floquet_multipliers(const NsParams& p, const PeriodicBase& base, double beta,
+                                  const FloquetOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
-  check_floquet_input(p, base, beta, o.steps);
+  check_floquet_input("floquet_multipliers", p, base, beta, o.steps);
   FloquetResult res;
   res.T = base.T;
   res.harmonics = int(base.cos_part.size());
   res.steps = o.steps;
   res.truncation = base.truncation();
   const FloquetStepper stepper(p, base, beta, o.steps);
-  arnoldi(stepper.map(base.T, o.steps), o, size_t(stepper.J0.n), res);
+  arnoldi(stepper.map(), o, size_t(stepper.J0.n), res);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }

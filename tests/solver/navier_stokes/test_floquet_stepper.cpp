@@ -2,6 +2,7 @@
 // against an independent integration of the same linear equations.
 #include <catch2/catch.hpp>
 #include <Eigen/SparseLU>
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -124,8 +125,8 @@ TEST_CASE("[ns][floquet] a base with harmonics: the period map against Crank-Nic
   swapped.cos_part.swap(swapped.sin_part);
   const double swap = velocity_gap(J, P[2], floquet_period_map(p, swapped, beta, 200, x));
   INFO("the stepper on 50, 100, 200 steps: " << e1 << ", " << e2 << " (order " << test::observed_order(e1, e2)
-       << "); limits apart " << gap << ", the stepper's 200 from its limit " << own << ", CN 200 from the stepper's limit "
-       << velocity_gap(J, C[1], limit_P) << "; cos and sin swapped: " << swap << "; |Px| "
+       << "); limits apart " << gap << ", the stepper's 200 from its limit " << own
+       << ", CN 200 from the stepper's limit " << velocity_gap(J, C[1], limit_P) << "; cos and sin swapped: " << swap << "; |Px| "
        << velocity_gap(J, P[2], std::vector<double>(x.size(), 0.0)));
   // Measured: 1.00e-3, 2.49e-4 (order 2.01); limits 4.4e-6 apart, 8.3e-5 from the 200 steps to their limit;
   // the swapped base's map 0.071 away (|Px| 0.20 on the velocities).
