@@ -50,8 +50,4 @@ double stop_mean_tolerance(double mean_tolerance, double grid_tolerance) {
   return grid_tolerance > 0.0 ? std::min(mean_tolerance, grid_tolerance / 5.0) : mean_tolerance;
 }
 
-double orbit_tolerance(double mean_tolerance, double grid_tolerance) {
-  return std::max(1e-9, kOrbitPerMeanTolerance * stop_mean_tolerance(mean_tolerance, grid_tolerance));
-}
-
 }  // namespace magnus

@@ -37,13 +37,4 @@ MeansDrift means_drift(const std::vector<PeriodWindow>& w, double horizon = kDri
 /// tolerance to the grid: min(mean_tolerance, τ/5) (relative, 1).
 double stop_mean_tolerance(double mean_tolerance, double grid_tolerance);
 
-/// A periodic run's orbit residual per unit of its means' tolerance. The orbit's means move by up to 80ρ
-/// when Newton goes on from residual ρ to 1e-9 (Re 100, α 1, n_θ 64, R = 30a: the C_L amplitude by 7.2e-4
-/// from ρ 8.9e-6; 2ρ or less on the scene's grid at α 1 and 5), so this holds them about 10 times inside it.
-constexpr double kOrbitPerMeanTolerance = 1e-3;
-/// The residual ρ a periodic run's orbit is solved to (OrbitOptions::tol, relative, 1):
-/// kOrbitPerMeanTolerance·stop_mean_tolerance (1e-6 by default), never below 1e-9 (what every run was
-/// solved to before).
-double orbit_tolerance(double mean_tolerance, double grid_tolerance);
-
 }  // namespace magnus

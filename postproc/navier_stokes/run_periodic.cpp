@@ -12,7 +12,6 @@
 
 #include "postproc/navier_stokes/error_estimate.hpp"
 #include "postproc/navier_stokes/forces.hpp"
-#include "postproc/navier_stokes/means_drift.hpp"
 #include "postproc/navier_stokes/orbit.hpp"
 #include "postproc/navier_stokes/run_paths.hpp"
 #include "postproc/navier_stokes/steady_study.hpp"
@@ -62,7 +61,6 @@ FlowResult periodic_by_shooting(const Case& c, const NsParams& p, const PolarGri
   OrbitRunOptions o;
   o.t_end = c.time.end * unit;
   o.rho = c.scene.density;
-  o.orbit.tol = orbit_tolerance(c.time.mean_tolerance, c.grid.tolerance);  // the companion's too
 
   // The error bar's companion: the same orbit on the grid twice as coarse, from rest, beside the run (a
   // run on one thread steps on one core). An orbit is periodic to Newton's tolerance, so its means have no
