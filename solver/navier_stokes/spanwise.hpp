@@ -53,7 +53,8 @@ EigenProblem spanwise_problem(const NsParams& p, const NsState& base, double bet
 EigenProblem spanwise_problem(const NsParams& p, const NsState& base, double beta, const SpanwiseOutflow& out);
 
 /// The leading eigenvalues (U/D) of the spanwise problem at β (1/m) about a steady state, the search of
-/// leading_eigenvalues on it. The result's mode fields are empty (the mode is not a (ψ, ζ) pair).
+/// leading_eigenvalues on it with every shift moved left by νβ² (the damping spanwise diffusion adds to
+/// each velocity component). The result's mode fields are empty (the mode is not a (ψ, ζ) pair).
 StabilityResult spanwise_eigenvalues(const NsParams& p, const NsState& steady, double beta, int count,
                                      const StabilityOptions& o);
 
