@@ -257,8 +257,9 @@ void check_floquet_input(const char* who, const NsParams& p, const PeriodicBase&
   if (!(T > 0.0) || !std::isfinite(T)) throw std::invalid_argument(w + ": the period must be > 0");
   if (!(beta >= 0.0) || !std::isfinite(beta))
     throw std::invalid_argument(w + ": the wavenumber β must be finite and ≥ 0");
-  if (base.cos_part.empty() || base.sin_part.size() != base.cos_part.size())
-    throw std::invalid_argument(w + ": the base has no harmonic");
+  if (base.cos_part.empty()) throw std::invalid_argument(w + ": the base has no harmonic");
+  if (base.sin_part.size() != base.cos_part.size())
+    throw std::invalid_argument(w + ": the base's cos and sin parts differ in number");
   if (steps < 4) throw std::invalid_argument(w + ": needs at least 4 steps per period");
   const size_t nodes = size_t(ns_grid(p).nodes());
   auto fits = [nodes](const NsState& s) { return s.psi.size() == nodes && s.zeta.size() == nodes; };

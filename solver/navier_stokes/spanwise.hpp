@@ -54,7 +54,8 @@ EigenProblem spanwise_problem(const NsParams& p, const NsState& base, double bet
 
 /// The leading eigenvalues (U/D) of the spanwise problem at β (1/m) about a steady state, the search of
 /// leading_eigenvalues on it with every shift moved left by νβ² (the damping spanwise diffusion adds to
-/// each velocity component). The result's mode fields are empty (the mode is not a (ψ, ζ) pair).
+/// each velocity component; covered is false once a shift lies left of the axis). The result's mode
+/// fields are empty (the mode is not a (ψ, ζ) pair).
 StabilityResult spanwise_eigenvalues(const NsParams& p, const NsState& steady, double beta, int count,
                                      const StabilityOptions& o);
 

@@ -126,11 +126,28 @@ TEST_CASE("[ns][floquet] a base with harmonics: the period map against Crank-Nic
   const double swap = velocity_gap(J, P[2], floquet_period_map(p, swapped, beta, 200, x));
   INFO("the stepper on 50, 100, 200 steps: " << e1 << ", " << e2 << " (order " << test::observed_order(e1, e2)
        << "); limits apart " << gap << ", the stepper's 200 from its limit " << own
-       << ", CN 200 from the stepper's limit " << velocity_gap(J, C[1], limit_P) << "; cos and sin swapped: " << swap << "; |Px| "
-       << velocity_gap(J, P[2], std::vector<double>(x.size(), 0.0)));
+       << ", CN 200 from the stepper's limit " << velocity_gap(J, C[1], limit_P) << "; cos and sin swapped: "
+       << swap << "; |Px| " << velocity_gap(J, P[2], std::vector<double>(x.size(), 0.0)));
   // Measured: 1.00e-3, 2.49e-4 (order 2.01); limits 4.4e-6 apart, 8.3e-5 from the 200 steps to their limit;
   // the swapped base's map 0.071 away (|Px| 0.20 on the velocities).
   CHECK(std::fabs(test::observed_order(e1, e2) - 2.0) < 0.1);
   CHECK(gap < 0.1 * own);
   CHECK(gap < 1e-3 * swap);
+}
+
+TEST_CASE("[ns][floquet] a base with a short part, or an x of the wrong size, is refused before any solve",
+          "[ns][floquet]") {
+  const NsParams p = test::cylinder_flow(40.0, 0.5, 16, 8.0);
+  const PeriodicBase base = two_harmonic_base(p, 4.0);
+  const std::vector<double> x(size_t(spanwise_problem(p, base.mean, 1.0).n), 0.0);
+  PeriodicBase fewer_sin = base, short_later = base;
+  fewer_sin.sin_part.pop_back();
+  short_later.cos_part[1].psi.pop_back();  // a later harmonic of the wrong size
+  for (const PeriodicBase* b : {&fewer_sin, &short_later}) {
+    CHECK_THROWS_AS(floquet_period_map(p, *b, 1.0, 20, x), std::invalid_argument);
+    CHECK_THROWS_AS(floquet_multipliers(p, *b, 1.0), std::invalid_argument);
+  }
+  CHECK_THROWS_WITH(floquet_period_map(p, fewer_sin, 1.0, 20, x), Catch::Contains("differ in number"));
+  CHECK_THROWS_AS(floquet_period_map(p, base, 1.0, 20, std::vector<double>(3, 0.0)), std::invalid_argument);
+  CHECK(floquet_period_map(p, base, 1.0, 20, x) == x);  // the zero field stays zero
 }
