@@ -309,10 +309,10 @@ struct FloquetStepper {
 std::vector<double> floquet_period_map(const NsParams& p, const PeriodicBase& base, double beta, int steps,
                                        std::vector<double> x) {
   check_floquet_input("floquet_period_map", p, base, beta, steps);
-  const FloquetStepper stepper(p, base, beta, steps);
-  if (x.size() != size_t(stepper.J0.n))
+  const PolarGrid g = ns_grid(p);
+  if (x.size() != size_t(spanwise_unknowns(g.n_r, g.n_theta)))
     throw std::invalid_argument("floquet_period_map: x does not match the spanwise problem");
-  return stepper.map()(std::move(x));
+  return FloquetStepper(p, base, beta, steps).map()(std::move(x));
 }
 
 FloquetResult floquet_multipliers(const NsParams& p, const PeriodicBase& base, double beta,

@@ -73,7 +73,7 @@ struct Mac {
   long v(int c, int j) const { return at(c + 1, j, kV); }   ///< u_θ at centre c, θ_j
   long w(int c, int j) const { return at(c + 1, j, kW); }   ///< w̃ at centre c, θ_{j+½}
   long pr(int c, int j) const { return at(c + 1, j, kP); }  ///< p at centre c, θ_{j+½}
-  long unknowns() const { return kSpanwiseFields * long(N + 2) * n; }
+  long unknowns() const { return spanwise_unknowns(N + 1, n); }
 };
 
 /// The base's velocities on the staggered points, m/s: U_r = Ψ_θ/r on ring i at θ_{j+½} (i ≤ N; ring N + 1
@@ -236,6 +236,8 @@ std::vector<long> slot_order(const Mac& m) {
 }
 
 }  // namespace
+
+long spanwise_unknowns(int n_r, int n_theta) { return kSpanwiseFields * long(n_r + 1) * n_theta; }
 
 SpanwiseOutflow spanwise_outflow(const NsParams& p, const NsState& base) {
   const PolarGrid g = ns_grid(p);

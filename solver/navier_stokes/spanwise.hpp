@@ -37,6 +37,10 @@ constexpr int kSpanwiseFields = 4;
 /// The field index of p: unknown kSpanwiseFields·slot + kSpanwisePressure.
 constexpr int kSpanwisePressure = 3;
 
+/// Unknowns of the spanwise problem on n_r rings × n_θ columns: kSpanwiseFields per slot, n_r + 1 slots a
+/// column (the last beyond R).
+long spanwise_unknowns(int n_r, int n_theta);
+
 /// Which columns of R let the base out (U_r > 0 there, and the case's outer vorticity lets the wake out):
 /// u at θ_{j+½} (the u_r points, also the cell centres), v at θ_j (the u_θ points).
 struct SpanwiseOutflow {
