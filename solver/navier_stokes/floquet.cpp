@@ -249,9 +249,9 @@ void HarmonicSum::apply(const double* c, const std::vector<double>& x, std::vect
 
 namespace {
 
-/// The refusals of floquet_multipliers and floquet_period_map (`who`, the message's prefix).
-void check_floquet_input(const char* who, const NsParams& p, const PeriodicBase& base, double beta,
-                         int steps) {
+/// The refusals of floquet_multipliers and floquet_period_map (`who`, the message's prefix); the grid.
+PolarGrid check_floquet_input(const char* who, const NsParams& p, const PeriodicBase& base, double beta,
+                              int steps) {
   const std::string w = who;
   const double T = base.T;
   if (!(T > 0.0) || !std::isfinite(T)) throw std::invalid_argument(w + ": the period must be > 0");
@@ -261,11 +261,13 @@ void check_floquet_input(const char* who, const NsParams& p, const PeriodicBase&
   if (base.sin_part.size() != base.cos_part.size())
     throw std::invalid_argument(w + ": the base's cos and sin parts differ in number");
   if (steps < 4) throw std::invalid_argument(w + ": needs at least 4 steps per period");
-  const size_t nodes = size_t(ns_grid(p).nodes());
+  PolarGrid g = ns_grid(p);
+  const size_t nodes = size_t(g.nodes());
   auto fits = [nodes](const NsState& s) { return s.psi.size() == nodes && s.zeta.size() == nodes; };
   if (!fits(base.mean) || !std::all_of(base.cos_part.begin(), base.cos_part.end(), fits) ||
       !std::all_of(base.sin_part.begin(), base.sin_part.end(), fits))
     throw std::invalid_argument(w + ": the base does not match the grid");
+  return g;
 }
 
 /// B_k^c and B_k^s of every harmonic k (at 2(k − 1) and 2(k − 1) + 1): J(b_0 + b_k) − J(b_0), exact because
@@ -308,8 +310,7 @@ struct FloquetStepper {
 
 std::vector<double> floquet_period_map(const NsParams& p, const PeriodicBase& base, double beta, int steps,
                                        std::vector<double> x) {
-  check_floquet_input("floquet_period_map", p, base, beta, steps);
-  const PolarGrid g = ns_grid(p);
+  const PolarGrid g = check_floquet_input("floquet_period_map", p, base, beta, steps);
   if (x.size() != size_t(spanwise_unknowns(g.n_r, g.n_theta)))
     throw std::invalid_argument("floquet_period_map: x does not match the spanwise problem");
   return FloquetStepper(p, base, beta, steps).map()(std::move(x));
