@@ -19,10 +19,10 @@ using h5::Handle;
 
 namespace {
 
-/// A magnus HDF5 output (result, sweep, checkpoint): what base/output_owner lets magnus replace.
+/// A magnus HDF5 output (result, sweep, checkpoint, stability): what base/output_owner lets magnus replace.
 bool hdf5_by_magnus(const std::string& target) {
   try {
-    const ResultFile f(target, {"magnus-flow", "magnus-sweep", "magnus-checkpoint"});
+    const ResultFile f(target, {"magnus-flow", "magnus-sweep", "magnus-checkpoint", "magnus-stability"});
     return true;
   } catch (const std::exception&) {
     return false;

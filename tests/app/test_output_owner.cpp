@@ -56,6 +56,9 @@ TEST_CASE("every command refuses to replace a file it did not write, and replace
       {"p.csv", {"probe", r, "0.2,0", "--csv", "OUT"}},
       {"f.csv", {"inspect", r, "--surface-csv", "OUT"}},
       {"b.csv", {"bench", dir + "/c.toml", "--ladder", "16,32", "--repeats", "1", "--method", "fft", "--csv", "OUT"}},
+      {"st.h5",
+       {"stability", std::string(MAGNUS_SOURCE_DIR) + "/cases/s_map.toml", "--set", "grid.n_theta=24", "--set",
+        "flow.reynolds=20", "--output", "OUT"}},
   };
   for (const auto& [name, args] : writers) {
     const std::string out = dir + "/" + name;
