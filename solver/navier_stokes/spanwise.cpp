@@ -4,6 +4,7 @@
 // field by that field's scale; the columns by U (velocities) and U² (p).
 #include "solver/navier_stokes/spanwise.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -235,9 +236,49 @@ std::vector<long> slot_order(const Mac& m) {
   return order;
 }
 
+/// Where x falls in the increasing xs: the index i below it and the weight w = (x − xs_i)/(xs_{i+1} − xs_i)
+/// of the one above; below xs[0]: (0, 0); above the last: index −1 (outside).
+std::pair<int, double> bracket(const std::vector<double>& xs, double x) {
+  if (x <= xs.front()) return {0, 0.0};
+  if (x > xs.back()) return {-1, 0.0};
+  const int i = int(std::upper_bound(xs.begin(), xs.end(), x) - xs.begin()) - 1;
+  if (i >= int(xs.size()) - 1) return {int(xs.size()) - 2, 1.0};
+  return {i, (x - xs[size_t(i)]) / (xs[size_t(i) + 1] - xs[size_t(i)])};
+}
+
 }  // namespace
 
 long spanwise_unknowns(int n_r, int n_theta) { return kSpanwiseFields * long(n_r + 1) * n_theta; }
+
+std::vector<double> spanwise_prolong(const PolarGrid& from, const PolarGrid& to,
+                                     const std::vector<double>& x) {
+  const Mac a(from), b(to);
+  if (long(x.size()) != a.unknowns())
+    throw std::invalid_argument("spanwise_prolong: x does not match its grid");
+  std::vector<double> y(size_t(b.unknowns()), 0.0);
+  for (int f = 0; f < kSpanwiseFields; ++f) {
+    const bool ring = f == kU;  // u_r on the rings, the rest at the centres (slot s: centre s − 1)
+    const std::vector<double>& xa = ring ? a.xf : a.xc;
+    const std::vector<double>& xb = ring ? b.xf : b.xc;
+    const double off = f == kV ? 0.0 : 0.5;  // u_θ at θ_j, the rest at θ_{j+½}
+    for (int s = 0; s < b.N + 2; ++s) {
+      auto [i, wi] = bracket(xa, xb[size_t(s)]);
+      if (i < 0 || (f == kP && s == 0))
+        continue;                       // beyond the last point of `from`; the wall slot's unused p
+      if (f == kP && i == 0) wi = 1.0;  // p has no point at the wall slot: centre 0's value below it
+      for (int j = 0; j < b.n; ++j) {
+        const double t = (double(j) + off) * b.k / a.k - off;
+        const int j0 = int(std::floor(t));
+        const double wj = t - double(j0);
+        auto at = [&](int si, int jj) { return x[size_t(a.at(si, jj, f))]; };
+        const double lo = (1.0 - wj) * at(i, j0) + wj * at(i, j0 + 1);
+        const double hi = (1.0 - wj) * at(i + 1, j0) + wj * at(i + 1, j0 + 1);
+        y[size_t(b.at(s, j, f))] = (1.0 - wi) * lo + wi * hi;
+      }
+    }
+  }
+  return y;
+}
 
 SpanwiseOutflow spanwise_outflow(const NsParams& p, const NsState& base) {
   const PolarGrid g = ns_grid(p);

@@ -41,6 +41,14 @@ constexpr int kSpanwisePressure = 3;
 /// column (the last beyond R).
 long spanwise_unknowns(int n_r, int n_theta);
 
+/// A vector of the spanwise problem on grid `from` sampled onto grid `to` (Arnoldi's start on a finer grid
+/// from a coarser grid's mode): each field linear in ξ and in θ between its own staggered points of `from`
+/// (the ghosts beyond the wall and R included; p, which has no ghost at the wall, constant below its first
+/// centre), 0 beyond its last point (beyond a smaller R's ghost). Throws std::invalid_argument when x does
+/// not fit `from`.
+std::vector<double> spanwise_prolong(const PolarGrid& from, const PolarGrid& to,
+                                     const std::vector<double>& x);
+
 /// Which columns of R let the base out (U_r > 0 there, and the case's outer vorticity lets the wake out):
 /// u at θ_{j+½} (the u_r points, also the cell centres), v at θ_j (the u_θ points).
 struct SpanwiseOutflow {

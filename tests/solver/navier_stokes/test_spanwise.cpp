@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <complex>
+#include <functional>
 #include <vector>
 
 #include "solver/navier_stokes/newton.hpp"
@@ -98,4 +99,89 @@ TEST_CASE("[ns][spanwise] with an absorbing layer, beta 0 still gives the 2D pai
   const double order = test::observed_order(gap[0], gap[1], 2.0);
   INFO("gaps " << gap[0] << ", " << gap[1] << "; observed order " << order);
   CHECK(std::fabs(order - 2.0) < 0.5);
+}
+
+namespace {
+
+/// ξ of the staggered points of field f at slot s (spanwise.hpp's layout): u_r on ring s (ring n_r a ghost
+/// beyond R, mirrored), the others at centre s − 1 (centres −1 and n_r − 1 ghosts, mirrored).
+double slot_xi(const PolarGrid& g, int s, int f) {
+  const int N = g.n_r - 1;
+  auto ring = [&](int i) { return i <= N ? g.xi[size_t(i)] : 2.0 * g.xi[size_t(N)] - g.xi[size_t(N) - 1]; };
+  if (f == 0) return ring(s);
+  const int c = s - 1;
+  if (c < 0) return -0.5 * g.xi[1];
+  if (c < N) return 0.5 * (g.xi[size_t(c)] + g.xi[size_t(c) + 1]);
+  return 2.0 * g.xi[size_t(N)] - 0.5 * (g.xi[size_t(N) - 1] + g.xi[size_t(N)]);
+}
+
+/// The vector of value(f, ξ, θ) at every unknown of grid g (u_θ at θ_j, the rest at θ_{j+½}).
+std::vector<double> sampled(const PolarGrid& g, const std::function<double(int, double, double)>& value) {
+  std::vector<double> x(size_t(spanwise_unknowns(g.n_r, g.n_theta)));
+  for (int s = 0; s <= g.n_r; ++s)
+    for (int j = 0; j < g.n_theta; ++j)
+      for (int f = 0; f < kSpanwiseFields; ++f)
+        x[size_t(kSpanwiseFields * (long(s) * g.n_theta + j) + f)] =
+            value(f, slot_xi(g, s, f), (j + (f == 1 ? 0.0 : 0.5)) * g.d_theta);
+  return x;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "[ns][spanwise] a coarse grid's vector onto a finer grid: exact for linear fields and order 2 in theta",
+    "[ns][spanwise]") {
+  const PolarGrid coarse = ns_grid(test::cylinder_flow(60, 0, 16, 10)),
+                  fine = ns_grid(test::cylinder_flow(60, 0, 32, 20));
+  // Linear in ξ, a different line per field: exact wherever the coarse grid reaches, 0 beyond its last point;
+  // the wall slot's p (an unused unknown, 0 in the input too) stays 0, and p below the first coarse centre
+  // takes that centre's value.
+  auto line = [](int f, double xi, double) { return 1.0 + f + (2.0 - f) * xi; };
+  std::vector<double> x = sampled(coarse, line);
+  for (int j = 0; j < coarse.n_theta; ++j) x[size_t(kSpanwiseFields * j + kSpanwisePressure)] = 0.0;
+  const std::vector<double> y = spanwise_prolong(coarse, fine, x);
+  const double p_first = slot_xi(coarse, 1, kSpanwisePressure);
+  int inside = 0, outside = 0;
+  for (int s = 0; s <= fine.n_r; ++s)
+    for (int j = 0; j < fine.n_theta; ++j)
+      for (int f = 0; f < kSpanwiseFields; ++f) {
+        const double xi = slot_xi(fine, s, f),
+                     got = y[size_t(kSpanwiseFields * (long(s) * fine.n_theta + j) + f)];
+        if (f == kSpanwisePressure && s == 0) {
+          CHECK(got == 0.0);
+        } else if (f == kSpanwisePressure && xi < p_first) {
+          CHECK(got == Approx(line(f, p_first, 0.0)).epsilon(1e-12));
+        } else if (xi <= slot_xi(coarse, coarse.n_r, f)) {
+          CHECK(got == Approx(line(f, xi, 0.0)).epsilon(1e-12));
+          ++inside;
+        } else {
+          CHECK(got == 0.0);
+          ++outside;
+        }
+      }
+  CHECK(inside > 0);
+  CHECK(outside > 0);
+  // In θ each field is linear between its own points: cos θ (shifted per field) from n_θ 16 and 32 onto 64
+  // on the same R. Every error is within linear interpolation's bound Δθ²/8, and u_θ's (whose points the
+  // target's nest in) falls as Δθ².
+  auto wave = [](int f, double, double theta) { return std::cos(theta + 0.3 * f); };
+  const PolarGrid target = ns_grid(test::cylinder_flow(60, 0, 64, 10));
+  const std::vector<double> exact = sampled(target, wave);
+  std::vector<double> error;
+  for (int n : {16, 32}) {
+    const PolarGrid from = ns_grid(test::cylinder_flow(60, 0, n, 10));
+    const std::vector<double> z = spanwise_prolong(from, target, sampled(from, wave));
+    double e_theta = 0.0, e_all = 0.0;
+    for (int s = 1; s < target.n_r; ++s)  // the rings inside (both grids' ghosts lie elsewhere)
+      for (int j = 0; j < target.n_theta; ++j)
+        for (int f = 0; f < kSpanwiseFields; ++f) {
+          const size_t q = size_t(kSpanwiseFields * (long(s) * target.n_theta + j) + f);
+          e_all = std::max(e_all, std::fabs(z[q] - exact[q]));
+          if (f == 1) e_theta = std::max(e_theta, std::fabs(z[q] - exact[q]));
+        }
+    CHECK(e_all <= from.d_theta * from.d_theta / 8.0);
+    error.push_back(e_theta);
+  }
+  CHECK(test::observed_order(error[0], error[1]) == Approx(2.0).margin(0.1));
+  CHECK_THROWS_AS(spanwise_prolong(coarse, fine, std::vector<double>(10)), std::invalid_argument);
 }
