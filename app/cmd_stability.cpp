@@ -1,9 +1,11 @@
 // magnus stability CASE [--set k=v]… [--critical-spin A:B | --critical-reynolds A:B] [--tolerance T]
-//                  [--spanwise [--beta A:B:STEP]] [--eigensolver NAME] [--output FILE.h5] [--json]
+//                  [--spanwise [--beta A:B:STEP] [--fine-grid N:R]] [--eigensolver NAME] [--output FILE.h5]
+//                  [--json]
 // The steady state's leading eigenvalues (growth rate, St; stable or not) and, with --spanwise, those of
 // three-dimensional disturbances per spanwise wavenumber; or the onset of shedding: the critical spin ratio
 // or Reynolds number where the wake's pair crosses the axis; with --spanwise --critical-reynolds, the
-// Reynolds number where the flow turns three-dimensional and its spanwise wavelength.
+// Reynolds number where the flow turns three-dimensional and its spanwise wavelength (with --fine-grid, then
+// refined on a finer grid).
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -28,6 +30,7 @@
 #include "postproc/navier_stokes/onset_curve.hpp"
 #include "postproc/navier_stokes/resolution.hpp"
 #include "postproc/navier_stokes/run.hpp"
+#include "postproc/navier_stokes/spanwise_critical.hpp"
 #include "postproc/navier_stokes/spanwise_scan.hpp"
 
 namespace magnus {
@@ -38,6 +41,7 @@ struct StabilityCliOptions {
   std::string case_path, critical, critical_re, tolerance, curve_re, curve_alpha;
   std::string output;  ///< --output: the spectra as an HDF5 file
   std::string beta = "0.5:4:0.5";  ///< --beta: the spanwise wavenumbers β·D, A:B:STEP
+  std::string fine_grid;           ///< --fine-grid N:R: the 3D onset refined on n_θ N, R = R·a
   bool spanwise = false, beta_given = false;
   std::string eigensolver = StabilityOptions{}.eigensolver;
   std::vector<std::string> sets;
@@ -241,6 +245,50 @@ void curve_report(const NsParams& p, const CriticalRange& range, const std::stri
   j = {{"parameter", spin ? "spin_ratio" : "reynolds"}, {"curve", rows}, {"seconds", seconds}};
 }
 
+/// --fine-grid N:R against the case's grid p: the overrides that give that grid (fine_grid_overrides).
+std::vector<std::string> fine_grid_sets(const std::string& text, const NsParams& p) {
+  const size_t colon = text.find(':');
+  const std::string what = "--fine-grid " + cut_input(text);
+  if (colon == std::string::npos)
+    throw std::invalid_argument(what + ": expected N:R (n_θ and R/a), e.g. 192:60");
+  const char* expected = "N:R (n_θ and R/a), e.g. 192:60";
+  return fine_grid_overrides(parse_number(text.substr(0, colon), "--fine-grid", expected),
+                             parse_number(text.substr(colon + 1), "--fine-grid", expected), p, what);
+}
+
+/// The refusals of --beta, --fine-grid and --output (critical: an onset search), before anything is solved;
+/// the wavenumbers β·D of --spanwise (none without it).
+std::vector<double> spanwise_options(const StabilityCliOptions& o, bool critical) {
+  if (o.beta_given && !o.spanwise) throw std::invalid_argument("--beta: only used with --spanwise");
+  if (!o.fine_grid.empty() && !(critical && o.spanwise))
+    throw std::invalid_argument(
+        "--fine-grid: only used with --spanwise --critical-reynolds A:B (the 3D onset search)");
+  if (!o.output.empty()) {
+    if (critical && !o.spanwise)
+      throw std::invalid_argument(
+          "--output: the file holds eigenvalues and 3D spectra, not the 2D onset search");
+    check_distinct_paths({o.case_path}, {o.output});
+    check_file_writable(o.output, "the HDF5 stability file");
+  }
+  if (!o.spanwise) return {};
+  const std::vector<double> beta_D = parse_sweep_range(o.beta, "--beta").values;
+  if (!(beta_D.front() >= 0.0))
+    throw std::invalid_argument("--beta " + o.beta + ": wavenumbers β·D must be ≥ 0");
+  return beta_D;
+}
+
+/// The case's parameters on the grid --fine-grid names (none without it).
+std::optional<NsParams> fine_grid_params(const StabilityCliOptions& o, const NsParams& p) {
+  if (o.fine_grid.empty()) return std::nullopt;
+  std::vector<std::string> sets = o.sets;
+  for (const std::string& x : fine_grid_sets(o.fine_grid, p)) sets.push_back(x);
+  try {
+    return ns_params(load_case(o.case_path, sets));
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("--fine-grid " + cut_input(o.fine_grid) + ": " + e.what());
+  }
+}
+
 void command_stability(const StabilityCliOptions& o) {
   const bool critical = !o.critical.empty() || !o.critical_re.empty();
   if (!critical && !o.tolerance.empty())
@@ -253,18 +301,7 @@ void command_stability(const StabilityCliOptions& o) {
   if (critical && o.spanwise && (range.which != HopfParameter::reynolds || !range.others.empty()))
     throw std::invalid_argument("--spanwise: the 3D onset is searched in Re only: with --critical-reynolds A:B, "
                                 "not --critical-spin or an onset curve");
-  if (o.beta_given && !o.spanwise) throw std::invalid_argument("--beta: only used with --spanwise");
-  if (!o.output.empty()) {
-    if (critical && !o.spanwise)
-      throw std::invalid_argument("--output: the file holds eigenvalues and 3D spectra, not the 2D onset search");
-    check_distinct_paths({o.case_path}, {o.output});
-    check_file_writable(o.output, "the HDF5 stability file");
-  }
-  std::vector<double> beta_D;
-  if (o.spanwise) {
-    beta_D = parse_sweep_range(o.beta, "--beta").values;
-    if (!(beta_D.front() >= 0.0)) throw std::invalid_argument("--beta " + o.beta + ": wavenumbers β·D must be ≥ 0");
-  }
+  const std::vector<double> beta_D = spanwise_options(o, critical);
   if (!known_eigensolver(o.eigensolver))
     throw std::invalid_argument(fmt::format("--eigensolver {}: unknown eigensolver (expected {})",
                                             cut_input(o.eigensolver), eigensolver_names()));
@@ -305,7 +342,9 @@ void command_stability(const StabilityCliOptions& o) {
     // The 3D stability of the flow that is there: the steady state when it is stable, else the shedding orbit.
     if (o.spanwise) j["spanwise"] = spanwise_report(p, s, beta_D, o.eigensolver, o.json, text);
   } else if (o.spanwise) {
-    j = spanwise_critical_report(p, beta_D, range.A, range.B, range.tolerance, o.eigensolver, o.json, text);
+    const std::optional<NsParams> fine = fine_grid_params(o, p);
+    j = spanwise_critical_report(p, beta_D, range.A, range.B, range.tolerance, o.eigensolver, o.json, text,
+                                 fine ? &*fine : nullptr);
   } else if (range.others.empty()) {
     critical_report(p, range, o.eigensolver, o.json, text, j);
   } else {
@@ -345,6 +384,10 @@ void add_stability_command(CLI::App& app) {
                 "unstable wavelength and whether the spanwise-uniform (2D) flow is stable");
   cmd->add_option("--beta", o->beta, "with --spanwise: the wavenumbers β·D as A:B:STEP (default 0.5:4:0.5)")
       ->each([o](const std::string&) { o->beta_given = true; });
+  cmd->add_option(
+      "--fine-grid", o->fine_grid,
+      "with --spanwise --critical-reynolds: then refine the onset on n_θ N, R = R·a (N:R, e.g. 192:60): two "
+      "scans there at once, at the onset found and 2% above it, at its wavenumber");
   cmd->add_option("--eigensolver", o->eigensolver,
                   "each shift's search: arnoldi (hand-written Krylov–Schur) or arpack (ARPACK-ng); default " +
                       StabilityOptions{}.eigensolver);

@@ -61,8 +61,53 @@ Json spanwise_report(const NsParams& p, const HopfEvaluation& ss, const std::vec
   return j;
 }
 
+namespace {
+
+/// The onset on the fine grid from the search c (spanwise_critical_fine): its two scans (lines as `line`
+/// makes them) and its onset appended to text, progress to stderr unless json; its JSON object returned.
+template <class Line>
+Json fine_grid_report(const NsParams& p, const SpanwiseCritical& c, const NsParams& fine,
+                      const std::string& eigensolver, bool json, const Line& line, std::string& text) {
+  const PolarGrid g = ns_grid(fine);
+  const std::string grid = fmt::format("n_θ {} × {} rings, R = {:g}a", g.n_theta, g.n_r, fine.outer_over_a);
+  Json j = {{"n_theta", g.n_theta}, {"n_r", g.n_r}, {"outer_radius_over_a", fine.outer_over_a}};
+  if (!c.found) {
+    text += "fine grid      not run: the search on the case's grid found no onset\n";
+    j["found"] = false, j["undefined"] = "the search on the case's grid found no onset";
+    return j;
+  }
+  if (!json)
+    std::fprintf(stderr, "fine grid (%s): Re %.5g and %.5g at once, β·D %.4g\n", grid.c_str(), c.Re_c,
+                 1.02 * c.Re_c, c.beta_D);
+  const SpanwiseFine f = spanwise_critical_fine(p, c, fine, eigensolver);
+  text += "fine grid      " + grid + ": the two scans\n";
+  Json rows = Json::array();
+  for (const SpanwiseEvaluation& e : f.evaluations) {
+    text += line(e) + "\n";
+    if (!json) std::fprintf(stderr, "%s\n", line(e).c_str());
+    rows.push_back(
+        {{"reynolds", e.Re}, {"growth_rate", e.scan.growth}, {"beta_D", f.beta_D}, {"seconds", e.seconds}});
+  }
+  j["evaluations"] = rows, j["seconds"] = f.seconds, j["found"] = f.found;
+  if (f.found) {
+    text += fmt::format(
+        "critical Re    {:.2f} ± {:.2g} on the fine grid (its two scans, the coarse curvature; {:.1f} "
+        "s){}\n",
+        f.Re_c, f.bar, f.seconds, f.extrapolated ? "; extrapolated: outside its two scans" : "");
+    j["critical_reynolds"] = f.Re_c, j["error_estimate"] = f.bar, j["beta_D"] = f.beta_D;
+    j["line_critical_reynolds"] = f.line_Re_c, j["extrapolated"] = f.extrapolated;
+  } else {
+    text += "critical Re    undefined on the fine grid: " + f.message + "\n";
+    j["undefined"] = f.message;
+  }
+  return j;
+}
+
+}  // namespace
+
 Json spanwise_critical_report(const NsParams& p, const std::vector<double>& beta_D, double Re_a, double Re_b,
-                              double tol, const std::string& eigensolver, bool json, std::string& text) {
+                              double tol, const std::string& eigensolver, bool json, std::string& text,
+                              const NsParams* fine) {
   auto line = [](const SpanwiseEvaluation& e) {
     const SpanwiseScan& s = e.scan;
     return fmt::format("{:>9.5g}  {:>8}  {:>10}  {:>9}  {:>8}  {:>7.1f}", e.Re, s.periodic ? "orbit" : "steady",
@@ -101,6 +146,7 @@ Json spanwise_critical_report(const NsParams& p, const std::vector<double>& beta
     text += "critical Re    undefined: " + c.message + "\n";
     j["undefined"] = c.message;
   }
+  if (fine) j["fine_grid"] = fine_grid_report(p, c, *fine, eigensolver, json, line, text);
   text += fmt::format("accuracy       {}\n", kSpanwiseAccuracyNote);
   j["accuracy_note"] = kSpanwiseAccuracyNote;
   return j;

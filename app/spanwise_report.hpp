@@ -17,8 +17,10 @@ Json spanwise_report(const NsParams& p, const HopfEvaluation& s, const std::vect
 
 /// The 3D onset in [Re_a, Re_b] to within tol (spanwise_critical at the wavenumbers beta_D): one line per
 /// Reynolds number searched (to stderr as it goes unless json), the crossing and its wavelength appended to
-/// text; its JSON object returned.
+/// text; its JSON object returned. With `fine`, the onset is then refined on that grid
+/// (spanwise_critical_fine), under "fine_grid".
 Json spanwise_critical_report(const NsParams& p, const std::vector<double>& beta_D, double Re_a, double Re_b,
-                              double tol, const std::string& eigensolver, bool json, std::string& text);
+                              double tol, const std::string& eigensolver, bool json, std::string& text,
+                              const NsParams* fine = nullptr);
 
 }  // namespace magnus

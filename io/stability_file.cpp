@@ -78,6 +78,25 @@ void write_spanwise(FileGroups& g, const Json& s) {
               g);
 }
 
+/// The onset refined on a finer grid (--fine-grid) in /onset3d/fine_grid: its two scans and its onset.
+void write_onset_fine(FileGroups& g, const Json& f) {
+  const char* G = "/onset3d/fine_grid";
+  if (f.contains("evaluations"))
+    write_rows(g, G, f["evaluations"],
+               {{"reynolds", "reynolds", "1", "Reynolds number of the fine grid's scan"},
+                {"growth_rate", "growth_rate", "1", "its growth rate at beta_D, U/D"},
+                {"seconds", "seconds", "s", "wall time of the scan (the two ran at once)"}});
+  std::vector<AttrValue> a = {number(G, "n_theta", f, "n_theta", "", AttrKind::integer),
+                              number(G, "n_r", f, "n_r", "", AttrKind::integer),
+                              number(G, "outer_radius_over_a", f, "outer_radius_over_a", "1"),
+                              number(G, "found", f, "found", "", AttrKind::integer),
+                              number(G, "critical_reynolds", f, "critical_reynolds", "1"),
+                              number(G, "error_estimate", f, "error_estimate", "1"),
+                              number(G, "beta_D", f, "beta_D", "1")};
+  if (f.contains("undefined")) a.push_back(text(G, "message", f["undefined"].get<std::string>()));
+  write_attrs(a, g);
+}
+
 void write_onset(FileGroups& g, const Json& j) {
   write_rows(g, "/onset3d", j["evaluations"],
              {{"reynolds", "reynolds", "1", "Reynolds number of the scan"},
@@ -97,6 +116,7 @@ void write_onset(FileGroups& g, const Json& j) {
   if (j.contains("undefined")) a.push_back(text("/onset3d", "message", j["undefined"].get<std::string>()));
   if (j.contains("accuracy_note")) a.push_back(text("/onset3d", "accuracy_note", j["accuracy_note"].get<std::string>()));
   write_attrs(a, g);
+  if (j.contains("fine_grid")) write_onset_fine(g, j["fine_grid"]);
 }
 
 }  // namespace
@@ -134,7 +154,10 @@ Onset3d read_onset3d(const std::string& path) {
     throw std::runtime_error(path + ": holds no 3D onset (write one with magnus stability --spanwise --critical-reynolds A:B --output)");
   if (f.attr_int("/onset3d", "found") != 1 || !f.has_attr("/onset3d", "critical_reynolds"))
     throw std::runtime_error(path + ": its 3D onset search found no crossing");
-  return {f.attr_double("/", "spin_ratio"), f.attr_double("/onset3d", "critical_reynolds")};
+  const char* fine = "/onset3d/fine_grid";
+  const bool refined = f.has(fine) && f.has_attr(fine, "found") && f.attr_int(fine, "found") == 1 &&
+                       f.has_attr(fine, "critical_reynolds");
+  return {f.attr_double("/", "spin_ratio"), f.attr_double(refined ? fine : "/onset3d", "critical_reynolds")};
 }
 
 void give_onset3d(RunHooks& hooks, const Case& c, const std::vector<std::string>& files, const std::string& option) {

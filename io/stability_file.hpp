@@ -28,8 +28,9 @@ void write_stability_hdf5(const std::string& path, const Json& j, const std::str
                           const std::string& case_text);
 
 /// The 3D onset a stability file holds (written with --spanwise --critical-reynolds): its spin ratio and
-/// critical Reynolds number. Throws std::runtime_error (one line naming path) when the file is not a
-/// magnus-stability file or holds no onset that was found.
+/// critical Reynolds number (the fine grid's, /onset3d/fine_grid, when it was refined there and found).
+/// Throws std::runtime_error (one line naming path) when the file is not a magnus-stability file or holds no
+/// onset that was found.
 Onset3d read_onset3d(const std::string& path);
 
 /// A run's computed 3D onset curve: read_onset3d of each file into hooks (onset3d, onset3d_files), before

@@ -4,6 +4,8 @@
 #include <pybind11/complex.h>
 #include <pybind11/stl.h>
 
+#include <fmt/core.h>
+
 #include <cmath>
 #include <complex>
 #include <stdexcept>
@@ -91,16 +93,56 @@ py::dict stability(const std::string& source, bool is_path, const std::vector<st
   return d;
 }
 
+/// The onset refined on the fine grid fp (spanwise_critical_fine) as onset_3d's "fine_grid".
+py::dict fine_dict(const SpanwiseCritical& c, const SpanwiseFine& f, const NsParams& fp) {
+  const PolarGrid g = ns_grid(fp);
+  py::dict d;
+  d["n_theta"] = g.n_theta, d["n_r"] = g.n_r, d["outer_radius_over_a"] = fp.outer_over_a;
+  d["found"] = f.found;
+  if (!c.found) {
+    d["message"] = "the search on the case's grid found no onset";
+    return d;
+  }
+  if (f.found) {
+    d["critical_reynolds"] = f.Re_c, d["error_estimate"] = f.bar, d["beta_D"] = f.beta_D;
+    d["line_critical_reynolds"] = f.line_Re_c, d["extrapolated"] = f.extrapolated;
+  } else {
+    d["message"] = f.message;
+  }
+  std::vector<double> re, growth;
+  for (const SpanwiseEvaluation& e : f.evaluations) re.push_back(e.Re), growth.push_back(e.scan.growth);
+  const py::ssize_t n = py::ssize_t(re.size());
+  py::dict ev;
+  ev["reynolds"] = owned_array(std::move(re), {n});
+  ev["growth_rate"] = owned_array(std::move(growth), {n});
+  d["evaluations"] = ev;
+  d["seconds"] = f.seconds;
+  return d;
+}
+
 py::dict onset_3d(const std::string& source, bool is_path, const std::vector<std::string>& overrides,
                   const std::vector<double>& beta_D, double Re_a, double Re_b, double tol,
-                  const std::string& eigensolver) {
+                  const std::string& eigensolver, bool refine, double fine_n, double fine_R) {
   SpanwiseCritical c;
-  NsParams p;
+  SpanwiseFine f;
+  NsParams p, fp;
   {
     py::gil_scoped_release nogil;
     if (beta_D.empty()) throw std::invalid_argument("spanwise: give the wavenumbers β·D to scan");
     p = stability_params(source, is_path, overrides, beta_D, eigensolver);
+    if (refine) {
+      std::vector<std::string> sets = overrides;
+      for (const std::string& x :
+           fine_grid_overrides(fine_n, fine_R, p, fmt::format("fine_grid=({:g}, {:g})", fine_n, fine_R)))
+        sets.push_back(x);
+      try {
+        fp = stability_params(source, is_path, sets, beta_D, eigensolver);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(fmt::format("fine_grid=({:g}, {:g}): {}", fine_n, fine_R, e.what()));
+      }
+    }
     c = spanwise_critical(p, beta_D, Re_a, Re_b, tol, eigensolver);
+    if (refine && c.found) f = spanwise_critical_fine(p, c, fp, eigensolver);
   }
   std::vector<double> re, growth, beta, periodic;
   for (const SpanwiseEvaluation& e : c.evaluations) {
@@ -126,6 +168,7 @@ py::dict onset_3d(const std::string& source, bool is_path, const std::vector<std
   d["evaluations"] = ev;
   d["seconds"] = c.seconds;
   d["accuracy_note"] = kSpanwiseAccuracyNote;
+  if (refine) d["fine_grid"] = fine_dict(c, f, fp);
   return d;
 }
 
@@ -137,7 +180,8 @@ void bind_stability(py::module_& m) {
         py::arg("source"), py::arg("is_path"), py::arg("overrides"), py::arg("beta_D"), py::arg("eigensolver"));
   m.def("_onset_3d", &onset_3d, "the Reynolds number in [Re_a, Re_b] where the flow turns three-dimensional",
         py::arg("source"), py::arg("is_path"), py::arg("overrides"), py::arg("beta_D"), py::arg("Re_a"),
-        py::arg("Re_b"), py::arg("tolerance"), py::arg("eigensolver"));
+        py::arg("Re_b"), py::arg("tolerance"), py::arg("eigensolver"), py::arg("refine") = false,
+        py::arg("fine_n") = 0.0, py::arg("fine_R") = 0.0);
 }
 
 }  // namespace magnus::python

@@ -41,6 +41,58 @@ SpanwiseCritical spanwise_critical(const NsParams& p, const std::vector<double>&
                                    double tol, const std::string& eigensolver, int max_evaluations = 10,
                                    const std::function<void(const SpanwiseEvaluation&)>& on_evaluation = {});
 
+/// The onset on a finer grid, from a search on a coarser one (spanwise_critical_fine).
+struct SpanwiseFine {
+  bool found = false;
+  std::string message;                          ///< why not, when !found (a scan that failed, named by Re)
+  std::vector<SpanwiseEvaluation> evaluations;  ///< the fine grid's two scans, the lower Re first
+  /// The fine grid's onset, fine_onset of its two scans with the coarse search's curvature g'' (the second
+  /// difference of its three scans nearest its onset).
+  double Re_c = 0.0;
+  double line_Re_c = 0.0;  ///< the straight line's zero through the two scans (g'' = 0)
+  /// Its error estimate in Re: what the two growth rates' Arnoldi tolerance (kFloquetTolerance,
+  /// kFloquetRelative) may move the line's zero by, plus FineRoot::correction. It leaves out the grid's own
+  /// error and that of keeping the coarse wavenumber.
+  double bar = 0.0;
+  bool extrapolated = false;  ///< Re_c lies more than half the scans' spacing outside them
+  double beta_D = 0.0;        ///< the wavenumber scanned: the coarse search's at its onset
+  double seconds = 0.0;       ///< wall time of the two scans (at once), s
+};
+
+/// The zero of a growth rate g(Re) known at two Reynolds numbers, with a curvature g'' from elsewhere.
+struct FineRoot {
+  bool found = false;  ///< Re_1 < Re_2 and g rises between them
+  double line = 0.0;   ///< the straight line's zero, Re_1 − g_1(Re_2 − Re_1)/(g_2 − g_1)
+  /// The parabola through both with curvature g'' has a zero where it rises, within Re_2 − Re_1 of the
+  /// line's.
+  bool parabola = false;
+  double Re_c = 0.0;  ///< the parabola's zero when it has one, else the line's
+  /// |Re_c − line| for the parabola; for the line alone its error ½|g''|·|(x − Re_1)(x − Re_2)|/s at its zero
+  /// x (s the line's slope).
+  double correction = 0.0;
+};
+
+/// The zero of g(Re) = g_1 + s(Re − Re_1) + ½g''(Re − Re_1)(Re − Re_2), s = (g_2 − g_1)/(Re_2 − Re_1), where
+/// it rises (g in U/D, g'' = curvature in (U/D) per unit of Re²).
+FineRoot fine_onset(double Re_1, double g_1, double Re_2, double g_2, double curvature);
+
+/// The 3D onset on the grid of `fine` from the search c (found) on the grid of `coarse`: the fine grid's
+/// scans at c.Re_c and 2% above it, at c's wavenumber only, both at once (one thread each), each Floquet
+/// Arnoldi started from the coarse mode of the scan nearest its Re (at the wavenumber nearest c's), sampled
+/// onto the fine grid (spanwise_prolong). Where the coarse scan nearest c.Re_c was of a shedding orbit, the
+/// fine scans go straight to the orbit (no steady state and 2D eigenvalues first). A scan that fails, or a
+/// Floquet multiplier that does not converge, leaves it not found with the reason. Throws
+/// std::invalid_argument when c was not found.
+SpanwiseFine spanwise_critical_fine(const NsParams& coarse, const SpanwiseCritical& c, const NsParams& fine,
+                                    const std::string& eigensolver);
+
+/// The case overrides that give the fine grid of spanwise_critical_fine, n_θ n and R = R_over_a·a (its rings
+/// following n_θ: grid.n_r = 0), from p's grid. Throws std::invalid_argument, one line starting with `what`
+/// (how the user gave it), unless n is an even whole number in [8, 4096] and R_over_a in (1, 10000], neither
+/// below p's and not both equal to them.
+std::vector<std::string> fine_grid_overrides(double n, double R_over_a, const NsParams& p,
+                                             const std::string& what);
+
 /// A computed point of the 3D onset curve: at spin ratio α the flow turns three-dimensional at Re_c.
 struct Onset3d {
   double alpha = 0.0, Re_c = 0.0;

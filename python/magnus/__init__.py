@@ -241,16 +241,30 @@ def stability(case, /, *, spanwise=None, eigensolver="arnoldi", set=None, **over
     return raw
 
 
-def onset_3d(case, /, *, reynolds, spanwise, tolerance=1.0, eigensolver="arnoldi", set=None, **overrides):
+def onset_3d(case, /, *, reynolds, spanwise, tolerance=1.0, eigensolver="arnoldi", fine_grid=None, set=None,
+             **overrides):
     """Where the flow turns three-dimensional, as `magnus stability CASE --spanwise --beta … --critical-reynolds
     A:B`: the Reynolds number in reynolds = (A, B) where the largest growth rate over the wavenumbers
     spanwise (β·D, an iterable of numbers ≥ 0) crosses zero, to within tolerance (in Re). Returns a dict:
     spin_ratio, found; when found critical_reynolds, change, bracket, beta_D and wavelength_D (in D), else
     message (why not); evaluations (arrays reynolds, growth_rate in U/D, beta_D, periodic: one per scan) and
+    seconds. fine_grid = (n_theta, R/a), as --fine-grid N:R, then refines the onset on that grid: "fine_grid"
+    holds n_theta, n_r, outer_radius_over_a, found, critical_reynolds, error_estimate, beta_D,
+    line_critical_reynolds and extrapolated (or message), its two scans' evaluations (reynolds, growth_rate) and
     seconds."""
     beta = [float(b) for b in _sweep_values(spanwise, "spanwise")]
     lo, hi = (float(x) for x in reynolds)
     source, is_path = _source(case)
+    fine_n, fine_r = (0.0, 0.0) if fine_grid is None else _fine_grid(fine_grid)
     return _magnus._onset_3d(source, is_path, _overrides(overrides, set), beta, lo, hi, float(tolerance),
-                             str(eigensolver))
+                             str(eigensolver), fine_grid is not None, fine_n, fine_r)
+
+
+def _fine_grid(fine_grid):
+    """(n_theta, R/a) as two floats; a clear ValueError for anything else (the range is checked in C++)."""
+    try:
+        n, r = fine_grid
+        return float(n), float(r)
+    except (TypeError, ValueError):
+        raise ValueError(f"fine_grid: expected (n_theta, R/a), e.g. (192, 60), got {fine_grid!r}") from None
 

@@ -45,7 +45,7 @@ def test_bad_input_is_one_value_error():
 def test_onset_3d_matches_the_command_line():
     # α 3 on n_θ 32: stable to every wavenumber at Re 30 and 60, so there is no crossing; each end one scan.
     kw = dict(grid__n_theta=32, cylinder__spin_ratio=3)
-    o = magnus.onset_3d(S_MAP, reynolds=(30, 60), spanwise=[1.0, 2.0], **kw)
+    o = magnus.onset_3d(S_MAP, reynolds=(30, 60), spanwise=[1.0, 2.0], fine_grid=(48, 30), **kw)
     j = json.loads(cli("stability", S_MAP, "--set", "grid.n_theta=32", "--set", "cylinder.spin_ratio=3",
                        "--spanwise", "--beta", "1:2:1", "--critical-reynolds", "30:60", "--json").stdout)
     assert o["found"] is False and j["found"] is False
@@ -56,8 +56,18 @@ def test_onset_3d_matches_the_command_line():
     assert list(o["evaluations"]["periodic"]) == [0.0, 0.0]
     for k in range(2):
         assert o["evaluations"]["growth_rate"][k] == pytest.approx(j["evaluations"][k]["growth_rate"], rel=0, abs=1e-12)
+    # The refinement on the finer grid is not run without an onset, and says why.
+    assert o["fine_grid"]["found"] is False
+    assert o["fine_grid"]["message"] == "the search on the case's grid found no onset"
+    assert o["fine_grid"]["n_theta"] == 48 and o["fine_grid"]["outer_radius_over_a"] == 30.0
     with pytest.raises(ValueError, match="0 < Re_a < Re_b"):
         magnus.onset_3d(S_MAP, reynolds=(60, 30), spanwise=[1.0])
+    with pytest.raises(ValueError, match="must be finer than the case's grid"):
+        magnus.onset_3d(S_MAP, reynolds=(30, 60), spanwise=[1.0], fine_grid=(16, 30), **kw)
+    with pytest.raises(ValueError, match="n_θ must be an even whole number"):
+        magnus.onset_3d(S_MAP, reynolds=(30, 60), spanwise=[1.0], fine_grid=(0, 30), **kw)
+    with pytest.raises(ValueError, match=r"fine_grid: expected \(n_theta, R/a\)"):
+        magnus.onset_3d(S_MAP, reynolds=(30, 60), spanwise=[1.0], fine_grid=192)
 
 
 def _onset_file(path, alpha, re_c):

@@ -88,11 +88,25 @@ TEST_CASE("magnus stability --spanwise: the growth rate per wavenumber and the v
   for (auto [args, expect] :
        {std::pair{std::vector<std::string>{"--beta", "0:1:1"}, "only used with --spanwise"},
         {std::vector<std::string>{"--spanwise", "--beta", "-1:1:1"}, "must be ≥ 0"},
-        {std::vector<std::string>{"--spanwise", "--critical-spin", "1:2"}, "not --critical-spin or an onset curve"},
+        {std::vector<std::string>{"--spanwise", "--critical-spin", "1:2"},
+         "not --critical-spin or an onset curve"},
         {std::vector<std::string>{"--spanwise", "--critical-reynolds", "40:60", "--spin-ratio", "0:1:1"},
          "not --critical-spin or an onset curve"},
-        {std::vector<std::string>{"--critical-spin", "1:2", "--output", dir + "/x.h5"}, "not the 2D onset search"},
-        {std::vector<std::string>{"--output", dir}, "it is a directory"}}) {
+        {std::vector<std::string>{"--critical-spin", "1:2", "--output", dir + "/x.h5"},
+         "not the 2D onset search"},
+        {std::vector<std::string>{"--output", dir}, "it is a directory"},
+        {std::vector<std::string>{"--spanwise", "--fine-grid", "96:30"},
+         "only used with --spanwise --critical-reynolds"},
+        {std::vector<std::string>{"--spanwise", "--critical-reynolds", "40:60", "--fine-grid", "96"},
+         "expected N:R"},
+        {std::vector<std::string>{"--spanwise", "--critical-reynolds", "40:60", "--fine-grid", "97:30"},
+         "n_θ must be an even whole number"},
+        {std::vector<std::string>{"--spanwise", "--critical-reynolds", "40:60", "--fine-grid", "96:1"},
+         "R/a must be in (1, 10000]"},
+        {std::vector<std::string>{"--spanwise", "--critical-reynolds", "40:60", "--fine-grid", "32:30"},
+         "must be finer than the case's grid (n_θ 48, R = 20a)"},
+        {std::vector<std::string>{"--spanwise", "--critical-reynolds", "40:60", "--fine-grid", "48:20"},
+         "not both the same"}}) {
     const Outcome b = magnus_cmd({"stability", s_map}, args, dir);
     INFO(b.err);
     CHECK(refused(b, expect));
@@ -104,10 +118,12 @@ TEST_CASE("magnus stability --spanwise --critical-reynolds: a range with no 3D o
   const std::string dir = temp_dir("ns-spanwise-critical");
   // α 3 on n_θ 32, R = 20a: the steady state is stable to every wavenumber at both ends of Re 30…60, so the
   // search has no crossing to find and says so; each end is one scan.
-  const Outcome o = magnus_cmd({"stability", s_map, "--set", "grid.n_theta=32", "--set", "cylinder.spin_ratio=3",
-                                "--spanwise", "--beta", "1:2:1", "--critical-reynolds", "30:60", "--output",
-                                dir + "/onset.h5", "--json"},
-                               dir);
+  // With --fine-grid the refinement is not run, and says why.
+  const Outcome o =
+      magnus_cmd({"stability", s_map, "--set", "grid.n_theta=32", "--set", "cylinder.spin_ratio=3",
+                  "--spanwise", "--beta", "1:2:1", "--critical-reynolds", "30:60", "--output",
+                  dir + "/onset.h5", "--fine-grid", "48:30", "--json"},
+                 dir);
   INFO(o.err);
   REQUIRE(o.status == 0);
   const auto j = nlohmann::json::parse(o.out);
@@ -130,4 +146,9 @@ TEST_CASE("magnus stability --spanwise --critical-reynolds: a range with no 3D o
   CHECK(f.attr_string("/onset3d", "message") == j["undefined"].get<std::string>());
   CHECK(f.attr_string("/onset3d", "accuracy_note") == j["accuracy_note"].get<std::string>());
   CHECK(!f.has_attr("/onset3d", "critical_reynolds"));
+  CHECK(j["fine_grid"]["undefined"] == "the search on the case's grid found no onset");
+  CHECK(j["fine_grid"]["n_theta"] == 48);
+  CHECK(j["fine_grid"]["outer_radius_over_a"] == 30.0);
+  CHECK(f.attr_string("/onset3d/fine_grid", "message") == "the search on the case's grid found no onset");
+  CHECK(!f.has_attr("/onset3d/fine_grid", "critical_reynolds"));
 }
