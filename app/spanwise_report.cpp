@@ -83,6 +83,7 @@ Json fine_grid_report(const NsParams& p, const SpanwiseCritical& c, const NsPara
   text += "fine grid      " + grid + ": the two scans\n";
   Json rows = Json::array();
   for (const SpanwiseEvaluation& e : f.evaluations) {
+    if (e.scan.points.empty()) continue;  // a scan that failed (f.message names it)
     text += line(e) + "\n";
     if (!json) std::fprintf(stderr, "%s\n", line(e).c_str());
     rows.push_back(
@@ -90,10 +91,10 @@ Json fine_grid_report(const NsParams& p, const SpanwiseCritical& c, const NsPara
   }
   j["evaluations"] = rows, j["seconds"] = f.seconds, j["found"] = f.found;
   if (f.found) {
-    text += fmt::format(
-        "critical Re    {:.2f} ± {:.2g} on the fine grid (its two scans, the coarse curvature; {:.1f} "
-        "s){}\n",
-        f.Re_c, f.bar, f.seconds, f.extrapolated ? "; extrapolated: outside its two scans" : "");
+    text += fmt::format("critical Re    {:.2f} ± {:.2g} on the fine grid (its two scans, the coarse "
+                        "curvature; {:.1f} s){}\n",
+                        f.Re_c, f.bar, f.seconds,
+                        f.extrapolated ? "; extrapolated: outside its two scans" : "");
     j["critical_reynolds"] = f.Re_c, j["error_estimate"] = f.bar, j["beta_D"] = f.beta_D;
     j["line_critical_reynolds"] = f.line_Re_c, j["extrapolated"] = f.extrapolated;
   } else {

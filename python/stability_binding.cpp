@@ -110,7 +110,8 @@ py::dict fine_dict(const SpanwiseCritical& c, const SpanwiseFine& f, const NsPar
     d["message"] = f.message;
   }
   std::vector<double> re, growth;
-  for (const SpanwiseEvaluation& e : f.evaluations) re.push_back(e.Re), growth.push_back(e.scan.growth);
+  for (const SpanwiseEvaluation& e : f.evaluations)
+    if (!e.scan.points.empty()) re.push_back(e.Re), growth.push_back(e.scan.growth);  // skip a failed scan
   const py::ssize_t n = py::ssize_t(re.size());
   py::dict ev;
   ev["reynolds"] = owned_array(std::move(re), {n});

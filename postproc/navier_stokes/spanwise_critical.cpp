@@ -246,15 +246,15 @@ FineRoot fine_onset(double Re_1, double g_1, double Re_2, double g_2, double cur
   const double d = Re_2 - Re_1, s = (g_2 - g_1) / d;
   if (!(d > 0.0) || !(s > 0.0)) return r;
   r.line = Re_1 - g_1 / s;
-  // g(Re_1 + u) = A u² + B u + g_1, A = ½g'', B = s − ½g''·d; the zero where g rises, −2g_1/(B + √(B² −
-  // 4Ag_1)).
+  // g(Re_1 + u) = A u² + B u + g_1 with A = ½g'', B = s − ½g''·d; the zero where g rises is
+  // u = −2g_1/(B + √(B² − 4Ag_1)).
   const double A = 0.5 * curvature, B = s - A * d, disc = B * B - 4.0 * A * g_1;
   const double denom = disc >= 0.0 ? B + std::sqrt(disc) : 0.0;
   const double u = denom > 0.0 ? -2.0 * g_1 / denom : 0.0;
   r.parabola = denom > 0.0 && std::fabs(Re_1 + u - r.line) <= d;
   r.Re_c = r.parabola ? Re_1 + u : r.line;
-  // The line alone: its own error, ½|g''|·|(x − Re_1)(x − Re_2)|/s at its zero; else the parabola's
-  // correction.
+  // The parabola: its correction to the line. The line alone: its own error at its zero x,
+  // ½|g''|·|(x − Re_1)(x − Re_2)|/s.
   r.correction = r.parabola ? std::fabs(r.Re_c - r.line)
                             : 0.5 * std::fabs(curvature * (r.line - Re_1) * (r.line - Re_2)) / s;
   r.found = true;
@@ -284,10 +284,9 @@ SpanwiseFine spanwise_critical_fine(const NsParams& coarse, const SpanwiseCritic
     }
   const FineRoot r = fine_onset(Re[0], a.growth, Re[1], b.growth, growth_curvature(c, c.Re_c));
   if (!r.found) {
-    f.message = fmt::format(
-        "the fine grid's growth rate does not rise with Re ({:+.5f} at Re {:.5g}, {:+.5f} at "
-        "{:.5g})",
-        a.growth, Re[0], b.growth, Re[1]);
+    f.message = fmt::format("the fine grid's growth rate does not rise with Re ({:+.5f} at Re {:.5g}, "
+                            "{:+.5f} at {:.5g})",
+                            a.growth, Re[0], b.growth, Re[1]);
     return f;
   }
   f.Re_c = r.Re_c, f.line_Re_c = r.line;
