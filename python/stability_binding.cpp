@@ -132,14 +132,13 @@ py::dict onset_3d(const std::string& source, bool is_path, const std::vector<std
     if (beta_D.empty()) throw std::invalid_argument("spanwise: give the wavenumbers β·D to scan");
     p = stability_params(source, is_path, overrides, beta_D, eigensolver);
     if (refine) {
+      const std::string what = fmt::format("fine_grid=({:g}, {:g})", fine_n, fine_R);
       std::vector<std::string> sets = overrides;
-      for (const std::string& x :
-           fine_grid_overrides(fine_n, fine_R, p, fmt::format("fine_grid=({:g}, {:g})", fine_n, fine_R)))
-        sets.push_back(x);
+      for (const std::string& x : fine_grid_overrides(fine_n, fine_R, p, what)) sets.push_back(x);
       try {
         fp = stability_params(source, is_path, sets, beta_D, eigensolver);
       } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument(fmt::format("fine_grid=({:g}, {:g}): {}", fine_n, fine_R, e.what()));
+        throw std::invalid_argument(what + ": " + e.what());
       }
     }
     c = spanwise_critical(p, beta_D, Re_a, Re_b, tol, eigensolver);

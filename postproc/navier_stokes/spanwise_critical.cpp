@@ -65,10 +65,19 @@ SpanwiseEvaluation evaluate(const NsParams& p, const std::vector<double>& beta_D
 }
 
 /// Arnoldi's starts at Re: the Floquet modes of the orbit scanned nearest to it (none before the first).
-std::vector<std::vector<double>> nearest_modes(const std::vector<SpanwiseEvaluation>& done, double Re) {
+/// The scan of `done` nearest Re among those for which keep(scan) holds (nullptr when none does).
+template <class Keep>
+const SpanwiseEvaluation* nearest_scan(const std::vector<SpanwiseEvaluation>& done, double Re, Keep keep) {
   const SpanwiseEvaluation* near = nullptr;
   for (const SpanwiseEvaluation& e : done)
-    if (e.scan.periodic && (!near || std::fabs(e.Re - Re) < std::fabs(near->Re - Re))) near = &e;
+    if (keep(e.scan) && (!near || std::fabs(e.Re - Re) < std::fabs(near->Re - Re))) near = &e;
+  return near;
+}
+
+bool periodic(const SpanwiseScan& s) { return s.periodic; }
+
+std::vector<std::vector<double>> nearest_modes(const std::vector<SpanwiseEvaluation>& done, double Re) {
+  const SpanwiseEvaluation* near = nearest_scan(done, Re, periodic);
   std::vector<std::vector<double>> starts;
   if (near)
     for (const SpanwisePoint& pt : near->scan.points) starts.push_back(pt.mode);
@@ -142,25 +151,6 @@ SpanwiseCritical spanwise_critical(const NsParams& p, const std::vector<double>&
 
 namespace {
 
-/// The coarse scan nearest Re among c's with a defined growth rate (nullptr when none).
-const SpanwiseEvaluation* nearest_scan(const SpanwiseCritical& c, double Re) {
-  const SpanwiseEvaluation* near = nullptr;
-  for (const SpanwiseEvaluation& e : c.evaluations)
-    if (defined(e.scan) && (!near || std::fabs(e.Re - Re) < std::fabs(near->Re - Re))) near = &e;
-  return near;
-}
-
-/// The coarse scan nearest Re among c's that holds a Floquet mode (nullptr when none does).
-const SpanwiseEvaluation* nearest_mode_scan(const SpanwiseCritical& c, double Re) {
-  const SpanwiseEvaluation* near = nullptr;
-  for (const SpanwiseEvaluation& e : c.evaluations) {
-    const bool has_mode = std::any_of(e.scan.points.begin(), e.scan.points.end(),
-                                      [](const SpanwisePoint& pt) { return !pt.mode.empty(); });
-    if (has_mode && (!near || std::fabs(e.Re - Re) < std::fabs(near->Re - Re))) near = &e;
-  }
-  return near;
-}
-
 /// The mode of scan e at the wavenumber nearest β·D, sampled from grid `from` onto `to` (empty: none).
 std::vector<double> prolonged_mode(const SpanwiseEvaluation& e, double beta_D, const PolarGrid& from,
                                    const PolarGrid& to) {
@@ -203,14 +193,14 @@ double growth_curvature(const SpanwiseCritical& c, double Re) {
 void fine_scans(const NsParams& coarse, const SpanwiseCritical& c, const NsParams& fine,
                 const std::string& eigensolver, const double Re[2], SpanwiseFine& f, std::string failed[2]) {
   const PolarGrid gc = ns_grid(coarse), gf = ns_grid(fine);
-  const SpanwiseEvaluation* at_root = nearest_scan(c, c.Re_c);
+  const SpanwiseEvaluation* at_root = nearest_scan(c.evaluations, c.Re_c, defined);
   const bool orbit = at_root && at_root->scan.periodic;
   f.evaluations.resize(2);
   for_each_index(2, 2, [&](size_t k) {
     try {
       NsParams q = with_parameter(fine, HopfParameter::reynolds, Re[k]);
       q.threads = 1;  // the two scans share the cores
-      const SpanwiseEvaluation* near = nearest_mode_scan(c, Re[k]);
+      const SpanwiseEvaluation* near = nearest_scan(c.evaluations, Re[k], periodic);  // its Floquet modes
       const std::vector<std::vector<double>> start = {near ? prolonged_mode(*near, c.beta_D, gc, gf)
                                                            : std::vector<double>{}};
       const auto t = std::chrono::steady_clock::now();
